@@ -1,0 +1,54 @@
+// unfurl: deployment simulator for spacecraft solar arrays and other jointed
+// mechanisms. `unfurl COMMAND --help` documents each command.
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "cli.hpp"
+#include "commands.hpp"
+#include "scene_yaml.hpp"
+
+namespace {
+
+const char* kUsage =
+    "usage: unfurl COMMAND [options]\n"
+    "\n"
+    "commands:\n"
+    "  simulate [SCENE]   run a scene, write trajectory.csv, events.csv, summary.json\n"
+    "  scenes             list the built-in scenes\n"
+    "\n"
+    "SCENE is a scene file (.yaml) or a built-in scene name (default: pantograph).\n"
+    "`unfurl COMMAND --help` shows a command's options.\n";
+
+int list_scenes() {
+  for (const std::string& name : unfurl::builtin_scene_names()) std::printf("%s\n", name.c_str());
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+    std::printf("%s", kUsage);
+    return args.empty() ? 64 : 0;
+  }
+  const std::string command = args[0];
+  args.erase(args.begin());
+  try {
+    if (command == "simulate") return unfurl::app::command_simulate(args);
+    if (command == "scenes") return list_scenes();
+    std::fprintf(stderr, "unfurl: unknown command '%s'\n\n%s", command.c_str(), kUsage);
+    return 64;
+  } catch (const unfurl::SceneError& e) {
+    std::fprintf(stderr, "unfurl %s: %s\n", command.c_str(), e.what());
+    return 2;
+  } catch (const unfurl::app::UsageError& e) {
+    std::fprintf(stderr, "unfurl %s: %s\n", command.c_str(), e.what());
+    return 64;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "unfurl %s: %s\n", command.c_str(), e.what());
+    return 1;
+  }
+}

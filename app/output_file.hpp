@@ -1,0 +1,33 @@
+// Output files are written completely or not at all: text goes to a
+// temporary file beside the target, renamed over it on commit().
+#pragma once
+
+#include <fstream>
+#include <string>
+
+namespace unfurl::app {
+
+class OutputFile {
+ public:
+  explicit OutputFile(std::string path);
+  ~OutputFile();  // removes the temporary file unless committed
+  OutputFile(const OutputFile&) = delete;
+  OutputFile& operator=(const OutputFile&) = delete;
+
+  std::ostream& stream() { return out_; }
+  // Flushes and renames into place; throws std::runtime_error on failure.
+  void commit();
+
+ private:
+  std::string path_, temp_;
+  std::ofstream out_;
+  bool committed_ = false;
+};
+
+// Creates the directory (and its parents); throws on failure.
+void make_directory(const std::string& dir);
+
+// The shortest text that reads back as the same double; "nan"/"inf" kept.
+std::string format_number(double x);
+
+}  // namespace unfurl::app

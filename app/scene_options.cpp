@@ -1,0 +1,50 @@
+#include "scene_options.hpp"
+
+#include <filesystem>
+
+#include "scene_yaml.hpp"
+
+namespace unfurl::app {
+
+const std::set<std::string>& scene_flags() {
+  static const std::set<std::string> flags{"--set",  "--t-end", "--integrator", "--rtol",
+                                           "--atol", "--dt",    "--sample"};
+  return flags;
+}
+
+const char* scene_flags_help() {
+  return "  SCENE                 a scene file (.yaml) or a built-in scene name; default: pantograph\n"
+         "  --set KEY=VALUE       override any value of the scene by its path in the file, e.g.\n"
+         "                        --set springs.j1.free_position=1.2 or --set regulator.v_max=1000;\n"
+         "                        list elements by index or by name/joint/body; repeatable\n"
+         "  --t-end T             simulate from 0 to T seconds (run.t_end)\n"
+         "  --integrator NAME     cvode-bdf (default), cvode-adams, arkode-erk, arkode-dirk, rk4\n"
+         "  --rtol X              relative tolerance of the adaptive integrators (run.rtol)\n"
+         "  --atol X              absolute tolerance of the joint angles (run.atol); momenta get\n"
+         "                        100 X, loop residuals X/100, regulator states 1e4 X\n"
+         "  --dt X                step of the fixed-step rk4 (run.dt)\n"
+         "  --sample DT           output interval in seconds (run.sample, default 0.01)\n";
+}
+
+Scene load_scene(const std::optional<std::string>& argument, const Args& args) {
+  std::vector<Override> overrides;
+  for (const std::string& s : args.all("--set")) overrides.push_back(parse_override(s));
+  // The run flags are overrides of the run section, validated like the file.
+  const std::pair<const char*, const char*> run_flags[] = {
+      {"--t-end", "t_end"}, {"--integrator", "integrator"}, {"--rtol", "rtol"},
+      {"--atol", "atol"},   {"--dt", "dt"},                 {"--sample", "sample"}};
+  for (const auto& [flag, key] : run_flags)
+    if (const auto value = args.get(flag)) overrides.push_back({std::string("run.") + key, *value});
+
+  const std::string name = argument.value_or("pantograph");
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(name, ec)) return load_scene_file(name, overrides);
+  const auto builtins = builtin_scene_names();
+  if (std::find(builtins.begin(), builtins.end(), name) != builtins.end())
+    return load_builtin_scene(name, overrides);
+  std::string known;
+  for (const auto& n : builtins) known += (known.empty() ? "" : ", ") + n;
+  throw SceneError(name + ": no such scene file, and no built-in scene of that name (built in: " + known + ")");
+}
+
+}  // namespace unfurl::app

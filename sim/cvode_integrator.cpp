@@ -1,0 +1,134 @@
+#include "cvode_integrator.hpp"
+
+#include <cvode/cvode.h>
+#include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
+
+#include <cstdlib>
+#include <limits>
+
+namespace unfurl {
+
+using sundials::check;
+
+CvodeIntegrator::CvodeIntegrator(IntegratorKind kind, Dynamics& dynamics, const RunSettings& settings,
+                                 double t0, const std::vector<double>& y0)
+    : dynamics_(dynamics),
+      y_(y0, ctx_),
+      atol_(absolute_tolerances(dynamics.layout(), settings.atol), ctx_),
+      scratch_(y0, ctx_),
+      min_step_(std::numeric_limits<double>::infinity()) {
+  const bool bdf = kind == IntegratorKind::cvode_bdf;
+  mem_ = CVodeCreate(bdf ? CV_BDF : CV_ADAMS, ctx_);
+  sundials::check_ptr(mem_, "CVodeCreate");
+  check(CVodeInit(mem_, sundials::rhs, t0, y_), "CVodeInit");
+  check(CVodeSetUserData(mem_, &dynamics_), "CVodeSetUserData");
+  check(CVodeSetErrHandlerFn(mem_, sundials::capture_error, &last_error_), "CVodeSetErrHandlerFn");
+  check(CVodeSVtolerances(mem_, settings.rtol, atol_), "CVodeSVtolerances");
+  check(CVodeSetMaxNumSteps(mem_, -1), "CVodeSetMaxNumSteps");
+  if (bdf) {
+    dense_.emplace(dynamics.size(), y_, ctx_);
+    check(CVodeSetLinearSolver(mem_, dense_->LS, dense_->A), "CVodeSetLinearSolver");
+  } else {
+    fixed_point_ = SUNNonlinSol_FixedPoint(y_, 0, ctx_);
+    sundials::check_ptr(fixed_point_, "SUNNonlinSol_FixedPoint");
+    check(CVodeSetNonlinearSolver(mem_, fixed_point_), "CVodeSetNonlinearSolver");
+  }
+  if (dynamics.latch_count() > 0) {
+    check(CVodeRootInit(mem_, dynamics.latch_count(), sundials::switching), "CVodeRootInit");
+    std::vector<int> falling(dynamics.latch_count(), -1);
+    check(CVodeSetRootDirection(mem_, falling.data()), "CVodeSetRootDirection");
+    check(CVodeSetNoInactiveRootWarn(mem_), "CVodeSetNoInactiveRootWarn");
+  }
+}
+
+CvodeIntegrator::~CvodeIntegrator() {
+  CVodeFree(&mem_);
+  if (fixed_point_) SUNNonlinSolFree(fixed_point_);
+}
+
+StepOutcome CvodeIntegrator::step(double t_stop) {
+  if (t_stop != t_stop_set_) {
+    check(CVodeSetStopTime(mem_, t_stop), "CVodeSetStopTime");
+    t_stop_set_ = t_stop;
+  }
+  double t = 0;
+  const int flag = CVode(mem_, t_stop, y_, &t, CV_ONE_STEP);
+  StepOutcome out;
+  out.t = t;
+  double h = 0;
+  CVodeGetLastStep(mem_, &h);
+  if (h > 0) min_step_ = std::min(min_step_, h);
+  if (flag < 0) {
+    char* name = CVodeGetReturnFlagName(flag);
+    out.status = StepStatus::failed;
+    out.reason = std::string(name) + (last_error_.empty() ? "" : " (" + last_error_ + ")");
+    std::free(name);
+    CVodeGetCurrentTime(mem_, &out.t);
+    return out;
+  }
+  if (flag == CV_ROOT_RETURN) {
+    out.status = StepStatus::root;
+  } else if (flag == CV_TSTOP_RETURN) {
+    out.status = StepStatus::reached_stop;
+    t_stop_set_ = -1;  // CVODE clears the stop time once reached
+  } else {
+    out.status = StepStatus::advanced;
+  }
+  return out;
+}
+
+void CvodeIntegrator::interpolate(double t, double* y) {
+  check(CVodeGetDky(mem_, t, 0, scratch_), "CVodeGetDky");
+  std::copy(scratch_.data(), scratch_.data() + dynamics_.size(), y);
+}
+
+void CvodeIntegrator::restart(double t, const double* y) {
+  earlier_segments_ += segment_stats();
+  min_step_ = std::numeric_limits<double>::infinity();
+  std::copy(y, y + dynamics_.size(), y_.data());
+  check(CVodeReInit(mem_, t, y_), "CVodeReInit");
+  t_stop_set_ = -1;
+}
+
+std::vector<int> CvodeIntegrator::roots() {
+  std::vector<int> found(dynamics_.latch_count());
+  check(CVodeGetRootInfo(mem_, found.data()), "CVodeGetRootInfo");
+  std::vector<int> hit;
+  for (int l = 0; l < static_cast<int>(found.size()); ++l)
+    if (found[l] != 0) hit.push_back(l);
+  return hit;
+}
+
+SolverStats CvodeIntegrator::stats() const {
+  SolverStats s = earlier_segments_;
+  s += segment_stats();
+  return s;
+}
+
+SolverStats CvodeIntegrator::segment_stats() const {
+  SolverStats s;
+  long jac = 0, setups = 0, iters = 0, fails = 0, etf = 0, steps = 0;
+  CVodeGetNumSteps(mem_, &steps);
+  CVodeGetNumLinSolvSetups(mem_, &setups);
+  CVodeGetNumNonlinSolvIters(mem_, &iters);
+  CVodeGetNumNonlinSolvConvFails(mem_, &fails);
+  CVodeGetNumErrTestFails(mem_, &etf);
+  if (dense_) CVodeGetNumJacEvals(mem_, &jac);
+  s.steps = steps;
+  s.jacobian_evals = jac;
+  s.linear_setups = setups;
+  s.nonlinear_iterations = iters;
+  s.nonlinear_failures = fails;
+  s.error_test_failures = etf;
+  s.min_step = min_step_;
+  CVodeGetLastStep(mem_, &s.last_step);
+  return s;
+}
+
+double CvodeIntegrator::current_step() const {
+  double h = 0;
+  CVodeGetCurrentStep(mem_, &h);
+  return h;
+}
+
+}  // namespace unfurl

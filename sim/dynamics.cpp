@@ -1,0 +1,159 @@
+#include "dynamics.hpp"
+
+#include <cmath>
+
+namespace unfurl {
+
+namespace {
+
+std::vector<double> latch_start_positions(const Scene& scene) {
+  std::vector<double> q;
+  for (const Latch& latch : scene.latches) q.push_back(scene.q0[scene.model.coordinate[latch.joint]]);
+  return q;
+}
+
+}  // namespace
+
+Dynamics::Dynamics(const Scene& scene)
+    : scene_(scene),
+      sweep_(scene_.model),
+      latch_state_(scene_.latches, latch_start_positions(scene_)),
+      loads_need_poses_(loads_need_poses(scene_.model, scene_.loads)),
+      phi_(scene_.model.size()),
+      v_(scene_.model.size()),
+      mu_(scene_.model.size()),
+      F_(scene_.model.size()),
+      poses_(scene_.model.size()),
+      Q_(scene_.model.nq) {
+  layout_.nq = scene_.model.nq;
+  if (!scene_.loops.empty()) {
+    auto components = active_loop_components(scene_.model, scene_.loops, scene_.q0, sweep_);
+    layout_.m = static_cast<int>(components.size());
+    regulator_.emplace(scene_.model, scene_.loops, std::move(components), scene_.regulator);
+    sweep_.set_configuration(scene_.q0.data());
+    regulator_->freeze_diagonal_gains(sweep_);
+    lambda_.resize(layout_.m);
+  }
+}
+
+std::vector<double> Dynamics::initial_state() {
+  const Model& model = scene_.model;
+  std::vector<double> y(size(), 0.0);
+  std::copy(scene_.q0.begin(), scene_.q0.end(), y.begin() + layout_.q());
+  if (!scene_.p0.empty()) {
+    std::copy(scene_.p0.begin(), scene_.p0.end(), y.begin() + layout_.p());
+  } else {
+    // p = A^T mu with mu the subtree momenta of the given joint rates.
+    sweep_.set_configuration(scene_.q0.data());
+    for (int i = 0; i < model.size(); ++i) {
+      const int k = model.parent[i];
+      v_[i] = sweep_.placement(i).transform_velocity(k == kBase ? model.base_velocity : v_[k]);
+      const int c = model.coordinate[i];
+      if (c >= 0) v_[i] += sweep_.motion_axis(i) * scene_.dq0[c];
+      F_[i] = model.bodies[i].spatial_mass() * v_[i];
+    }
+    sweep_.generalized_forces(F_, y.data() + layout_.p());
+  }
+  if (regulator_) {
+    body_poses(model, scene_.q0.data(), poses_);
+    for (int c = 0; c < layout_.m; ++c) {
+      const LoopComponent& lc = regulator_->components()[c];
+      const Loop& loop = scene_.loops[lc.loop];
+      y[layout_.g() + c] = closure_mismatch(poses_[loop.body], poses_[loop.image])[lc.axis];
+    }
+  }
+  return y;
+}
+
+void Dynamics::joint_torques(const double* q, const double* dq, double* Q) const {
+  const Model& model = scene_.model;
+  for (const JointSpring& s : scene_.springs) {
+    const int c = model.coordinate[s.joint];
+    Q[c] += s.torque(q[c], dq[c]);
+  }
+  for (int l = 0; l < latch_count(); ++l) {
+    if (!latch_state_.engaged(l)) continue;
+    const Latch& latch = scene_.latches[l];
+    const int c = model.coordinate[latch.joint];
+    Q[c] += latch.torque(q[c], dq[c]);
+  }
+}
+
+bool Dynamics::rhs(double t, const double* y, double* ydot) {
+  ++rhs_calls_;
+  return evaluate(t, y, ydot);
+}
+
+bool Dynamics::evaluate(double, const double* y, double* ydot) {
+  const Model& model = scene_.model;
+  const StateLayout& L = layout_;
+  const double* q = y + L.q();
+  const double* p = y + L.p();
+  double* dq = ydot + L.q();
+  double* dp = ydot + L.p();
+
+  sweep_.set_configuration(q);
+  sweep_.bias(p, phi_);
+  sweep_.velocities(p, phi_, model.base_velocity, dq, v_);
+  sweep_.momenta(v_, phi_, mu_);
+
+  for (Vec6& f : F_) f.setZero();
+  if (loads_need_poses_) body_poses(model, q, poses_);
+  add_body_loads(model, scene_.loads, poses_, F_);
+  if (regulator_) {
+    double* g_dot = ydot + L.g();
+    regulator_->residual_rate(v_, g_dot);
+    regulator_->control(sweep_, y + L.g(), y + L.u(), g_dot, lambda_.data(), ydot + L.u());
+    regulator_->apply(lambda_.data(), F_);
+  }
+  sweep_.generalized_forces(F_, Q_.data());
+  sweep_.gyroscopic(v_, mu_, dp);
+  joint_torques(q, dq, Q_.data());
+  for (int c = 0; c < L.nq; ++c) dp[c] += Q_[c];
+
+  for (int k = 0; k < L.size(); ++k)
+    if (!std::isfinite(ydot[k])) return false;
+  return true;
+}
+
+void Dynamics::switching_functions(const double* y, double* values) const {
+  for (int l = 0; l < latch_count(); ++l)
+    values[l] = latch_state_.switching_value(l, y[layout_.q() + scene_.model.coordinate[scene_.latches[l].joint]]);
+}
+
+void Dynamics::observe(double t, const double* y, Observation& out) {
+  const Model& model = scene_.model;
+  const StateLayout& L = layout_;
+  std::vector<double> ydot(size());
+  evaluate(t, y, ydot.data());
+  out.dq.assign(ydot.begin() + L.q(), ydot.begin() + L.q() + L.nq);
+  out.velocity = v_;
+  body_poses(model, y + L.q(), out.poses);
+
+  EnergyParts& E = out.energy;
+  E = EnergyParts{};
+  for (int i = 0; i < model.size(); ++i)
+    E.kinetic += 0.5 * v_[i].dot(model.bodies[i].spatial_mass() * v_[i]);
+  for (const JointSpring& s : scene_.springs) E.springs += s.energy(y[L.q() + model.coordinate[s.joint]]);
+  for (int l = 0; l < latch_count(); ++l)
+    if (latch_state_.engaged(l))
+      E.latches += scene_.latches[l].energy(y[L.q() + model.coordinate[scene_.latches[l].joint]]);
+  E.gravity = gravity_energy(model, out.poses);
+
+  const int n_loops = static_cast<int>(scene_.loops.size());
+  out.loop_residual.assign(n_loops, 0.0);
+  out.closure.resize(n_loops);
+  for (int l = 0; l < n_loops; ++l)
+    out.closure[l] = closure_error(out.poses[scene_.loops[l].body], out.poses[scene_.loops[l].image]);
+  if (regulator_) {
+    for (int c = 0; c < L.m; ++c) {
+      const double g = y[L.g() + c];
+      out.loop_residual[regulator_->components()[c].loop] += g * g;
+    }
+    for (double& r : out.loop_residual) r = std::sqrt(r);
+    sweep_.set_configuration(y + L.q());
+    E.regulator = regulator_->energy(sweep_, y + L.g(), y + L.u());
+  }
+}
+
+}  // namespace unfurl

@@ -1,0 +1,96 @@
+// The equations of motion of a scene as a first-order system for the
+// integrators: the state is (q, p) for a tree and (q, p, g = eps pi, u) for
+// a scene with loops, with only the active loop components:
+//   q' = the sweep's dq(q, p)                      (6)
+//   p' = -A^T Omega mu + A^T T^T (F - eps^T lambda) + Q_joint   (12)
+//   g' = eps v                                     (9)
+//   u' = k_pi g + k_v eps v                        (13)
+// rhs() allocates nothing.
+#pragma once
+
+#include <vector>
+
+#include "latch.hpp"
+#include "regulator.hpp"
+#include "scene.hpp"
+#include "sweep.hpp"
+
+namespace unfurl {
+
+// Where each kind of state sits in the state vector.
+struct StateLayout {
+  int nq = 0;  // coordinates
+  int m = 0;   // active loop components
+  int q() const { return 0; }
+  int p() const { return nq; }
+  int g() const { return 2 * nq; }
+  int u() const { return 2 * nq + m; }
+  int size() const { return 2 * nq + 2 * m; }
+};
+
+struct EnergyParts {
+  double kinetic = 0;
+  double springs = 0;
+  double latches = 0;
+  double gravity = 0;
+  double regulator = 0;
+  double total() const { return kinetic + springs + latches + gravity + regulator; }
+};
+
+// Everything derived from a state at one instant.
+struct Observation {
+  std::vector<double> dq;
+  std::vector<Vec6> velocity;          // v_i, body frames
+  std::vector<Pose> poses;
+  std::vector<double> loop_residual;   // |eps pi| per loop (active components)
+  std::vector<ClosureError> closure;   // per loop
+  EnergyParts energy;
+};
+
+class Dynamics {
+ public:
+  explicit Dynamics(const Scene& scene);
+  Dynamics(const Dynamics&) = delete;
+  Dynamics& operator=(const Dynamics&) = delete;
+
+  const Scene& scene() const { return scene_; }
+  const Model& model() const { return scene_.model; }
+  const StateLayout& layout() const { return layout_; }
+  int size() const { return layout_.size(); }
+  Regulator* regulator() { return regulator_ ? &*regulator_ : nullptr; }
+
+  // The initial state: q0, p0 (from dq0 when no p0 is given), g0 from the
+  // loops' geometric mismatch, u0 = 0.
+  std::vector<double> initial_state();
+
+  // y' = f(t, y). Returns false when the result is not finite.
+  bool rhs(double t, const double* y, double* ydot);
+  long rhs_calls() const { return rhs_calls_; }
+
+  // Latches: engagement state and the integrators' root functions.
+  LatchState& latch_state() { return latch_state_; }
+  int latch_count() const { return static_cast<int>(scene_.latches.size()); }
+  void switching_functions(const double* y, double* values) const;
+
+  // Derived quantities at a state.
+  void observe(double t, const double* y, Observation& out);
+
+ private:
+  bool evaluate(double t, const double* y, double* ydot);
+  void joint_torques(const double* q, const double* dq, double* Q) const;
+
+  const Scene scene_;
+  StateLayout layout_;
+  Sweep sweep_;
+  std::optional<Regulator> regulator_;
+  LatchState latch_state_;
+  bool loads_need_poses_ = false;
+  long rhs_calls_ = 0;
+
+  // Scratch for rhs(), sized once.
+  std::vector<Vec6> phi_, v_, mu_, F_;
+  std::vector<Pose> poses_;
+  std::vector<double> Q_, lambda_;
+};
+
+}  // namespace unfurl

@@ -1,0 +1,52 @@
+#include "integrator.hpp"
+
+#include <algorithm>
+
+#include "arkode_integrators.hpp"
+#include "cvode_integrator.hpp"
+#include "rk4_integrator.hpp"
+
+namespace unfurl {
+
+SolverStats& SolverStats::operator+=(const SolverStats& segment) {
+  steps += segment.steps;
+  jacobian_evals += segment.jacobian_evals;
+  linear_setups += segment.linear_setups;
+  nonlinear_iterations += segment.nonlinear_iterations;
+  nonlinear_failures += segment.nonlinear_failures;
+  error_test_failures += segment.error_test_failures;
+  min_step = std::min(min_step, segment.min_step);
+  last_step = segment.last_step;
+  return *this;
+}
+
+std::vector<double> absolute_tolerances(const StateLayout& layout, double atol) {
+  std::vector<double> tol(layout.size());
+  for (int k = 0; k < layout.nq; ++k) {
+    tol[layout.q() + k] = atol;
+    tol[layout.p() + k] = 100 * atol;
+  }
+  for (int k = 0; k < layout.m; ++k) {
+    tol[layout.g() + k] = 0.01 * atol;
+    tol[layout.u() + k] = 1e4 * atol;
+  }
+  return tol;
+}
+
+std::unique_ptr<Integrator> make_integrator(IntegratorKind kind, Dynamics& dynamics,
+                                            const RunSettings& settings, double t0,
+                                            const std::vector<double>& y0) {
+  switch (kind) {
+    case IntegratorKind::cvode_bdf:
+    case IntegratorKind::cvode_adams:
+      return std::make_unique<CvodeIntegrator>(kind, dynamics, settings, t0, y0);
+    case IntegratorKind::arkode_erk:
+    case IntegratorKind::arkode_dirk:
+      return std::make_unique<ArkodeIntegrator>(kind, dynamics, settings, t0, y0);
+    case IntegratorKind::rk4:
+      return std::make_unique<Rk4Integrator>(dynamics, settings, t0, y0);
+  }
+  return nullptr;
+}
+
+}  // namespace unfurl

@@ -1,0 +1,63 @@
+// One interface over the time integrators: SUNDIALS' CVODE (BDF, Adams),
+// ARKODE (explicit adaptive RK, DIRK) and a fixed-step RK4. The simulation
+// drives them one internal step at a time, so it can sample by their
+// interpolation, handle latch events and cancel between steps.
+#pragma once
+
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "dynamics.hpp"
+#include "scene.hpp"
+
+namespace unfurl {
+
+struct SolverStats {
+  long steps = 0;
+  long jacobian_evals = 0;
+  long linear_setups = 0;
+  long nonlinear_iterations = 0;
+  long nonlinear_failures = 0;
+  long error_test_failures = 0;
+  double min_step = std::numeric_limits<double>::infinity();
+  double last_step = 0;
+
+  // Counters of a run made of several restarted segments.
+  SolverStats& operator+=(const SolverStats& segment);
+};
+
+enum class StepStatus { advanced, root, reached_stop, failed };
+
+struct StepOutcome {
+  StepStatus status = StepStatus::advanced;
+  double t = 0;         // where the step (or the root) is
+  std::string reason;   // for a failure
+};
+
+class Integrator {
+ public:
+  virtual ~Integrator() = default;
+  // One internal step toward t_stop, never past it. Stops early at a root
+  // of the latch switching functions (status root, t = the root).
+  virtual StepOutcome step(double t_stop) = 0;
+  // The state at a time inside the last step, by the method's interpolant.
+  virtual void interpolate(double t, double* y) = 0;
+  // Restarts cleanly from (t, y): after an event changed the equations.
+  virtual void restart(double t, const double* y) = 0;
+  // The switching functions that reached zero at the last root.
+  virtual std::vector<int> roots() = 0;
+  virtual SolverStats stats() const = 0;
+  virtual double current_step() const = 0;
+};
+
+// Absolute tolerances per state: atol for q, looser for p and u, tighter for
+// the residual states g (they are the quantities the regulator keeps small).
+std::vector<double> absolute_tolerances(const StateLayout& layout, double atol);
+
+std::unique_ptr<Integrator> make_integrator(IntegratorKind kind, Dynamics& dynamics,
+                                            const RunSettings& settings, double t0,
+                                            const std::vector<double>& y0);
+
+}  // namespace unfurl

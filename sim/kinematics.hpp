@@ -1,0 +1,22 @@
+// Body poses from joint coordinates: r_i = r_{k_i} + G_0^{k_i T} rho_i and
+// G_0^i = G_i G_0^{k_i} (section 1, with the paper's typo mended: rho_i is
+// in the parent's frame).
+#pragma once
+
+#include <vector>
+
+#include "model.hpp"
+
+namespace unfurl {
+
+struct Pose {
+  Vec3 position = Vec3::Zero();     // body origin, base frame
+  Mat3 rotation = Mat3::Identity(); // G_0^i: base frame to body frame
+  // A point given in the body frame, in the base frame.
+  Vec3 to_base(const Vec3& x) const { return position + rotation.transpose() * x; }
+};
+
+// Poses of bodies 1..N in the frame of body 0 for coordinates q.
+void body_poses(const Model& model, const double* q, std::vector<Pose>& poses);
+
+}  // namespace unfurl

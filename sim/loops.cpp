@@ -1,0 +1,59 @@
+#include "loops.hpp"
+
+#include <cmath>
+#include <random>
+
+namespace unfurl {
+
+std::vector<LoopComponent> active_loop_components(const Model& model, const std::vector<Loop>& loops,
+                                                  const std::vector<double>& q0, Sweep& sweep) {
+  const int N = model.size();
+  const int L = static_cast<int>(loops.size());
+  std::vector<std::vector<double>> samples{q0};
+  std::mt19937 rng(12345);
+  std::uniform_real_distribution<double> angle(-M_PI, M_PI);
+  for (int s = 0; s < 3; ++s) {
+    std::vector<double> q(model.nq);
+    for (double& x : q) x = angle(rng);
+    samples.push_back(q);
+  }
+  // Row (l, a) of eps T A equals (J^T e)^T = (A^T T^T eps^T e)^T: one
+  // backward force pass per component.
+  std::vector<double> row_norm(6 * L, 0.0);
+  std::vector<Vec6> F(N);
+  std::vector<double> x(model.nq);
+  for (const auto& q : samples) {
+    sweep.set_configuration(q.data());
+    for (int l = 0; l < L; ++l) {
+      for (int a = 0; a < 6; ++a) {
+        for (Vec6& f : F) f.setZero();
+        F[loops[l].body][a] = 1;
+        F[loops[l].image][a] = -1;
+        sweep.generalized_forces(F, x.data());
+        for (double xi : x) row_norm[6 * l + a] = std::max(row_norm[6 * l + a], std::abs(xi));
+      }
+    }
+  }
+  double largest = 0;
+  for (double r : row_norm) largest = std::max(largest, r);
+  std::vector<LoopComponent> active;
+  for (int l = 0; l < L; ++l)
+    for (int a = 0; a < 6; ++a)
+      if (row_norm[6 * l + a] > 1e-9 * largest) active.push_back({l, a});
+  return active;
+}
+
+ClosureError closure_error(const Pose& body, const Pose& image) {
+  const Eigen::AngleAxisd relative(image.rotation * body.rotation.transpose());
+  return {(body.position - image.position).norm(), std::abs(relative.angle())};
+}
+
+Vec6 closure_mismatch(const Pose& body, const Pose& image) {
+  Vec6 g;
+  g.head<3>() = body.rotation * (body.position - image.position);
+  const Eigen::AngleAxisd relative(image.rotation * body.rotation.transpose());
+  g.tail<3>() = relative.angle() * relative.axis();
+  return g;
+}
+
+}  // namespace unfurl

@@ -1,0 +1,48 @@
+// Closed loops (section 3): each loop is opened by splitting a body; its
+// image hangs on another branch. eps has +1 at the body and -1 at the image,
+// so eps v is the difference of their velocities (each in its own frame,
+// frames that coincide while the loop is closed). Components of eps v that
+// no motion can excite (a zero row of eps T A, such as the out-of-plane
+// components of a planar loop) are left out.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "kinematics.hpp"
+#include "model.hpp"
+#include "sweep.hpp"
+
+namespace unfurl {
+
+struct Loop {
+  std::string name;
+  int body = 0;   // the split body (eps = +1)
+  int image = 0;  // its image on another branch (eps = -1)
+};
+
+// One row of eps: a spatial component (0-2 linear, 3-5 angular) of a loop.
+struct LoopComponent {
+  int loop = 0;
+  int axis = 0;
+};
+
+// The rows of eps T A that are not identically zero, found from the rows at
+// the initial coordinates and at random ones (sweep: scratch, any state).
+std::vector<LoopComponent> active_loop_components(const Model& model, const std::vector<Loop>& loops,
+                                                  const std::vector<double>& q0, Sweep& sweep);
+
+// The true geometric closure error of a loop: distance between the origins
+// of the body and its image, and angle between their frames.
+struct ClosureError {
+  double distance = 0;
+  double angle = 0;
+};
+ClosureError closure_error(const Pose& body, const Pose& image);
+
+// The closure mismatch as a quasi-coordinate difference eps pi: the image
+// origin's offset seen from the body (body frame) and the rotation vector
+// from the image frame to the body frame.
+Vec6 closure_mismatch(const Pose& body, const Pose& image);
+
+}  // namespace unfurl

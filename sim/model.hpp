@@ -1,0 +1,53 @@
+// The tree of bodies (the method's secondary graph): bodies 1..N (stored
+// 0..N-1), joint i between body i and its parent k_i, body 0 (the base)
+// with a given motion.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "joint.hpp"
+#include "spatial.hpp"
+
+namespace unfurl {
+
+struct Body {
+  std::string name;
+  double mass = 0;
+  Vec3 com = Vec3::Zero();            // centre of mass, body frame
+  Mat3 inertia_com = Mat3::Zero();    // about the centre of mass, body axes
+
+  // J_i of (6): the inertia about the body origin (parallel axes).
+  Mat3 inertia_origin() const;
+  // M_i of (6).
+  Mat6 spatial_mass() const { return spatial_inertia(mass, com, inertia_origin()); }
+};
+
+inline constexpr int kBase = -1;  // index of body 0 in parent arrays
+
+struct Model {
+  std::string base_name = "base";
+  std::vector<Body> bodies;
+  std::vector<Joint> joints;  // joint i carries body i
+  std::vector<int> parent;    // k_i, kBase for body 0
+  // The base's velocity (v, w) in its own frame, constant: a steady drift
+  // or spin of body 0. Zero for a fixed base.
+  Vec6 base_velocity = Vec6::Zero();
+  Vec3 gravity = Vec3::Zero();  // in the base (inertial) frame
+
+  // Derived by finalize().
+  std::vector<std::vector<int>> children;  // U_i
+  std::vector<int> coordinate;             // index of q_i in q, -1 for n_i = 0
+  std::vector<int> joint_of_coordinate;
+  int nq = 0;
+
+  int size() const { return static_cast<int>(bodies.size()); }
+  // Builds U_i and the coordinate map; throws std::invalid_argument when the
+  // numbering is not regular (a parent after its child).
+  void finalize();
+  // Index of the body (or joint) named `name`, kBase for the base, or -2.
+  int find_body(const std::string& name) const;
+  bool base_rotates() const { return !base_velocity.tail<3>().isZero(0); }
+};
+
+}  // namespace unfurl

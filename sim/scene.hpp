@@ -1,0 +1,64 @@
+// A scene: the mechanism (tree, forces, latches, loops, regulator), its
+// initial state, how to run it, and what the renderer draws for each body.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "forces.hpp"
+#include "latch.hpp"
+#include "loops.hpp"
+#include "model.hpp"
+#include "regulator.hpp"
+
+namespace unfurl {
+
+enum class IntegratorKind { cvode_bdf, cvode_adams, arkode_erk, arkode_dirk, rk4 };
+
+const char* integrator_name(IntegratorKind kind);
+// Parses "cvode-bdf" etc.; nullopt for an unknown name.
+std::optional<IntegratorKind> parse_integrator(const std::string& name);
+const std::vector<IntegratorKind>& all_integrators();
+
+struct RunSettings {
+  double t_end = 10;
+  IntegratorKind integrator = IntegratorKind::cvode_bdf;
+  double rtol = 1e-8;
+  double atol = 1e-10;  // for q; see tolerances.hpp for the other states
+  double dt = 1e-4;     // step of the fixed-step RK4
+  double sample = 0.01; // output interval
+  long max_steps = 50'000'000;
+  // The run fails when a loop's residual |eps pi| or geometric closure
+  // exceeds this (m or rad): the regulator has lost the loop.
+  double max_closure = 0.1;
+};
+
+// What the renderer draws for a body: a mesh from assets/meshes, scaled and
+// offset in the body frame.
+struct Visual {
+  std::string mesh;
+  Vec3 scale = Vec3::Ones();
+  Vec3 offset = Vec3::Zero();
+};
+
+struct Scene {
+  std::string name;
+  std::string description;
+  std::string source;  // the file it came from, or "built-in"
+  Model model;
+  std::vector<JointSpring> springs;
+  std::vector<BodyLoad> loads;
+  std::vector<Latch> latches;
+  std::vector<Loop> loops;
+  RegulatorSettings regulator;
+  std::vector<double> q0;     // per coordinate
+  std::vector<double> dq0;    // per coordinate (used when p0 is empty)
+  std::vector<double> p0;     // per coordinate, optional
+  double closure_tolerance = 1e-6;  // how far the initial loops may be open
+  RunSettings run;
+  Visual base_visual;
+  std::vector<Visual> visuals;  // per body
+};
+
+}  // namespace unfurl

@@ -1,0 +1,584 @@
+#include "scene_yaml.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "kinematics.hpp"
+
+namespace unfurl {
+
+namespace {
+
+using Keys = std::initializer_list<const char*>;
+
+// Reads one scene document, checking every key and value, and remembers
+// where each node came from so an error can point at it.
+class SceneReader {
+ public:
+  SceneReader(std::string source) : source_(std::move(source)) {}
+
+  Scene read(const std::string& text, const std::vector<Override>& overrides);
+
+ private:
+  [[noreturn]] void fail(const YAML::Node& at, const std::string& field, const std::string& what) const;
+  std::string where(const YAML::Node& at) const;
+
+  void check_keys(const YAML::Node& map, Keys allowed, const std::string& field) const;
+  void check_map(const YAML::Node& node, const std::string& field) const;
+  YAML::Node require(const YAML::Node& map, const char* key, const std::string& field) const;
+  double number(const YAML::Node& node, const std::string& field) const;
+  double number_or(const YAML::Node& map, const char* key, double fallback, const std::string& field) const;
+  double positive(const YAML::Node& node, const std::string& field) const;
+  double non_negative(const YAML::Node& node, const std::string& field) const;
+  std::string text(const YAML::Node& node, const std::string& field) const;
+  std::vector<double> numbers(const YAML::Node& node, const std::string& field) const;
+  Vec3 vec3(const YAML::Node& node, const std::string& field) const;
+  Vec3 vec3_or(const YAML::Node& map, const char* key, const Vec3& fallback, const std::string& field) const;
+
+  void apply_override(YAML::Node& root, const Override& o);
+
+  void read_base(const YAML::Node& node, Scene& scene) const;
+  void read_body(const YAML::Node& node, int index, const YAML::Node& all, Scene& scene);
+  Joint read_joint(const YAML::Node& node, const std::string& field) const;
+  Visual read_visual(const YAML::Node& node, const std::string& field) const;
+  void read_springs(const YAML::Node& list, Scene& scene) const;
+  void read_dampers(const YAML::Node& list, Scene& scene) const;
+  void read_loads(const YAML::Node& list, Scene& scene) const;
+  void read_latches(const YAML::Node& list, Scene& scene) const;
+  void read_loops(const YAML::Node& list, Scene& scene);
+  void read_regulator(const YAML::Node& node, Scene& scene) const;
+  void read_initial(const YAML::Node& node, Scene& scene) const;
+  void read_run(const YAML::Node& node, RunSettings& run) const;
+  void check_loops_close(const Scene& scene) const;
+
+  int joint_by_name(const YAML::Node& node, const Scene& scene, const std::string& field,
+                    bool needs_coordinate) const;
+  int body_by_name(const YAML::Node& node, const Scene& scene, const std::string& field) const;
+
+  std::string source_;
+  std::vector<std::pair<YAML::Node, std::string>> overrides_;  // node, "--set ..."
+  std::vector<YAML::Node> loop_nodes_;
+  std::map<std::string, int> joint_index_;
+};
+
+std::string index_field(const std::string& list, std::size_t i) {
+  return list + "[" + std::to_string(i) + "]";
+}
+
+bool contains(const YAML::Node& haystack, const YAML::Node& needle) {
+  if (haystack.is(needle)) return true;
+  if (haystack.IsSequence() || haystack.IsMap())
+    for (const auto& item : haystack)
+      if (haystack.IsMap() ? contains(item.first, needle) || contains(item.second, needle)
+                           : contains(item, needle))
+        return true;
+  return false;
+}
+
+std::string SceneReader::where(const YAML::Node& at) const {
+  for (const auto& [node, text] : overrides_)
+    if (contains(node, at)) return text;
+  const YAML::Mark mark = at.Mark();
+  if (mark.is_null()) return source_ + " (with the --set overrides)";
+  return source_ + ":" + std::to_string(mark.line + 1) + ":" + std::to_string(mark.column + 1);
+}
+
+void SceneReader::fail(const YAML::Node& at, const std::string& field, const std::string& what) const {
+  throw SceneError(where(at) + ": " + (field.empty() ? "" : field + ": ") + what);
+}
+
+void SceneReader::check_map(const YAML::Node& node, const std::string& field) const {
+  if (!node.IsMap()) fail(node, field, "expected a mapping of keys to values");
+}
+
+void SceneReader::check_keys(const YAML::Node& map, Keys allowed, const std::string& field) const {
+  check_map(map, field);
+  for (const auto& item : map) {
+    const std::string key = item.first.Scalar();
+    bool known = false;
+    std::string list;
+    for (const char* a : allowed) {
+      known = known || key == a;
+      list += std::string(list.empty() ? "" : ", ") + a;
+    }
+    if (!known) fail(item.first, field, "unknown key '" + key + "' (expected one of: " + list + ")");
+  }
+}
+
+YAML::Node SceneReader::require(const YAML::Node& map, const char* key, const std::string& field) const {
+  const YAML::Node node = map[key];
+  if (!node) fail(map, field, std::string("missing field '") + key + "'");
+  return node;
+}
+
+double SceneReader::number(const YAML::Node& node, const std::string& field) const {
+  if (!node.IsScalar()) fail(node, field, "expected a number");
+  double x = 0;
+  try {
+    x = node.as<double>();
+  } catch (const YAML::Exception&) {
+    fail(node, field, "expected a number, got '" + node.Scalar() + "'");
+  }
+  if (!std::isfinite(x)) fail(node, field, "must be a finite number, got '" + node.Scalar() + "'");
+  return x;
+}
+
+double SceneReader::number_or(const YAML::Node& map, const char* key, double fallback,
+                              const std::string& field) const {
+  const YAML::Node node = map[key];
+  return node ? number(node, field + "." + key) : fallback;
+}
+
+double SceneReader::positive(const YAML::Node& node, const std::string& field) const {
+  const double x = number(node, field);
+  if (!(x > 0)) fail(node, field, "must be positive, got " + node.Scalar());
+  return x;
+}
+
+double SceneReader::non_negative(const YAML::Node& node, const std::string& field) const {
+  const double x = number(node, field);
+  if (x < 0) fail(node, field, "must not be negative, got " + node.Scalar());
+  return x;
+}
+
+std::string SceneReader::text(const YAML::Node& node, const std::string& field) const {
+  if (!node.IsScalar()) fail(node, field, "expected a string");
+  return node.Scalar();
+}
+
+std::vector<double> SceneReader::numbers(const YAML::Node& node, const std::string& field) const {
+  if (!node.IsSequence()) fail(node, field, "expected a list of numbers");
+  std::vector<double> out;
+  for (std::size_t i = 0; i < node.size(); ++i) out.push_back(number(node[i], index_field(field, i)));
+  return out;
+}
+
+Vec3 SceneReader::vec3(const YAML::Node& node, const std::string& field) const {
+  const std::vector<double> v = numbers(node, field);
+  if (v.size() != 3) fail(node, field, "expected 3 numbers, got " + std::to_string(v.size()));
+  return Vec3(v[0], v[1], v[2]);
+}
+
+Vec3 SceneReader::vec3_or(const YAML::Node& map, const char* key, const Vec3& fallback,
+                          const std::string& field) const {
+  const YAML::Node node = map[key];
+  return node ? vec3(node, field + "." + key) : fallback;
+}
+
+// Follows a dotted path; list elements by index or by name/joint/body.
+void SceneReader::apply_override(YAML::Node& root, const Override& o) {
+  const std::string origin = "--set " + o.path + "=" + o.value;
+  std::vector<std::string> parts;
+  std::stringstream ss(o.path);
+  for (std::string part; std::getline(ss, part, '.');) parts.push_back(part);
+  if (parts.empty() || o.path.empty()) throw SceneError(origin + ": empty path");
+  YAML::Node value;
+  try {
+    value = YAML::Load(o.value);
+  } catch (const YAML::Exception& e) {
+    throw SceneError(origin + ": the value is not valid YAML: " + e.msg);
+  }
+  YAML::Node cur;
+  cur.reset(root);
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    const std::string& part = parts[k];
+    const bool last = k + 1 == parts.size();
+    if (cur.IsSequence()) {
+      std::size_t index = cur.size();
+      const bool numeric = !part.empty() && part.find_first_not_of("0123456789") == std::string::npos;
+      for (std::size_t i = 0; i < cur.size(); ++i) {
+        const YAML::Node item = cur[i];
+        if (numeric ? std::stoul(part) == i
+                    : item.IsMap() && ((item["name"] && item["name"].Scalar() == part) ||
+                                       (item["joint"] && item["joint"].Scalar() == part) ||
+                                       (item["body"] && item["body"].Scalar() == part))) {
+          index = i;
+          break;
+        }
+      }
+      if (index == cur.size()) throw SceneError(origin + ": no element '" + part + "' in the list");
+      if (last) {
+        cur[index] = value;
+      } else {
+        YAML::Node next = cur[index];
+        cur.reset(next);
+      }
+    } else if (cur.IsMap() || cur.IsNull()) {
+      if (last) {
+        cur[part] = value;
+      } else {
+        if (!cur[part]) cur[part] = YAML::Node(YAML::NodeType::Map);
+        YAML::Node next = cur[part];
+        cur.reset(next);
+      }
+    } else {
+      throw SceneError(origin + ": '" + part + "' is inside a value, not a mapping or list");
+    }
+  }
+  overrides_.emplace_back(value, origin);
+}
+
+Visual SceneReader::read_visual(const YAML::Node& node, const std::string& field) const {
+  Visual v;
+  if (node.IsScalar()) {
+    v.mesh = node.Scalar();
+    return v;
+  }
+  check_keys(node, {"name", "scale", "offset"}, field);
+  v.mesh = text(require(node, "name", field), field + ".name");
+  const YAML::Node scale = node["scale"];
+  if (scale && scale.IsScalar()) {
+    v.scale = Vec3::Constant(positive(scale, field + ".scale"));
+  } else if (scale) {
+    v.scale = vec3(scale, field + ".scale");
+    if ((v.scale.array() <= 0).any()) fail(scale, field + ".scale", "must be positive");
+  }
+  v.offset = vec3_or(node, "offset", Vec3::Zero(), field);
+  return v;
+}
+
+void SceneReader::read_base(const YAML::Node& node, Scene& scene) const {
+  check_keys(node, {"name", "mesh", "velocity"}, "base");
+  if (node["name"]) scene.model.base_name = text(node["name"], "base.name");
+  if (node["mesh"]) scene.base_visual = read_visual(node["mesh"], "base.mesh");
+  if (const YAML::Node v = node["velocity"]) {
+    const std::vector<double> x = numbers(v, "base.velocity");
+    if (x.size() != 6) fail(v, "base.velocity", "expected 6 numbers (vx, vy, vz, wx, wy, wz)");
+    for (int k = 0; k < 6; ++k) scene.model.base_velocity[k] = x[k];
+  }
+}
+
+Joint SceneReader::read_joint(const YAML::Node& node, const std::string& field) const {
+  check_keys(node, {"name", "type", "axis", "parent_point", "child_point"}, field);
+  Joint j;
+  const YAML::Node type = require(node, "type", field);
+  const std::string t = text(type, field + ".type");
+  if (t == "revolute")
+    j.type = JointType::revolute;
+  else if (t == "prismatic")
+    j.type = JointType::prismatic;
+  else if (t == "fixed")
+    j.type = JointType::fixed;
+  else
+    fail(type, field + ".type", "unknown joint type '" + t + "' (expected revolute, prismatic or fixed)");
+  if (j.type != JointType::fixed) {
+    const YAML::Node axis = require(node, "axis", field);
+    j.axis = vec3(axis, field + ".axis");
+    if (j.axis.norm() < 1e-12) fail(axis, field + ".axis", "the joint axis has zero length");
+    j.axis.normalize();
+  } else if (node["axis"]) {
+    fail(node["axis"], field + ".axis", "a fixed joint has no axis");
+  }
+  j.parent_point = vec3(require(node, "parent_point", field), field + ".parent_point");
+  j.child_point = vec3(require(node, "child_point", field), field + ".child_point");
+  if (node["name"]) j.name = text(node["name"], field + ".name");
+  return j;
+}
+
+void SceneReader::read_body(const YAML::Node& node, int index, const YAML::Node& all, Scene& scene) {
+  std::string field = index_field("bodies", index);
+  check_keys(node, {"name", "parent", "mass", "com", "inertia", "mesh", "joint"}, field);
+  Body b;
+  b.name = text(require(node, "name", field), field + ".name");
+  field += " (" + b.name + ")";
+  Model& model = scene.model;
+  if (model.find_body(b.name) != -2) fail(node["name"], field, "a body named '" + b.name + "' already exists");
+
+  const YAML::Node parent = require(node, "parent", field);
+  const std::string parent_name = text(parent, field + ".parent");
+  const int k = model.find_body(parent_name);
+  if (k == -2) {
+    for (std::size_t later = index + 1; later < all.size(); ++later)
+      if (all[later].IsMap() && all[later]["name"] && all[later]["name"].Scalar() == parent_name)
+        fail(parent, field + ".parent",
+             "numbering is not regular: the parent '" + parent_name + "' is listed after its child (list " +
+                 "every body after its parent)");
+    fail(parent, field + ".parent", "unknown parent '" + parent_name + "'");
+  }
+
+  const YAML::Node mass = require(node, "mass", field);
+  b.mass = number(mass, field + ".mass");
+  if (b.mass < 0) fail(mass, field + ".mass", "negative mass " + mass.Scalar());
+  if (b.mass == 0) fail(mass, field + ".mass", "the mass must be positive");
+  b.com = vec3_or(node, "com", Vec3::Zero(), field);
+
+  const YAML::Node inertia = require(node, "inertia", field);
+  const std::vector<double> I = numbers(inertia, field + ".inertia");
+  if (I.size() != 3 && I.size() != 6)
+    fail(inertia, field + ".inertia", "expected [Ixx, Iyy, Izz] or [Ixx, Iyy, Izz, Ixy, Ixz, Iyz]");
+  b.inertia_com.diagonal() << I[0], I[1], I[2];
+  if (I.size() == 6) {
+    b.inertia_com(0, 1) = b.inertia_com(1, 0) = I[3];
+    b.inertia_com(0, 2) = b.inertia_com(2, 0) = I[4];
+    b.inertia_com(1, 2) = b.inertia_com(2, 1) = I[5];
+  }
+  const double smallest = Eigen::SelfAdjointEigenSolver<Mat3>(b.inertia_com).eigenvalues().minCoeff();
+  if (!(smallest > 0)) {
+    std::ostringstream s;
+    s << "the inertia is not positive definite (smallest principal moment " << smallest << ")";
+    fail(inertia, field + ".inertia", s.str());
+  }
+
+  Joint j = read_joint(require(node, "joint", field), field + ".joint");
+  if (j.name.empty()) j.name = b.name;
+  if (joint_index_.count(j.name)) fail(node["joint"], field + ".joint", "a joint named '" + j.name + "' already exists");
+  joint_index_[j.name] = index;
+
+  scene.visuals.push_back(node["mesh"] ? read_visual(node["mesh"], field + ".mesh") : Visual{});
+  model.bodies.push_back(b);
+  model.joints.push_back(j);
+  model.parent.push_back(k);
+}
+
+int SceneReader::joint_by_name(const YAML::Node& node, const Scene& scene, const std::string& field,
+                               bool needs_coordinate) const {
+  const std::string name = text(node, field);
+  const auto it = joint_index_.find(name);
+  if (it == joint_index_.end()) fail(node, field, "unknown joint '" + name + "'");
+  if (needs_coordinate && scene.model.joints[it->second].dof() == 0)
+    fail(node, field, "joint '" + name + "' is fixed: it has no coordinate");
+  return it->second;
+}
+
+int SceneReader::body_by_name(const YAML::Node& node, const Scene& scene, const std::string& field) const {
+  const std::string name = text(node, field);
+  const int i = scene.model.find_body(name);
+  if (i < 0) fail(node, field, i == kBase ? "the base cannot carry this" : "unknown body '" + name + "'");
+  return i;
+}
+
+void SceneReader::read_springs(const YAML::Node& list, Scene& scene) const {
+  if (!list.IsSequence()) fail(list, "springs", "expected a list");
+  for (std::size_t n = 0; n < list.size(); ++n) {
+    const YAML::Node s = list[n];
+    const std::string field = index_field("springs", n);
+    check_keys(s, {"joint", "stiffness", "free_position", "damping"}, field);
+    JointSpring spring;
+    spring.joint = joint_by_name(require(s, "joint", field), scene, field + ".joint", true);
+    spring.stiffness = non_negative(require(s, "stiffness", field), field + ".stiffness");
+    spring.free_position = number_or(s, "free_position", 0.0, field);
+    if (s["damping"]) spring.damping = non_negative(s["damping"], field + ".damping");
+    scene.springs.push_back(spring);
+  }
+}
+
+void SceneReader::read_dampers(const YAML::Node& list, Scene& scene) const {
+  if (!list.IsSequence()) fail(list, "dampers", "expected a list");
+  for (std::size_t n = 0; n < list.size(); ++n) {
+    const YAML::Node d = list[n];
+    const std::string field = index_field("dampers", n);
+    check_keys(d, {"joint", "damping"}, field);
+    JointSpring damper;
+    damper.joint = joint_by_name(require(d, "joint", field), scene, field + ".joint", true);
+    damper.damping = non_negative(require(d, "damping", field), field + ".damping");
+    scene.springs.push_back(damper);
+  }
+}
+
+void SceneReader::read_loads(const YAML::Node& list, Scene& scene) const {
+  if (!list.IsSequence()) fail(list, "loads", "expected a list");
+  for (std::size_t n = 0; n < list.size(); ++n) {
+    const YAML::Node l = list[n];
+    const std::string field = index_field("loads", n);
+    check_keys(l, {"body", "force", "torque", "point", "frame"}, field);
+    BodyLoad load;
+    load.body = body_by_name(require(l, "body", field), scene, field + ".body");
+    load.force = vec3_or(l, "force", Vec3::Zero(), field);
+    load.torque = vec3_or(l, "torque", Vec3::Zero(), field);
+    load.point = vec3_or(l, "point", Vec3::Zero(), field);
+    if (const YAML::Node frame = l["frame"]) {
+      const std::string f = text(frame, field + ".frame");
+      if (f != "body" && f != "base") fail(frame, field + ".frame", "expected 'body' or 'base'");
+      load.in_base_frame = f == "base";
+      if (load.in_base_frame && scene.model.base_rotates())
+        fail(frame, field + ".frame", "base-frame loads need a base that does not rotate");
+    }
+    scene.loads.push_back(load);
+  }
+}
+
+void SceneReader::read_latches(const YAML::Node& list, Scene& scene) const {
+  if (!list.IsSequence()) fail(list, "latches", "expected a list");
+  for (std::size_t n = 0; n < list.size(); ++n) {
+    const YAML::Node l = list[n];
+    const std::string field = index_field("latches", n);
+    check_keys(l, {"joint", "position", "stiffness", "damping"}, field);
+    Latch latch;
+    latch.joint = joint_by_name(require(l, "joint", field), scene, field + ".joint", true);
+    latch.position = number_or(l, "position", 0.0, field);
+    latch.stiffness = positive(require(l, "stiffness", field), field + ".stiffness");
+    latch.damping = non_negative(require(l, "damping", field), field + ".damping");
+    for (const Latch& other : scene.latches)
+      if (other.joint == latch.joint) fail(l["joint"], field + ".joint", "this joint already has a latch");
+    scene.latches.push_back(latch);
+  }
+}
+
+void SceneReader::read_loops(const YAML::Node& list, Scene& scene) {
+  if (!list.IsSequence()) fail(list, "loops", "expected a list");
+  for (std::size_t n = 0; n < list.size(); ++n) {
+    const YAML::Node l = list[n];
+    const std::string field = index_field("loops", n);
+    check_keys(l, {"name", "body", "image"}, field);
+    Loop loop;
+    loop.body = body_by_name(require(l, "body", field), scene, field + ".body");
+    loop.image = body_by_name(require(l, "image", field), scene, field + ".image");
+    loop.name = l["name"] ? text(l["name"], field + ".name") : scene.model.bodies[loop.body].name;
+    if (loop.body == loop.image) fail(l["image"], field + ".image", "a body cannot be its own image");
+    for (const Loop& other : scene.loops)
+      if (other.name == loop.name) fail(l, field + ".name", "a loop named '" + loop.name + "' already exists");
+    scene.loops.push_back(loop);
+    loop_nodes_.push_back(l);
+  }
+}
+
+void SceneReader::read_regulator(const YAML::Node& node, Scene& scene) const {
+  check_keys(node, {"gains", "v_max", "p0", "p1", "eigen_floor"}, "regulator");
+  RegulatorSettings& r = scene.regulator;
+  if (const YAML::Node gains = node["gains"]) {
+    const std::string g = text(gains, "regulator.gains");
+    if (g == "full")
+      r.gains = GainTuning::full;
+    else if (g == "paper")
+      r.gains = GainTuning::paper;
+    else
+      fail(gains, "regulator.gains", "expected 'full' or 'paper', got '" + g + "'");
+  }
+  if (node["v_max"]) r.v_max = positive(node["v_max"], "regulator.v_max");
+  if (node["p0"]) r.p0 = positive(node["p0"], "regulator.p0");
+  if (node["p1"]) r.p1 = positive(node["p1"], "regulator.p1");
+  if (node["eigen_floor"]) r.eigen_floor = positive(node["eigen_floor"], "regulator.eigen_floor");
+  if (r.p1 >= 1) fail(node["p1"], "regulator.p1", "must be below 1 (b1 = p1 v_max < v_max)");
+}
+
+void SceneReader::read_initial(const YAML::Node& node, Scene& scene) const {
+  check_keys(node, {"q", "dq", "p"}, "initial");
+  if (node["dq"] && node["p"]) fail(node["p"], "initial.p", "give either dq or p, not both");
+  auto read = [&](const char* key, std::vector<double>& out) {
+    const YAML::Node map = node[key];
+    if (!map) return;
+    const std::string field = std::string("initial.") + key;
+    check_map(map, field);
+    out.assign(scene.model.nq, 0.0);
+    for (const auto& item : map) {
+      const int j = joint_by_name(item.first, scene, field, true);
+      out[scene.model.coordinate[j]] = number(item.second, field + "." + item.first.Scalar());
+    }
+  };
+  read("q", scene.q0);
+  read("dq", scene.dq0);
+  read("p", scene.p0);
+}
+
+void SceneReader::read_run(const YAML::Node& node, RunSettings& run) const {
+  check_keys(node, {"t_end", "integrator", "rtol", "atol", "dt", "sample", "max_closure", "max_steps"}, "run");
+  if (node["t_end"]) run.t_end = positive(node["t_end"], "run.t_end");
+  if (const YAML::Node integrator = node["integrator"]) {
+    const auto kind = parse_integrator(text(integrator, "run.integrator"));
+    if (!kind)
+      fail(integrator, "run.integrator",
+           "unknown integrator '" + integrator.Scalar() +
+               "' (expected cvode-bdf, cvode-adams, arkode-erk, arkode-dirk or rk4)");
+    run.integrator = *kind;
+  }
+  if (node["rtol"]) run.rtol = positive(node["rtol"], "run.rtol");
+  if (node["atol"]) run.atol = positive(node["atol"], "run.atol");
+  if (node["dt"]) run.dt = positive(node["dt"], "run.dt");
+  if (node["sample"]) run.sample = positive(node["sample"], "run.sample");
+  if (node["max_closure"]) run.max_closure = positive(node["max_closure"], "run.max_closure");
+  if (node["max_steps"]) run.max_steps = static_cast<long>(positive(node["max_steps"], "run.max_steps"));
+}
+
+void SceneReader::check_loops_close(const Scene& scene) const {
+  std::vector<Pose> poses;
+  body_poses(scene.model, scene.q0.data(), poses);
+  for (std::size_t l = 0; l < scene.loops.size(); ++l) {
+    const Loop& loop = scene.loops[l];
+    const ClosureError e = closure_error(poses[loop.body], poses[loop.image]);
+    if (e.distance > scene.closure_tolerance || e.angle > scene.closure_tolerance) {
+      std::ostringstream s;
+      s.precision(6);
+      s << "loop '" << loop.name << "' does not close at the initial state: the origins of '"
+        << scene.model.bodies[loop.body].name << "' and '" << scene.model.bodies[loop.image].name << "' are "
+        << e.distance << " m apart and their frames " << e.angle << " rad apart (closure_tolerance "
+        << scene.closure_tolerance << ")";
+      fail(loop_nodes_[l], index_field("loops", l), s.str());
+    }
+  }
+}
+
+Scene SceneReader::read(const std::string& text_in, const std::vector<Override>& overrides) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(text_in);
+  } catch (const YAML::ParserException& e) {
+    throw SceneError(source_ + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) +
+                     ": YAML syntax error: " + e.msg);
+  }
+  if (!root.IsMap()) throw SceneError(source_ + ": a scene file is a YAML mapping (name, bodies, ...)");
+  for (const Override& o : overrides) apply_override(root, o);
+
+  check_keys(root,
+             {"name", "description", "base", "gravity", "bodies", "springs", "dampers", "loads", "latches",
+              "loops", "regulator", "initial", "closure_tolerance", "run"},
+             "");
+  Scene scene;
+  scene.source = source_;
+  scene.name = root["name"] ? text(root["name"], "name") : "scene";
+  if (root["description"]) scene.description = text(root["description"], "description");
+  if (root["base"]) read_base(root["base"], scene);
+  if (root["gravity"]) {
+    scene.model.gravity = vec3(root["gravity"], "gravity");
+    if (!scene.model.gravity.isZero(0) && scene.model.base_rotates())
+      fail(root["gravity"], "gravity", "gravity needs a base that does not rotate");
+  }
+  const YAML::Node bodies = require(root, "bodies", "");
+  if (!bodies.IsSequence() || bodies.size() == 0) fail(bodies, "bodies", "expected a non-empty list of bodies");
+  for (std::size_t i = 0; i < bodies.size(); ++i) read_body(bodies[i], static_cast<int>(i), bodies, scene);
+  scene.model.finalize();
+
+  if (root["springs"]) read_springs(root["springs"], scene);
+  if (root["dampers"]) read_dampers(root["dampers"], scene);
+  if (root["loads"]) read_loads(root["loads"], scene);
+  if (root["latches"]) read_latches(root["latches"], scene);
+  if (root["loops"]) read_loops(root["loops"], scene);
+  if (root["regulator"]) read_regulator(root["regulator"], scene);
+  scene.q0.assign(scene.model.nq, 0.0);
+  scene.dq0.assign(scene.model.nq, 0.0);
+  if (root["initial"]) read_initial(root["initial"], scene);
+  if (scene.dq0.size() != static_cast<std::size_t>(scene.model.nq)) scene.dq0.assign(scene.model.nq, 0.0);
+  if (root["closure_tolerance"])
+    scene.closure_tolerance = positive(root["closure_tolerance"], "closure_tolerance");
+  if (root["run"]) read_run(root["run"], scene.run);
+  check_loops_close(scene);
+  return scene;
+}
+
+}  // namespace
+
+Override parse_override(const std::string& assignment) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw SceneError("--set " + assignment + ": expected KEY=VALUE, for example springs.0.stiffness=0.2");
+  return {assignment.substr(0, eq), assignment.substr(eq + 1)};
+}
+
+Scene load_scene_text(const std::string& text, const std::string& source, const std::vector<Override>& overrides) {
+  return SceneReader(source).read(text, overrides);
+}
+
+Scene load_scene_file(const std::string& path, const std::vector<Override>& overrides) {
+  std::ifstream in(path);
+  if (!in) throw SceneError(path + ": cannot open the scene file");
+  std::stringstream text;
+  text << in.rdbuf();
+  return load_scene_text(text.str(), path, overrides);
+}
+
+}  // namespace unfurl

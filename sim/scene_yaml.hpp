@@ -1,0 +1,38 @@
+// Scene files (YAML): loading, overrides and validation. Every error names
+// the file, line, column and field (SceneError); the format is documented
+// in assets/scenes/README.md.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "scene.hpp"
+
+namespace unfurl {
+
+class SceneError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// A "--set path=value" override: path is the key path in the file, with
+// list elements chosen by index or by their name (or joint, or body).
+struct Override {
+  std::string path;
+  std::string value;  // YAML
+};
+// Parses "path=value"; throws SceneError when there is no '='.
+Override parse_override(const std::string& assignment);
+
+Scene load_scene_file(const std::string& path, const std::vector<Override>& overrides = {});
+Scene load_scene_text(const std::string& text, const std::string& source,
+                      const std::vector<Override>& overrides = {});
+
+// The scenes built into the binary (so `unfurl simulate` needs no files).
+std::vector<std::string> builtin_scene_names();
+// Throws SceneError for an unknown name.
+Scene load_builtin_scene(const std::string& name, const std::vector<Override>& overrides = {});
+const std::string& builtin_scene_text(const std::string& name);
+
+}  // namespace unfurl

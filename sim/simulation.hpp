@@ -1,0 +1,53 @@
+// Runs a scene from its initial state to t_end: steps the chosen integrator,
+// samples the state at fixed times by the integrator's interpolation,
+// engages latches at the roots it finds (and restarts the integrator), and
+// stops with what it computed so far on a failure or a cancel.
+#pragma once
+
+#include <atomic>
+#include <functional>
+#include <string>
+
+#include "integrator.hpp"
+#include "scene.hpp"
+#include "trajectory.hpp"
+
+namespace unfurl {
+
+enum class RunStatus { finished, failed, cancelled };
+
+// Where and why a run stopped early.
+struct Failure {
+  double t = 0;
+  double step = 0;
+  std::string check;   // which check failed: "integrator", "closure", ...
+  std::string reason;
+};
+
+// "closure check failed at t = 3.2 s (step 1e-5 s): ..."
+std::string describe(const Failure& failure);
+
+struct RunResult {
+  RunStatus status = RunStatus::finished;
+  Failure failure;
+  SolverStats stats;
+  long rhs_calls = 0;
+  double wall_time_s = 0;
+  RunSettings settings;
+  Trajectory trajectory;
+};
+
+// Hooks for a caller that watches or stops a run (a GUI's thread, a
+// progress bar). Called on the running thread.
+struct RunObserver {
+  std::function<void(const Sample&)> on_sample;
+  std::function<void(const LatchEvent&)> on_event;
+  std::function<void(double t)> on_progress;  // after every step
+  const std::atomic<bool>* cancel = nullptr;
+};
+
+RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObserver& observer = {});
+
+const char* run_status_name(RunStatus status);
+
+}  // namespace unfurl

@@ -1,0 +1,52 @@
+#include "sundials_support.hpp"
+
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+
+#include <stdexcept>
+
+namespace unfurl::sundials {
+
+void check(int flag, const char* call) {
+  if (flag < 0) throw std::runtime_error(std::string(call) + " failed (flag " + std::to_string(flag) + ")");
+}
+
+void check_ptr(const void* ptr, const char* call) {
+  if (!ptr) throw std::runtime_error(std::string(call) + " failed (out of memory)");
+}
+
+Context::Context() { check(SUNContext_Create(nullptr, &ctx_), "SUNContext_Create"); }
+Context::~Context() { SUNContext_Free(&ctx_); }
+
+Vector::Vector(const std::vector<double>& values, SUNContext ctx)
+    : v_(N_VNew_Serial(static_cast<sunindextype>(values.size()), ctx)) {
+  check_ptr(v_, "N_VNew_Serial");
+  std::copy(values.begin(), values.end(), data());
+}
+Vector::~Vector() { N_VDestroy(v_); }
+
+DenseSolver::DenseSolver(int n, N_Vector y, SUNContext ctx)
+    : A(SUNDenseMatrix(n, n, ctx)), LS(SUNLinSol_Dense(y, A, ctx)) {
+  check_ptr(A, "SUNDenseMatrix");
+  check_ptr(LS, "SUNLinSol_Dense");
+}
+DenseSolver::~DenseSolver() {
+  SUNLinSolFree(LS);
+  SUNMatDestroy(A);
+}
+
+int rhs(double t, N_Vector y, N_Vector ydot, void* dynamics) {
+  // A positive return asks the integrator to retry with a smaller step.
+  return static_cast<Dynamics*>(dynamics)->rhs(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot)) ? 0 : 1;
+}
+
+int switching(double, N_Vector y, double* values, void* dynamics) {
+  static_cast<Dynamics*>(dynamics)->switching_functions(N_VGetArrayPointer(y), values);
+  return 0;
+}
+
+void capture_error(int, const char* module, const char* function, char* message, void* sink) {
+  *static_cast<std::string*>(sink) = std::string(module) + " " + function + ": " + message;
+}
+
+}  // namespace unfurl::sundials

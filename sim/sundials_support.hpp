@@ -1,0 +1,65 @@
+// What the SUNDIALS-based integrators share: the context and vectors as
+// owned objects, the callbacks into Dynamics, and checked calls.
+#pragma once
+
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sundials/sundials_linearsolver.h>
+#include <sundials/sundials_matrix.h>
+
+#include <string>
+#include <vector>
+
+#include "dynamics.hpp"
+
+namespace unfurl::sundials {
+
+// Throws std::runtime_error naming the call when a SUNDIALS call fails.
+void check(int flag, const char* call);
+void check_ptr(const void* ptr, const char* call);
+
+class Context {
+ public:
+  Context();
+  ~Context();
+  Context(const Context&) = delete;
+  Context& operator=(const Context&) = delete;
+  operator SUNContext() const { return ctx_; }
+
+ private:
+  SUNContext ctx_ = nullptr;
+};
+
+class Vector {
+ public:
+  Vector(const std::vector<double>& values, SUNContext ctx);
+  ~Vector();
+  Vector(const Vector&) = delete;
+  Vector& operator=(const Vector&) = delete;
+  operator N_Vector() const { return v_; }
+  double* data() const { return N_VGetArrayPointer(v_); }
+
+ private:
+  N_Vector v_ = nullptr;
+};
+
+// A dense matrix and its direct solver, for the implicit methods' Newton
+// iterations.
+struct DenseSolver {
+  DenseSolver(int n, N_Vector y, SUNContext ctx);
+  ~DenseSolver();
+  DenseSolver(const DenseSolver&) = delete;
+  DenseSolver& operator=(const DenseSolver&) = delete;
+  SUNMatrix A = nullptr;
+  SUNLinearSolver LS = nullptr;
+};
+
+// Callbacks, with the Dynamics as user data.
+int rhs(double t, N_Vector y, N_Vector ydot, void* dynamics);
+int switching(double t, N_Vector y, double* values, void* dynamics);
+
+// Keeps the library's last error message for the failure report instead of
+// letting it print.
+void capture_error(int code, const char* module, const char* function, char* message, void* sink);
+
+}  // namespace unfurl::sundials

@@ -1,0 +1,41 @@
+// The recorded run: states sampled at fixed times, what was derived from
+// them, and the latch events. Readers (renderer, plots, files) interpolate
+// it; they never call the solver.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "dynamics.hpp"
+
+namespace unfurl {
+
+struct Sample {
+  double t = 0;
+  std::vector<double> y;             // the full state
+  std::vector<double> dq;            // joint rates
+  std::vector<double> loop_residual; // |eps pi| per loop
+  std::vector<ClosureError> closure; // geometric closure per loop
+  EnergyParts energy;
+};
+
+struct LatchEvent {
+  double t = 0;
+  int latch = 0;
+  int joint = 0;
+};
+
+struct Trajectory {
+  StateLayout layout;
+  std::vector<Sample> samples;
+  std::vector<LatchEvent> events;
+
+  bool empty() const { return samples.empty(); }
+  double t_begin() const { return samples.front().t; }
+  double t_end() const { return samples.back().t; }
+  // Joint coordinates at time t (clamped to the recorded span), by cubic
+  // Hermite interpolation of q with its rates dq.
+  void coordinates_at(double t, std::vector<double>& q) const;
+};
+
+}  // namespace unfurl
