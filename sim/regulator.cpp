@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace unfurl {
 
@@ -12,39 +14,47 @@ Regulator::Regulator(const Model& model, const std::vector<Loop>& loops,
       components_(std::move(components)),
       settings_(settings),
       diagonal_W0_(Eigen::VectorXd::Ones(size())),
-      W_(size(), size()),
-      eigen_(size()),
-      inverse_gain_(size()),
-      strong_(size()),
-      a_(size()),
-      b_(size()),
-      c_(size()),
       F_(model.size()),
       phi_(model.size()),
       v_(model.size()),
       x_(model.nq),
-      dq_(model.nq) {}
+      dq_(model.nq) {
+  if (settings_.gains != GainTuning::full) return;
+  if (size() > kMaxFullGainComponents)
+    throw std::invalid_argument("the full-matrix regulator gains handle at most " +
+                                std::to_string(kMaxFullGainComponents) + " loop components; this scene has " +
+                                std::to_string(size()));
+  W_.resize(size(), size());
+  for (LoopVector* v : {&inverse_gain_, &strong_, &a_, &b_, &c_}) v->resize(size());
+}
 
-const Eigen::MatrixXd& Regulator::mobility(Sweep& sweep) {
-  // Column c of W: the residual rates eps v caused by the momentum
-  // J^T e_c = A^T T^T eps^T e_c on a body system at rest.
+void Regulator::mobility_column(Sweep& sweep, int c, double* column) {
+  // The residual rates eps v caused by the momentum J^T e_c =
+  // A^T T^T eps^T e_c on a body system at rest.
   const Vec6 at_rest = Vec6::Zero();
-  for (int c = 0; c < size(); ++c) {
-    for (Vec6& f : F_) f.setZero();
-    const LoopComponent& lc = components_[c];
-    F_[loops_[lc.loop].body][lc.axis] = 1;
-    F_[loops_[lc.loop].image][lc.axis] = -1;
-    sweep.generalized_forces(F_, x_.data());
-    sweep.bias(x_.data(), phi_);
-    sweep.velocities(x_.data(), phi_, at_rest, dq_.data(), v_);
-    residual_rate(v_, W_.col(c).data());
-  }
+  for (Vec6& f : F_) f.setZero();
+  const LoopComponent& lc = components_[c];
+  F_[loops_[lc.loop].body][lc.axis] = 1;
+  F_[loops_[lc.loop].image][lc.axis] = -1;
+  sweep.generalized_forces(F_, x_.data());
+  sweep.bias(x_.data(), phi_);
+  sweep.velocities(x_.data(), phi_, at_rest, dq_.data(), v_);
+  residual_rate(v_, column);
+}
+
+const LoopMatrix& Regulator::mobility(Sweep& sweep) {
+  W_.resize(size(), size());
+  for (int c = 0; c < size(); ++c) mobility_column(sweep, c, W_.col(c).data());
   return W_;
 }
 
 void Regulator::freeze_diagonal_gains(Sweep& sweep) {
   if (settings_.gains != GainTuning::paper) return;
-  diagonal_W0_ = mobility(sweep).diagonal();
+  std::vector<double> column(size());
+  for (int c = 0; c < size(); ++c) {
+    mobility_column(sweep, c, column.data());
+    diagonal_W0_[c] = column[c];
+  }
 }
 
 void Regulator::residual_rate(const std::vector<Vec6>& v, double* g_dot) const {
@@ -108,7 +118,7 @@ double Regulator::energy(Sweep& sweep, const double* g, const double* u) {
     return 0.5 * v2 * (g_ + u_).cwiseAbs2().cwiseQuotient(diagonal_W0_).sum();
   full_gains(sweep);
   const auto& V = eigen_.eigenvectors();
-  const Eigen::VectorXd s = V.transpose() * g_ + strong_.cwiseProduct(V.transpose() * u_);
+  const LoopVector s = V.transpose() * g_ + strong_.cwiseProduct(V.transpose() * u_);
   return 0.5 * v2 * s.cwiseAbs2().cwiseProduct(inverse_gain_).sum();
 }
 

@@ -28,6 +28,13 @@ namespace unfurl {
 
 enum class GainTuning { full, paper };
 
+// The full tuning decomposes W in every right-hand side; bounding its size
+// keeps that on the stack (no allocation) and its O(m^3) cost in check.
+inline constexpr int kMaxFullGainComponents = 48;
+using LoopMatrix =
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxFullGainComponents, kMaxFullGainComponents>;
+using LoopVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxFullGainComponents, 1>;
+
 struct RegulatorSettings {
   GainTuning gains = GainTuning::full;
   double v_max = 2000;  // rad/s, above the mechanism's highest frequency
@@ -38,6 +45,8 @@ struct RegulatorSettings {
 
 class Regulator {
  public:
+  // Throws std::invalid_argument when the full tuning is asked for more
+  // than kMaxFullGainComponents components.
   Regulator(const Model& model, const std::vector<Loop>& loops, std::vector<LoopComponent> components,
             const RegulatorSettings& settings);
 
@@ -63,9 +72,11 @@ class Regulator {
   double energy(Sweep& sweep, const double* g, const double* u);
 
   // W at the sweep's configuration (m passes of the sweep).
-  const Eigen::MatrixXd& mobility(Sweep& sweep);
+  const LoopMatrix& mobility(Sweep& sweep);
 
  private:
+  // Column c of W.
+  void mobility_column(Sweep& sweep, int c, double* column);
   void full_gains(Sweep& sweep);
 
   const Model& model_;
@@ -76,11 +87,11 @@ class Regulator {
   Eigen::VectorXd diagonal_W0_;  // paper tuning: diag W(0)
 
   // Scratch, sized once.
-  Eigen::MatrixXd W_;
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen_;
-  Eigen::VectorXd inverse_gain_;  // 1 / max(w_k, floor)
-  Eigen::VectorXd strong_;        // 1 for modes with an integral state, else 0
-  Eigen::VectorXd a_, b_, c_;
+  LoopMatrix W_;
+  Eigen::SelfAdjointEigenSolver<LoopMatrix> eigen_;
+  LoopVector inverse_gain_;  // 1 / max(w_k, floor)
+  LoopVector strong_;        // 1 for modes with an integral state, else 0
+  LoopVector a_, b_, c_;
   std::vector<Vec6> F_, phi_, v_;
   std::vector<double> x_, dq_;
 };

@@ -1,0 +1,173 @@
+// The command line: scene validation (exit code 2 with file, line and
+// field), the files `simulate` writes, and --set.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "support.hpp"
+
+namespace unfurl {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int code = -1;
+  std::string output;
+};
+
+Outcome run(const std::string& arguments) {
+  const std::string command = std::string(UNFURL_BINARY) + " " + arguments + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  Outcome o;
+  char buf[4096];
+  while (std::size_t n = std::fread(buf, 1, sizeof buf, pipe)) o.output.append(buf, n);
+  const int status = pclose(pipe);
+  o.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return o;
+}
+
+fs::path temp_dir() {
+  const fs::path dir = fs::temp_directory_path() / ("unfurl_cli_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return dir;
+}
+
+// A valid one-loop scene; the tests break one line of it at a time.
+const char* kValidScene = R"(name: tiny
+bodies:
+  - name: crank
+    parent: ground
+    mass: 0.5
+    inertia: [0.0067, 0.0001, 0.0067]
+    joint: {name: a, type: revolute, axis: [1, 0, 0], parent_point: [0, 0, 0], child_point: [0, -0.2, 0]}
+  - name: coupler
+    parent: crank
+    mass: 1.5
+    inertia: [0.18, 0.0003, 0.18]
+    joint: {name: b, type: revolute, axis: [1, 0, 0], parent_point: [0, 0.2, 0], child_point: [0, -0.6, 0]}
+  - name: rocker
+    parent: ground
+    mass: 0.5
+    inertia: [0.0267, 0.0001, 0.0267]
+    joint: {name: c, type: revolute, axis: [1, 0, 0], parent_point: [0, 1.0, 0], child_point: [0, -0.4, 0]}
+  - name: rocker_image
+    parent: coupler
+    mass: 0.5
+    inertia: [0.0267, 0.0001, 0.0267]
+    joint: {name: d, type: revolute, axis: [1, 0, 0], parent_point: [0, 0.6, 0], child_point: [0, 0.4, 0]}
+base: {name: ground}
+loops:
+  - {name: rocker, body: rocker, image: rocker_image}
+initial:
+  q: {a: 1.5707963267948966, b: -1.2411402364746325, c: 1.4007473763557963, d: 1.0710912860355322}
+run: {t_end: 0.1}
+)";
+
+std::string replace_line(const std::string& text, int line, const std::string& with) {
+  std::istringstream in(text);
+  std::ostringstream out;
+  std::string l;
+  for (int n = 1; std::getline(in, l); ++n) out << (n == line ? with : l) << "\n";
+  return out.str();
+}
+
+struct BadScene {
+  const char* name;
+  int line;             // the line to replace (1-based)
+  const char* with;     // its new text
+  int reported_line;    // the line the error must name
+  const char* message;  // a regex the message must match
+};
+
+class Validation : public ::testing::TestWithParam<BadScene> {};
+
+TEST_P(Validation, ExitsWithCode2AndNamesFileLineAndField) {
+  const BadScene& bad = GetParam();
+  const fs::path dir = temp_dir();
+  const fs::path file = dir / (std::string(bad.name) + ".yaml");
+  std::ofstream(file) << replace_line(kValidScene, bad.line, bad.with);
+  const Outcome o = run("simulate " + file.string() + " --out " + (dir / "out").string());
+  EXPECT_EQ(o.code, 2) << o.output;
+  const std::string where = file.string() + ":" + std::to_string(bad.reported_line) + ":";
+  EXPECT_NE(o.output.find(where), std::string::npos) << "expected '" << where << "' in: " << o.output;
+  EXPECT_TRUE(std::regex_search(o.output, std::regex(bad.message))) << o.output;
+  EXPECT_FALSE(fs::exists(dir / "out" / "trajectory.csv"));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    SceneErrors, Validation,
+    ::testing::Values(
+        BadScene{"unknown_key", 5, "    mass: 0.5\n    colour: red", 6, "unknown key 'colour'"},
+        BadScene{"wrong_type", 10, "    mass: heavy", 10, "bodies\\[1\\] \\(coupler\\)\\.mass: expected a number"},
+        BadScene{"missing_field", 6, "", 3, "bodies\\[0\\] \\(crank\\): missing field 'inertia'"},
+        BadScene{"not_regular", 9, "    parent: rocker", 9, "numbering is not regular"},
+        BadScene{"inertia_not_pd", 6, "    inertia: [0.0067, -0.0001, 0.0067]", 6, "not positive definite"},
+        BadScene{"negative_mass", 5, "    mass: -0.5", 5, "negative mass"},
+        BadScene{"loop_open", 27, "  q: {a: 1.6, b: -1.2411402364746325, c: 1.4007473763557963, d: 1.0710912860355322}",
+                 25, "loop 'rocker' does not close.*0\\.0[0-9]* m apart"},
+        BadScene{"zero_axis", 7,
+                 "    joint: {name: a, type: revolute, axis: [0, 0, 0], parent_point: [0, 0, 0], child_point: [0, -0.2, 0]}",
+                 7, "zero length"}),
+    [](const ::testing::TestParamInfo<BadScene>& info) { return std::string(info.param.name); });
+
+TEST(Cli, ValidSceneRunsAndWritesTheThreeFiles) {
+  const fs::path dir = temp_dir();
+  const fs::path file = dir / "valid.yaml";
+  std::ofstream(file) << kValidScene;
+  const Outcome o = run("simulate " + file.string() + " --out " + (dir / "ok").string());
+  ASSERT_EQ(o.code, 0) << o.output;
+  for (const char* f : {"trajectory.csv", "events.csv", "summary.json"}) EXPECT_TRUE(fs::exists(dir / "ok" / f)) << f;
+  std::ifstream csv(dir / "ok" / "trajectory.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header,
+            "t,q.a,dq.a,p.a,q.b,dq.b,p.b,q.c,dq.c,p.c,q.d,dq.d,p.d,residual.rocker,closure_m.rocker,"
+            "closure_rad.rocker,energy");
+  int rows = 0;
+  for (std::string line; std::getline(csv, line);) ++rows;
+  EXPECT_EQ(rows, 11);  // 0, 0.01, ..., 0.1
+}
+
+TEST(Cli, SetOverridesAValueAndRejectsABadOne) {
+  const fs::path dir = temp_dir();
+  Outcome o = run("simulate zfold --t-end 0.5 --set springs.j1.stiffness=0.2 --out " + (dir / "set").string());
+  ASSERT_EQ(o.code, 0) << o.output;
+  o = run("simulate zfold --set springs.j1.stiffness=soft --out " + (dir / "bad").string());
+  EXPECT_EQ(o.code, 2);
+  EXPECT_NE(o.output.find("--set springs.j1.stiffness=soft"), std::string::npos) << o.output;
+}
+
+TEST(Cli, UnknownOptionIsAUsageError) {
+  const Outcome o = run("simulate zfold --colour red");
+  EXPECT_EQ(o.code, 64);
+  EXPECT_NE(o.output.find("unknown option --colour"), std::string::npos);
+}
+
+TEST(Cli, HelpDocumentsEveryFlag) {
+  const Outcome o = run("simulate --help");
+  EXPECT_EQ(o.code, 0);
+  for (const char* flag : {"--out", "--t-end", "--integrator", "--rtol", "--atol", "--dt", "--sample", "--set"})
+    EXPECT_NE(o.output.find(flag), std::string::npos) << flag;
+}
+
+TEST(Cli, SolverFailureReportsWhereAndKeepsResults) {
+  // RK4 with a step far beyond the regulator's stability limit diverges.
+  const fs::path dir = temp_dir() / "fail";
+  const Outcome o = run("simulate fourbar --integrator rk4 --dt 0.01 --t-end 2 --out " + dir.string());
+  EXPECT_EQ(o.code, 1) << o.output;
+  EXPECT_TRUE(std::regex_search(o.output, std::regex("check failed at t = [0-9.e-]+ s \\(step"))) << o.output;
+  EXPECT_TRUE(fs::exists(dir / "trajectory.csv"));
+  std::ifstream json(dir / "summary.json");
+  std::stringstream text;
+  text << json.rdbuf();
+  EXPECT_NE(text.str().find("\"status\": \"failed\""), std::string::npos);
+}
+
+}  // namespace
+}  // namespace unfurl

@@ -1,0 +1,83 @@
+// The right-hand side allocates nothing: malloc is counted around rhs()
+// calls of the pantograph (loops, full-matrix regulator, latches engaged),
+// the z-fold and a gravity scene. glibc lets a program interpose malloc.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+
+#include "dynamics.hpp"
+#include "support.hpp"
+
+extern "C" {
+void* __libc_malloc(size_t);
+void* __libc_calloc(size_t, size_t);
+void* __libc_realloc(void*, size_t);
+void* __libc_memalign(size_t, size_t);
+
+static std::atomic<long> allocations{0};
+
+void* malloc(size_t n) {
+  allocations.fetch_add(1, std::memory_order_relaxed);
+  return __libc_malloc(n);
+}
+void* calloc(size_t n, size_t size) {
+  allocations.fetch_add(1, std::memory_order_relaxed);
+  return __libc_calloc(n, size);
+}
+void* realloc(void* p, size_t n) {
+  allocations.fetch_add(1, std::memory_order_relaxed);
+  return __libc_realloc(p, n);
+}
+void* aligned_alloc(size_t alignment, size_t n) {
+  allocations.fetch_add(1, std::memory_order_relaxed);
+  return __libc_memalign(alignment, n);
+}
+int posix_memalign(void** out, size_t alignment, size_t n) {
+  allocations.fetch_add(1, std::memory_order_relaxed);
+  *out = __libc_memalign(alignment, n);
+  return *out ? 0 : 12;
+}
+}
+
+namespace unfurl {
+namespace {
+
+long allocations_in_rhs(const Scene& scene, bool engage_latches) {
+  Dynamics dynamics(scene);
+  std::vector<double> y = dynamics.initial_state(), ydot(y.size());
+  for (double& x : y) x += 1e-3;  // a generic state: moving, loops slightly open
+  if (engage_latches)
+    for (int l = 0; l < dynamics.latch_count(); ++l) dynamics.latch_state().engage(l);
+  dynamics.rhs(0, y.data(), ydot.data());  // warm-up
+  const long before = allocations.load();
+  for (int k = 0; k < 10; ++k) dynamics.rhs(0, y.data(), ydot.data());
+  return allocations.load() - before;
+}
+
+TEST(RightHandSide, CountsAllocationsAtAll) {
+  // The counter works: a vector allocates.
+  const long before = allocations.load();
+  std::vector<double>* v = new std::vector<double>(100);
+  delete v;
+  EXPECT_GE(allocations.load() - before, 1);
+}
+
+TEST(RightHandSide, PantographAllocatesNothing) {
+  EXPECT_EQ(allocations_in_rhs(test::scene_file("pantograph"), true), 0);
+}
+
+TEST(RightHandSide, PaperTuningAllocatesNothing) {
+  EXPECT_EQ(allocations_in_rhs(test::scene_file("pantograph", {{"regulator.gains", "paper"}}), false), 0);
+}
+
+TEST(RightHandSide, ZfoldAllocatesNothing) {
+  EXPECT_EQ(allocations_in_rhs(test::scene_file("zfold"), true), 0);
+}
+
+TEST(RightHandSide, GravitySceneAllocatesNothing) {
+  EXPECT_EQ(allocations_in_rhs(test::scene_file("double_pendulum"), false), 0);
+}
+
+}  // namespace
+}  // namespace unfurl
