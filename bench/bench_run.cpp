@@ -1,0 +1,37 @@
+// The pantograph's whole 20 s deployment per integrator at rtol 1e-8
+// (atol 1e-10; RK4 at a fixed 2e-4 s, near its stability limit with the
+// regulator at v_max = 2000): wall time, steps, right-hand sides.
+#include <benchmark/benchmark.h>
+
+#include "simulation.hpp"
+#include "scene_yaml.hpp"
+#include "summary.hpp"
+
+namespace unfurl {
+namespace {
+
+void BM_PantographRun(benchmark::State& state) {
+  const auto kind = static_cast<IntegratorKind>(state.range(0));
+  const Scene scene = load_builtin_scene("pantograph");
+  RunSettings settings = scene.run;
+  settings.integrator = kind;
+  settings.rtol = 1e-8;
+  settings.atol = 1e-10;
+  settings.dt = 2e-4;
+  RunResult result;
+  for (auto _ : state) result = simulate(scene, settings);
+  state.SetLabel(std::string(integrator_name(kind)) + (result.status == RunStatus::finished ? "" : " FAILED"));
+  state.counters["steps"] = static_cast<double>(result.stats.steps);
+  state.counters["rhs_calls"] = static_cast<double>(result.rhs_calls);
+  state.counters["jacobians"] = static_cast<double>(result.stats.jacobian_evals);
+  state.counters["latched"] = static_cast<double>(result.trajectory.events.size());
+  state.counters["closure_m"] = summarize(scene, result).max_closure_m;
+}
+BENCHMARK(BM_PantographRun)
+    ->DenseRange(0, 4)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->ArgName("integrator");
+
+}  // namespace
+}  // namespace unfurl
