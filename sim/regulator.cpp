@@ -26,6 +26,9 @@ Regulator::Regulator(const Model& model, const std::vector<Loop>& loops,
                                 std::to_string(size()));
   W_.resize(size(), size());
   for (LoopVector* v : {&inverse_gain_, &strong_, &a_, &b_, &c_}) v->resize(size());
+  for (auto* blocks : {&loads_, &phi_m_, &v_m_}) blocks->assign(model.size(), LoopSpatial::Zero(6, size()));
+  x_m_.resize(model.nq, size());
+  dq_m_.resize(model.nq, size());
 }
 
 void Regulator::mobility_column(Sweep& sweep, int c, double* column) {
@@ -43,8 +46,19 @@ void Regulator::mobility_column(Sweep& sweep, int c, double* column) {
 }
 
 const LoopMatrix& Regulator::mobility(Sweep& sweep) {
-  W_.resize(size(), size());
-  for (int c = 0; c < size(); ++c) mobility_column(sweep, c, W_.col(c).data());
+  for (LoopSpatial& f : loads_) f.setZero();
+  for (int c = 0; c < size(); ++c) {
+    const LoopComponent& lc = components_[c];
+    loads_[loops_[lc.loop].body](lc.axis, c) = 1;
+    loads_[loops_[lc.loop].image](lc.axis, c) = -1;
+  }
+  sweep.force_pass(loads_, x_m_);
+  sweep.bias_pass(x_m_, phi_m_);
+  sweep.velocity_pass(x_m_, phi_m_, Vec6::Zero(), dq_m_, v_m_);
+  for (int r = 0; r < size(); ++r) {
+    const LoopComponent& lc = components_[r];
+    W_.row(r) = v_m_[loops_[lc.loop].body].row(lc.axis) - v_m_[loops_[lc.loop].image].row(lc.axis);
+  }
   return W_;
 }
 

@@ -34,6 +34,9 @@ inline constexpr int kMaxFullGainComponents = 48;
 using LoopMatrix =
     Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxFullGainComponents, kMaxFullGainComponents>;
 using LoopVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxFullGainComponents, 1>;
+// Spatial vectors of every loop component's unit load at once (6 x m).
+using LoopSpatial = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, kMaxFullGainComponents>;
+using LoopCoordinates = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, Eigen::Dynamic, kMaxFullGainComponents>;
 
 struct RegulatorSettings {
   GainTuning gains = GainTuning::full;
@@ -71,11 +74,12 @@ class Regulator {
   // Potential energy of the regulator's springs, (g + u)^T C (g + u) / 2.
   double energy(Sweep& sweep, const double* g, const double* u);
 
-  // W at the sweep's configuration (m passes of the sweep).
+  // W at the sweep's configuration: the sweep's passes on the m unit loads
+  // at once, O(N m).
   const LoopMatrix& mobility(Sweep& sweep);
 
  private:
-  // Column c of W.
+  // Column c of W alone (the paper tuning, once, for any m).
   void mobility_column(Sweep& sweep, int c, double* column);
   void full_gains(Sweep& sweep);
 
@@ -92,6 +96,8 @@ class Regulator {
   LoopVector inverse_gain_;  // 1 / max(w_k, floor)
   LoopVector strong_;        // 1 for modes with an integral state, else 0
   LoopVector a_, b_, c_;
+  std::vector<LoopSpatial> loads_, phi_m_, v_m_;
+  LoopCoordinates x_m_, dq_m_;
   std::vector<Vec6> F_, phi_, v_;
   std::vector<double> x_, dq_;
 };

@@ -26,31 +26,43 @@ struct Placement {
   Vec3 rho = Vec3::Zero();
 
   // C v_parent of (1): the parent's velocity seen at the child origin, in
-  // the child frame.
-  Vec6 transform_velocity(const Vec6& v) const {
-    Vec6 out;
-    out.head<3>() = G * (v.head<3>() + v.tail<3>().cross(rho));
-    out.tail<3>() = G * v.tail<3>();
+  // the child frame. Also for 6 x k blocks of velocities.
+  template <class V>
+  Eigen::Matrix<double, 6, V::ColsAtCompileTime, 0, 6, V::MaxColsAtCompileTime> transform_velocity(
+      const Eigen::MatrixBase<V>& v) const {
+    Eigen::Matrix<double, 6, V::ColsAtCompileTime, 0, 6, V::MaxColsAtCompileTime> out(6, v.cols());
+    out.template topRows<3>().noalias() = G * (v.template topRows<3>() - skew(rho) * v.template bottomRows<3>());
+    out.template bottomRows<3>().noalias() = G * v.template bottomRows<3>();
     return out;
   }
 
   // C^T F_child: a force at the child origin (child frame) moved to the
-  // parent origin, in the parent frame.
-  Vec6 transform_force(const Vec6& F) const {
-    Vec6 out;
-    out.head<3>() = G.transpose() * F.head<3>();
-    out.tail<3>() = rho.cross(out.head<3>()) + G.transpose() * F.tail<3>();
+  // parent origin, in the parent frame. Also for 6 x k blocks.
+  template <class F>
+  Eigen::Matrix<double, 6, F::ColsAtCompileTime, 0, 6, F::MaxColsAtCompileTime> transform_force(
+      const Eigen::MatrixBase<F>& f) const {
+    Eigen::Matrix<double, 6, F::ColsAtCompileTime, 0, 6, F::MaxColsAtCompileTime> out(6, f.cols());
+    out.template topRows<3>().noalias() = G.transpose() * f.template topRows<3>();
+    out.template bottomRows<3>().noalias() = skew(rho) * out.template topRows<3>();
+    out.template bottomRows<3>().noalias() += G.transpose() * f.template bottomRows<3>();
     return out;
   }
 
-  // C of (1) as a matrix.
-  Mat6 C() const {
-    Mat6 c;
-    c.topLeftCorner<3, 3>() = G;
-    c.topRightCorner<3, 3>() = -G * skew(rho);
-    c.bottomLeftCorner<3, 3>().setZero();
-    c.bottomRightCorner<3, 3>() = G;
-    return c;
+  // C^T X C for a symmetric 6x6 X (an inertia carried to the parent), by
+  // blocks: rotate into the parent's axes, then shift by rho.
+  Mat6 congruence(const Mat6& X) const {
+    const Mat3 Gt = G.transpose();
+    const Mat3 A = Gt * X.topLeftCorner<3, 3>() * G;
+    const Mat3 B = Gt * X.topRightCorner<3, 3>() * G;
+    const Mat3 D = Gt * X.bottomRightCorner<3, 3>() * G;
+    const Mat3 r = skew(rho);
+    const Mat3 Ar = A * r;
+    Mat6 out;
+    out.topLeftCorner<3, 3>() = A;
+    out.topRightCorner<3, 3>() = B - Ar;
+    out.bottomLeftCorner<3, 3>() = out.topRightCorner<3, 3>().transpose();
+    out.bottomRightCorner<3, 3>() = D + r * B - B.transpose() * r - r * Ar;
+    return out;
   }
 };
 

@@ -2,6 +2,9 @@
 // velocities v and the subtree momenta mu from (q, p), and forms dp of (7).
 // Every pass visits each body once; only the n_i x n_i (here scalar) D_i is
 // inverted. All storage is allocated by the constructor.
+//
+// The passes also run on k load cases at once (6 x k blocks per body, k x
+// columns of coordinates), which the loop regulator uses to form W.
 #pragma once
 
 #include <vector>
@@ -20,28 +23,45 @@ class Sweep {
   void set_configuration(const double* q);
 
   // phi*_i of the first backward pass for momenta p (v*_i = 0).
-  void bias(const double* p, std::vector<Vec6>& phi) const;
+  void bias(const double* p, std::vector<Vec6>& phi) const { bias_pass(coordinates(p), phi); }
 
   // The forward pass: dq_i and v_i from p, phi* and the base velocity.
-  void velocities(const double* p, const std::vector<Vec6>& phi, const Vec6& v_base,
-                  double* dq, std::vector<Vec6>& v) const;
+  void velocities(const double* p, const std::vector<Vec6>& phi, const Vec6& v_base, double* dq,
+                  std::vector<Vec6>& v) const {
+    auto dq_ = coordinates(dq);
+    velocity_pass(coordinates(p), phi, v_base, dq_, v);
+  }
 
   // mu_i = M*_i v_i + phi*_i.
-  void momenta(const std::vector<Vec6>& v, const std::vector<Vec6>& phi,
-               std::vector<Vec6>& mu) const;
+  void momenta(const std::vector<Vec6>& v, const std::vector<Vec6>& phi, std::vector<Vec6>& mu) const;
 
   // F*_i = F_i + sum_{j in U_i} C_j^T F*_j in place, and Q_i = A_i^T F*_i,
   // i.e. Q = A^T T^T F.
-  void generalized_forces(std::vector<Vec6>& F, double* Q) const;
+  void generalized_forces(std::vector<Vec6>& F, double* Q) const {
+    auto Q_ = coordinates(Q);
+    force_pass(F, Q_);
+  }
 
   // dp_i = -A_i^T Omega_i mu_i, the velocity-dependent part of (7).
   void gyroscopic(const std::vector<Vec6>& v, const std::vector<Vec6>& mu, double* dp) const;
+
+  // The same three passes for k load cases: S[i] is 6 x k, P is nq x k.
+  template <class S, class P>
+  void bias_pass(const P& p, std::vector<S>& phi) const;
+  template <class S, class P, class Pout>
+  void velocity_pass(const P& p, const std::vector<S>& phi, const Vec6& v_base, Pout& dq,
+                     std::vector<S>& v) const;
+  template <class S, class Pout>
+  void force_pass(std::vector<S>& F, Pout& Q) const;
 
   const Placement& placement(int i) const { return X_[i]; }
   const Vec6& motion_axis(int i) const { return A_[i]; }
   const Model& model() const { return model_; }
 
  private:
+  Eigen::Map<Eigen::VectorXd> coordinates(double* x) const { return {x, model_.nq}; }
+  Eigen::Map<const Eigen::VectorXd> coordinates(const double* x) const { return {x, model_.nq}; }
+
   const Model& model_;
   std::vector<Vec6> A_;         // A_i (constant)
   std::vector<Mat6> M_;         // M_i (constant)
@@ -50,5 +70,46 @@ class Sweep {
   std::vector<Vec6> M_star_A_;  // M*_i A_i
   std::vector<double> D_;       // D_i = (A_i^T M*_i A_i)^-1
 };
+
+template <class S, class P>
+void Sweep::bias_pass(const P& p, std::vector<S>& phi) const {
+  const int N = model_.size();
+  for (int i = 0; i < N; ++i) phi[i].setZero();
+  for (int j = N - 1; j >= 0; --j) {
+    const int k = model_.parent[j];
+    if (k == kBase) continue;
+    // M*_j A_j D_j p_j + H_j phi*_j
+    S carried = phi[j];
+    const int c = model_.coordinate[j];
+    if (c >= 0) carried.noalias() += M_star_A_[j] * (D_[j] * (p.row(c) - A_[j].transpose() * phi[j]));
+    phi[k] += X_[j].transform_force(carried);
+  }
+}
+
+template <class S, class P, class Pout>
+void Sweep::velocity_pass(const P& p, const std::vector<S>& phi, const Vec6& v_base, Pout& dq,
+                          std::vector<S>& v) const {
+  const int N = model_.size();
+  const S base = v_base.replicate(1, phi.empty() ? 1 : phi[0].cols());
+  for (int i = 0; i < N; ++i) {
+    const int k = model_.parent[i];
+    v[i] = X_[i].transform_velocity(k == kBase ? base : v[k]);
+    const int c = model_.coordinate[i];
+    if (c >= 0) {
+      dq.row(c) = D_[i] * (p.row(c) - A_[i].transpose() * (phi[i] + M_star_[i] * v[i]));
+      v[i].noalias() += A_[i] * dq.row(c);
+    }
+  }
+}
+
+template <class S, class Pout>
+void Sweep::force_pass(std::vector<S>& F, Pout& Q) const {
+  for (int i = model_.size() - 1; i >= 0; --i) {
+    const int c = model_.coordinate[i];
+    if (c >= 0) Q.row(c).noalias() = A_[i].transpose() * F[i];
+    const int k = model_.parent[i];
+    if (k != kBase) F[k] += X_[i].transform_force(F[i]);
+  }
+}
 
 }  // namespace unfurl
