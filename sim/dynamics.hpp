@@ -34,7 +34,8 @@ struct EnergyParts {
   double latches = 0;
   double gravity = 0;
   double regulator = 0;
-  double total() const { return kinetic + springs + latches + gravity + regulator; }
+  double unattributed = 0;  // energy known only as a total (a trajectory read back from a file)
+  double total() const { return kinetic + springs + latches + gravity + regulator + unattributed; }
 };
 
 // Everything derived from a state at one instant.

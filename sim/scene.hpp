@@ -34,11 +34,13 @@ struct RunSettings {
   double max_closure = 0.1;
 };
 
-// What the renderer draws for a body: a mesh from assets/meshes, scaled and
-// offset in the body frame.
+// What the renderer draws for a body: a mesh from assets/meshes, scaled,
+// then turned about an axis, then offset, in the body frame.
 struct Visual {
   std::string mesh;
   Vec3 scale = Vec3::Ones();
+  Vec3 rotation_axis = Vec3::UnitZ();
+  double rotation_deg = 0;
   Vec3 offset = Vec3::Zero();
 };
 

@@ -44,9 +44,9 @@ struct Writer {
   }
 };
 
-const char* kPanelMesh = "{name: panel, scale: [0.9, 1.2, 0.025]}";
-const char* kFrameMesh = "{name: yoke, scale: [0.9, 0.6, 0.025]}";
-const char* kBus = "base:\n  name: bus\n  mesh: {name: bus, scale: [1.6, 1.2, 1.2], offset: [0, 0.15, -0.6]}\n\n";
+const char* kPanelMesh = "panel";
+const char* kFrameMesh = "yoke";
+const char* kBus = "base:\n  name: bus\n  mesh: {name: bus, scale: [1.6, 1.2, 1.2]}\n\n";
 
 // One chain of a frame and `panels` panels at x; joints named j<first>...
 // mirror = +1 for chain A, -1 for chain B; share: the mass share of panels.

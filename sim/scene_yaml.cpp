@@ -230,7 +230,7 @@ Visual SceneReader::read_visual(const YAML::Node& node, const std::string& field
     v.mesh = node.Scalar();
     return v;
   }
-  check_keys(node, {"name", "scale", "offset"}, field);
+  check_keys(node, {"name", "scale", "rotation", "offset"}, field);
   v.mesh = text(require(node, "name", field), field + ".name");
   const YAML::Node scale = node["scale"];
   if (scale && scale.IsScalar()) {
@@ -238,6 +238,13 @@ Visual SceneReader::read_visual(const YAML::Node& node, const std::string& field
   } else if (scale) {
     v.scale = vec3(scale, field + ".scale");
     if ((v.scale.array() <= 0).any()) fail(scale, field + ".scale", "must be positive");
+  }
+  if (const YAML::Node rotation = node["rotation"]) {
+    const std::vector<double> r = numbers(rotation, field + ".rotation");
+    if (r.size() != 4 || Vec3(r[0], r[1], r[2]).norm() < 1e-12)
+      fail(rotation, field + ".rotation", "expected [axis x, axis y, axis z, angle in degrees] with a nonzero axis");
+    v.rotation_axis = Vec3(r[0], r[1], r[2]).normalized();
+    v.rotation_deg = r[3];
   }
   v.offset = vec3_or(node, "offset", Vec3::Zero(), field);
   return v;

@@ -1,0 +1,151 @@
+// unfurl render: frames (PNG), video (MP4 through ffmpeg) and plots of a
+// run, headless (OSMesa: no display needed).
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <regex>
+#include <sstream>
+
+#include "cli.hpp"
+#include "commands.hpp"
+#include "frame_renderer.hpp"
+#include "gl_context.hpp"
+#include "output_file.hpp"
+#include "png_file.hpp"
+#include "progress.hpp"
+#include "render_options.hpp"
+#include "scene_options.hpp"
+#include "simulation.hpp"
+#include "trajectory_csv.hpp"
+#include "trajectory_plots.hpp"
+#include "video_pipe.hpp"
+
+namespace unfurl::app {
+
+namespace {
+
+const char* kHelp =
+    "usage: unfurl render [SCENE] [--out DIR] [--fps 30] [--size 1280x720] [--from T0] [--to T1]\n"
+    "                     [--video FILE.mp4] [--camera NAME|AZ,EL,DIST] [--plots] [--no-frames]\n"
+    "                     [--trajectory FILE] [scene options]\n"
+    "\n"
+    "Simulates the scene (or reads a trajectory.csv written by `unfurl simulate`) and draws it\n"
+    "offscreen: no display is needed.\n"
+    "\n"
+    "options:\n"
+    "  --out DIR             where frames and plots go (default out)\n"
+    "  --fps F               frames per second of simulated time (default 30)\n"
+    "  --size WxH            picture size in pixels (default 1280x720)\n"
+    "  --from T0, --to T1    the time span to draw (default: the whole run)\n"
+    "  --video FILE.mp4      also encode the frames as an H.264 video (needs ffmpeg)\n"
+    "  --camera VIEW         a preset (iso, side, top, end, bottom; default iso) or AZ,EL,DIST in\n"
+    "                        degrees and metres around the centre of the array\n"
+    "  --plots               also write angles.png, rates.png, residuals.png (scenes with loops)\n"
+    "                        and energy.png\n"
+    "  --no-frames           do not write frame PNGs (with --video or --plots)\n"
+    "  --trajectory FILE     draw this trajectory.csv instead of simulating (events.csv beside it\n"
+    "                        gives the latch marks); SCENE must be the scene it was made from\n"
+    "%s"
+    "\n"
+    "Frames are frame_00000.png, ... at t = T0 + k / F, interpolated from the trajectory.\n";
+
+// Removes frame_NNNNN.png files of an earlier, longer render.
+void remove_stale_frames(const std::string& dir, std::size_t written) {
+  const std::regex pattern("frame_([0-9]{5,})\\.png");
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+    std::smatch m;
+    const std::string name = entry.path().filename().string();
+    if (std::regex_match(name, m, pattern) && std::stoul(m[1]) >= written) std::filesystem::remove(entry.path(), ec);
+  }
+}
+
+}  // namespace
+
+int command_render(const std::vector<std::string>& argv) {
+  std::set<std::string> valued = scene_flags();
+  valued.insert({"--out", "--fps", "--size", "--from", "--to", "--video", "--camera", "--trajectory"});
+  const Args args(argv, valued, {"--help", "-h", "--plots", "--no-frames", "--quiet"});
+  if (args.has("--help") || args.has("-h")) {
+    std::printf(kHelp, scene_flags_help());
+    return 0;
+  }
+  if (args.positionals().size() > 1) throw UsageError("render takes one SCENE (see --help)");
+  const Scene scene = load_scene(args.positionals().empty() ? std::nullopt : std::optional(args.positionals()[0]), args);
+  const RenderOptions options = parse_render_options(args);
+  const std::string dir = args.get("--out").value_or("out");
+  make_directory(dir);
+  const bool quiet = args.has("--quiet");
+
+  int exit_code = 0;
+  Trajectory trajectory;
+  if (const auto file = args.get("--trajectory")) {
+    trajectory = read_trajectory_csv(scene, *file);
+  } else {
+    Progress progress("simulating " + scene.name, scene.run.t_end);
+    RunObserver observer;
+    if (!quiet) observer.on_progress = [&](double t) { progress.update(t); };
+    RunResult run = simulate(scene, scene.run, observer);
+    progress.finish();
+    if (run.status == RunStatus::failed) {
+      std::fprintf(stderr, "unfurl render: %s\n(drawing what was computed, up to t = %g s)\n",
+                   describe(run.failure).c_str(), run.trajectory.t_end());
+      exit_code = 1;
+    }
+    trajectory = std::move(run.trajectory);
+  }
+
+  const std::vector<double> times = frame_times(options, trajectory.t_begin(), trajectory.t_end());
+  auto context = render::make_offscreen_context();
+  render::FrameRenderer renderer(scene, options.width, options.height, mesh_directories(scene));
+  const render::Camera camera = choose_camera(options, scene, trajectory, renderer.view(),
+                                              static_cast<float>(options.width) / options.height);
+
+  std::unique_ptr<VideoPipe> video;
+  if (options.video) video = std::make_unique<VideoPipe>(*options.video, options.width, options.height, options.fps);
+  const bool write_frames = !args.has("--no-frames");
+  Progress progress("rendering " + std::to_string(times.size()) + " frames", static_cast<double>(times.size()));
+  render::Image image;
+  std::vector<double> q;
+  std::vector<Pose> poses;
+  const auto start = std::chrono::steady_clock::now();
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    trajectory.coordinates_at(times[k], q);
+    body_poses(scene.model, q.data(), poses);
+    renderer.frame(poses, times[k], camera, image);
+    if (write_frames) {
+      char name[32];
+      std::snprintf(name, sizeof name, "/frame_%05zu.png", k);
+      write_png(image, dir + name);
+    }
+    if (video) video->add(image);
+    if (!quiet) progress.update(static_cast<double>(k + 1));
+  }
+  progress.finish();
+  if (write_frames) remove_stale_frames(dir, times.size());
+  if (video) video->finish();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  std::vector<std::string> plots;
+  if (args.has("--plots"))
+    for (const render::NamedPlot& p : render::trajectory_plots(scene, trajectory)) {
+      renderer.plot(p.spec, image);
+      write_png(image, dir + "/" + p.file, 6);
+      plots.push_back(dir + "/" + p.file);
+    }
+
+  if (!quiet) {
+    std::printf("scene        %s (%s)\n", scene.name.c_str(), scene.source.c_str());
+    std::printf("frames       %zu at %g fps, t = %g .. %g s, %dx%d, %.1f frames/s%s\n", times.size(), options.fps,
+                times.empty() ? 0.0 : times.front(), times.empty() ? 0.0 : times.back(), options.width,
+                options.height, seconds > 0 ? times.size() / seconds : 0.0,
+                write_frames ? (", " + dir + "/frame_*.png").c_str() : " (not written)");
+    if (video) std::printf("video        %s\n", options.video->c_str());
+    for (const std::string& p : plots) std::printf("plot         %s\n", p.c_str());
+  }
+  return exit_code;
+}
+
+}  // namespace unfurl::app

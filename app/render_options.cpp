@@ -1,0 +1,84 @@
+#include "render_options.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+#include "kinematics.hpp"
+#include "mesh_library.hpp"
+
+namespace unfurl::app {
+
+RenderOptions parse_render_options(const Args& args) {
+  RenderOptions o;
+  o.fps = args.number("--fps", o.fps);
+  if (!(o.fps > 0) || o.fps > 10000) throw UsageError("--fps: must be between 0 and 10000");
+  if (const auto size = args.get("--size")) {
+    int w = 0, h = 0;
+    char x = 0, extra = 0;
+    std::istringstream in(*size);
+    if (!(in >> w >> x >> h) || x != 'x' || (in >> extra) || w < 16 || h < 16 || w > 8192 || h > 8192)
+      throw UsageError("--size: expected WxH between 16x16 and 8192x8192, got '" + *size + "'");
+    o.width = w, o.height = h;
+  }
+  o.from = args.number("--from");
+  o.to = args.number("--to");
+  if (o.from && o.to && *o.to < *o.from) throw UsageError("--to must not be before --from");
+  o.video = args.get("--video");
+  o.camera = args.get("--camera").value_or(o.camera);
+  return o;
+}
+
+std::vector<double> frame_times(const RenderOptions& options, double t_begin, double t_end) {
+  const double t0 = std::max(t_begin, options.from.value_or(t_begin));
+  const double t1 = std::min(t_end, options.to.value_or(t_end));
+  std::vector<double> times;
+  if (t1 < t0) return times;
+  const long count = static_cast<long>(std::floor((t1 - t0) * options.fps + 1e-9)) + 1;
+  for (long k = 0; k < count; ++k) times.push_back(t0 + k / options.fps);
+  return times;
+}
+
+std::vector<std::string> mesh_directories(const Scene& scene) {
+  std::vector<std::string> dirs;
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(scene.source, ec)) {
+    const std::filesystem::path here = std::filesystem::path(scene.source).parent_path();
+    dirs.push_back(here.empty() ? "." : here.string());
+    dirs.push_back((here / ".." / "meshes").string());
+  }
+  dirs.push_back(render::builtin_mesh_directory());
+  return dirs;
+}
+
+render::Camera choose_camera(const RenderOptions& options, const Scene& scene, const Trajectory& trajectory,
+                             const render::SceneView& view, float aspect) {
+  // Everything the mechanism sweeps through, from about 200 samples.
+  Eigen::AlignedBox3f bounds;
+  std::vector<double> q;
+  std::vector<Pose> poses;
+  const std::size_t stride = std::max<std::size_t>(1, trajectory.samples.size() / 200);
+  for (std::size_t k = 0; k < trajectory.samples.size(); k += stride) {
+    trajectory.coordinates_at(trajectory.samples[k].t, q);
+    body_poses(scene.model, q.data(), poses);
+    bounds.extend(view.bounds(poses));
+  }
+  trajectory.coordinates_at(trajectory.t_end(), q);
+  body_poses(scene.model, q.data(), poses);
+  bounds.extend(view.bounds(poses));
+
+  if (const auto preset = render::camera_preset(options.camera, bounds, aspect)) return *preset;
+  std::istringstream in(options.camera);
+  render::Camera c;
+  char comma1 = 0, comma2 = 0;
+  if (!(in >> c.azimuth_deg >> comma1 >> c.elevation_deg >> comma2 >> c.distance) || comma1 != ',' || comma2 != ',' ||
+      !(c.distance > 0)) {
+    std::string names;
+    for (const auto& n : render::camera_preset_names()) names += (names.empty() ? "" : ", ") + n;
+    throw UsageError("--camera: expected a preset (" + names + ") or AZ,EL,DIST, got '" + options.camera + "'");
+  }
+  c.target = bounds.center();
+  return c;
+}
+
+}  // namespace unfurl::app

@@ -1,0 +1,40 @@
+// What `unfurl render` (and the GUI's export) needs besides the scene: the
+// frame size and rate, the time span, the camera, the video file.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "camera.hpp"
+#include "cli.hpp"
+#include "scene.hpp"
+#include "scene_view.hpp"
+#include "trajectory.hpp"
+
+namespace unfurl::app {
+
+struct RenderOptions {
+  double fps = 30;
+  int width = 1280, height = 720;
+  std::optional<double> from, to;
+  std::optional<std::string> video;
+  std::string camera = "iso";  // a preset or "AZ,EL,DIST"
+};
+
+// From --fps, --size, --from, --to, --video, --camera; throws UsageError.
+RenderOptions parse_render_options(const Args& args);
+
+// t = T0 + k / fps for k = 0, 1, ... up to T1, within [t_begin, t_end].
+std::vector<double> frame_times(const RenderOptions& options, double t_begin, double t_end);
+
+// Where the scene's meshes are looked up: beside the scene file, in
+// ../meshes from it, then the built-in assets/meshes.
+std::vector<std::string> mesh_directories(const Scene& scene);
+
+// The camera the options ask for, fitted to everything the run sweeps
+// through.
+render::Camera choose_camera(const RenderOptions& options, const Scene& scene, const Trajectory& trajectory,
+                             const render::SceneView& view, float aspect);
+
+}  // namespace unfurl::app

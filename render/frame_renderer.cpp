@@ -1,0 +1,50 @@
+#include "frame_renderer.hpp"
+
+#include <cstdio>
+
+namespace unfurl::render {
+
+FrameRenderer::FrameRenderer(const Scene& scene, int width, int height, std::vector<std::string> mesh_directories)
+    : scene_name_(scene.name),
+      meshes_(std::move(mesh_directories)),
+      framebuffer_(width, height),
+      view_(std::make_unique<SceneView>(scene, meshes_)),
+      imgui_(std::max(14.0f, height / 40.0f)) {}
+
+void draw_overlay(ImDrawList* draw, const std::string& scene_name, double t) {
+  char time[64];
+  std::snprintf(time, sizeof time, "t = %.3f s", t);
+  const float font = ImGui::GetFontSize();
+  const ImVec2 at(0.8f * font, 0.6f * font);
+  const ImVec2 name_size = ImGui::CalcTextSize(scene_name.c_str()), time_size = ImGui::CalcTextSize(time);
+  const float w = std::max(name_size.x, time_size.x);
+  draw->AddRectFilled(ImVec2(at.x - 0.4f * font, at.y - 0.3f * font),
+                      ImVec2(at.x + w + 0.4f * font, at.y + 2.5f * font), IM_COL32(0, 0, 0, 110), 0.3f * font);
+  draw->AddText(at, IM_COL32(255, 255, 255, 255), scene_name.c_str());
+  draw->AddText(ImVec2(at.x, at.y + 1.2f * font), IM_COL32(210, 220, 255, 255), time);
+}
+
+void FrameRenderer::frame(const std::vector<Pose>& poses, double t, const Camera& camera, Image& out) {
+  framebuffer_.bind();
+  view_->draw(poses, camera, width(), height());
+  imgui_.begin_frame(width(), height());
+  draw_overlay(imgui_.draw_list(), scene_name_, t);
+  imgui_.end_frame();
+  framebuffer_.resolve();
+  framebuffer_.read(out);
+}
+
+PlotFrame FrameRenderer::plot(const PlotSpec& spec, Image& out) {
+  framebuffer_.bind();
+  glClearColor(1, 1, 1, 1);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  imgui_.begin_frame(width(), height());
+  const PlotFrame frame = draw_plot(imgui_.draw_list(), ImVec2(0, 0),
+                                    ImVec2(static_cast<float>(width()), static_cast<float>(height())), spec, true);
+  imgui_.end_frame();
+  framebuffer_.resolve();
+  framebuffer_.read(out);
+  return frame;
+}
+
+}  // namespace unfurl::render

@@ -1,0 +1,43 @@
+// Pictures of a scene: 3D frames with the overlay (scene name, time) and
+// plots, drawn into an offscreen framebuffer and read back. One per GL
+// context; the context must be current.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "camera.hpp"
+#include "framebuffer.hpp"
+#include "imgui_layer.hpp"
+#include "mesh_library.hpp"
+#include "plot.hpp"
+#include "scene_view.hpp"
+
+namespace unfurl::render {
+
+class FrameRenderer {
+ public:
+  // Throws std::runtime_error when a mesh is missing or GL fails.
+  FrameRenderer(const Scene& scene, int width, int height, std::vector<std::string> mesh_directories);
+
+  const SceneView& view() const { return *view_; }
+  int width() const { return framebuffer_.width(); }
+  int height() const { return framebuffer_.height(); }
+
+  // The scene at these poses, labelled with the scene name and time.
+  void frame(const std::vector<Pose>& poses, double t, const Camera& camera, Image& out);
+  // A plot filling the whole picture, on white; returns where its axes are.
+  PlotFrame plot(const PlotSpec& spec, Image& out);
+
+ private:
+  std::string scene_name_;
+  MeshLibrary meshes_;
+  Framebuffer framebuffer_;
+  std::unique_ptr<SceneView> view_;
+  ImGuiLayer imgui_;
+};
+
+// Writes the scene name and time in the top-left corner.
+void draw_overlay(ImDrawList* draw, const std::string& scene_name, double t);
+
+}  // namespace unfurl::render

@@ -1,0 +1,199 @@
+#include "plot.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace unfurl::render {
+
+namespace {
+
+struct Theme {
+  ImU32 background, frame, grid, text, muted, event;
+};
+
+Theme theme(bool light) {
+  if (light)
+    return {IM_COL32(255, 255, 255, 255), IM_COL32(40, 40, 40, 255), IM_COL32(225, 225, 228, 255),
+            IM_COL32(20, 20, 20, 255),    IM_COL32(90, 90, 90, 255), IM_COL32(200, 60, 60, 200)};
+  return {IM_COL32(28, 30, 36, 255),    IM_COL32(170, 170, 175, 255), IM_COL32(55, 58, 66, 255),
+          IM_COL32(230, 230, 230, 255), IM_COL32(160, 160, 165, 255), IM_COL32(240, 110, 110, 200)};
+}
+
+std::string tick_label(double v, bool log_axis) {
+  char buf[32];
+  if (log_axis)
+    std::snprintf(buf, sizeof buf, "1e%d", static_cast<int>(std::lround(v)));
+  else if (v == 0 || (std::abs(v) >= 1e-3 && std::abs(v) < 1e5))
+    std::snprintf(buf, sizeof buf, "%g", std::abs(v) < 1e-12 ? 0.0 : v);
+  else
+    std::snprintf(buf, sizeof buf, "%.0e", v);
+  return buf;
+}
+
+double transform_y(double y, bool log_y) {
+  return log_y ? std::log10(std::max(y, std::numeric_limits<double>::min())) : y;
+}
+
+void dashed_line(ImDrawList* draw, ImVec2 a, ImVec2 b, ImU32 color, float thickness, float dash) {
+  const float dx = b.x - a.x, dy = b.y - a.y, length = std::sqrt(dx * dx + dy * dy);
+  for (float s = 0; s < length; s += 2 * dash) {
+    const float e = std::min(s + dash, length);
+    draw->AddLine(ImVec2(a.x + dx * s / length, a.y + dy * s / length),
+                  ImVec2(a.x + dx * e / length, a.y + dy * e / length), color, thickness);
+  }
+}
+
+}  // namespace
+
+ImU32 palette(int i) {
+  static const ImU32 colors[] = {IM_COL32(31, 119, 180, 255),  IM_COL32(255, 127, 14, 255),
+                                 IM_COL32(44, 160, 44, 255),   IM_COL32(214, 39, 40, 255),
+                                 IM_COL32(148, 103, 189, 255), IM_COL32(140, 86, 75, 255),
+                                 IM_COL32(227, 119, 194, 255), IM_COL32(127, 127, 127, 255),
+                                 IM_COL32(188, 189, 34, 255),  IM_COL32(23, 190, 207, 255),
+                                 IM_COL32(0, 0, 128, 255),     IM_COL32(128, 128, 0, 255)};
+  return colors[i % 12];
+}
+
+std::vector<double> nice_ticks(double lo, double hi, int target_count) {
+  std::vector<double> ticks;
+  if (!(hi > lo)) return {lo};
+  const double raw = (hi - lo) / std::max(1, target_count);
+  const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
+  double step = magnitude;
+  for (double m : {1.0, 2.0, 5.0, 10.0})
+    if (m * magnitude >= raw) {
+      step = m * magnitude;
+      break;
+    }
+  for (double t = std::ceil(lo / step - 1e-9) * step; t <= hi + 1e-9 * step; t += step) ticks.push_back(t);
+  return ticks;
+}
+
+std::vector<double> decade_ticks(double lo_exp, double hi_exp) {
+  std::vector<double> ticks;
+  const int first = static_cast<int>(std::ceil(lo_exp - 1e-9)), last = static_cast<int>(std::floor(hi_exp + 1e-9));
+  const int stride = std::max(1, (last - first) / 8 + 1);
+  for (int e = first; e <= last; e += stride) ticks.push_back(e);
+  return ticks;
+}
+
+ImVec2 PlotFrame::to_screen(double x, double y) const {
+  const double ty = log_y ? std::log10(std::max(y, std::numeric_limits<double>::min())) : y;
+  const double fx = (x - x_min) / (x_max - x_min), fy = (ty - y_min) / (y_max - y_min);
+  return ImVec2(plot_min.x + static_cast<float>(fx) * (plot_max.x - plot_min.x),
+                plot_max.y - static_cast<float>(fy) * (plot_max.y - plot_min.y));
+}
+
+double PlotFrame::x_at(float screen_x) const {
+  return x_min + (screen_x - plot_min.x) / (plot_max.x - plot_min.x) * (x_max - x_min);
+}
+
+PlotFrame draw_plot(ImDrawList* draw, ImVec2 origin, ImVec2 size, const PlotSpec& spec, bool light) {
+  const Theme th = theme(light);
+  const float font = ImGui::GetFontSize();
+  PlotFrame f;
+  f.log_y = spec.log_y;
+  f.plot_min = ImVec2(origin.x + 5.0f * font, origin.y + 2.2f * font);
+  f.plot_max = ImVec2(origin.x + size.x - 1.2f * font, origin.y + size.y - 3.0f * font);
+  draw->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y), th.background);
+
+  // Data ranges.
+  double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
+  for (const Series& s : spec.series)
+    for (std::size_t k = 0; k < s.x.size(); ++k) {
+      const double y = transform_y(s.y[k], spec.log_y);
+      if (!std::isfinite(y) || (spec.log_y && s.y[k] <= 0)) continue;
+      x0 = std::min(x0, s.x[k]), x1 = std::max(x1, s.x[k]);
+      y0 = std::min(y0, y), y1 = std::max(y1, y);
+    }
+  if (!std::isfinite(x0)) x0 = 0, x1 = 1, y0 = 0, y1 = 1;
+  if (x1 <= x0) x1 = x0 + 1;
+  if (spec.log_y) {
+    y0 = std::floor(y0), y1 = std::ceil(y1);
+    if (y1 <= y0) y1 = y0 + 1;
+  } else {
+    const double pad = y1 > y0 ? 0.05 * (y1 - y0) : std::max(1.0, std::abs(y0)) * 0.1;
+    y0 -= pad, y1 += pad;
+  }
+  f.x_min = x0, f.x_max = x1, f.y_min = y0, f.y_max = y1;
+
+  // Grid, ticks and labels.
+  const std::vector<double> xt = nice_ticks(x0, x1, 8);
+  const std::vector<double> yt = spec.log_y ? decade_ticks(y0, y1) : nice_ticks(y0, y1, 6);
+  for (double x : xt) {
+    const float sx = f.to_screen(x, spec.log_y ? 1 : y0).x;
+    draw->AddLine(ImVec2(sx, f.plot_min.y), ImVec2(sx, f.plot_max.y), th.grid);
+    const std::string label = tick_label(x, false);
+    const ImVec2 ts = ImGui::CalcTextSize(label.c_str());
+    draw->AddText(ImVec2(sx - ts.x / 2, f.plot_max.y + 0.3f * font), th.text, label.c_str());
+  }
+  for (double y : yt) {
+    const float sy = f.plot_max.y - static_cast<float>((y - y0) / (y1 - y0)) * (f.plot_max.y - f.plot_min.y);
+    draw->AddLine(ImVec2(f.plot_min.x, sy), ImVec2(f.plot_max.x, sy), th.grid);
+    const std::string label = tick_label(y, spec.log_y);
+    const ImVec2 ts = ImGui::CalcTextSize(label.c_str());
+    draw->AddText(ImVec2(f.plot_min.x - ts.x - 0.4f * font, sy - ts.y / 2), th.text, label.c_str());
+  }
+  draw->AddText(ImVec2(origin.x + 5.0f * font, origin.y + 0.4f * font), th.text, spec.title.c_str());
+  const ImVec2 xs = ImGui::CalcTextSize(spec.x_label.c_str());
+  draw->AddText(ImVec2((f.plot_min.x + f.plot_max.x - xs.x) / 2, f.plot_max.y + 1.6f * font), th.muted,
+                spec.x_label.c_str());
+  draw->AddText(ImVec2(origin.x + 0.3f * font, f.plot_min.y - 1.6f * font), th.muted, spec.y_label.c_str());
+
+  // Curves, clipped to the axes.
+  draw->PushClipRect(f.plot_min, f.plot_max, true);
+  for (const double e : spec.events) {
+    const float sx = f.to_screen(e, spec.log_y ? 1 : y0).x;
+    dashed_line(draw, ImVec2(sx, f.plot_min.y), ImVec2(sx, f.plot_max.y), th.event, 1.5f, 6);
+  }
+  std::vector<ImVec2> points;
+  for (int ghost = 1; ghost >= 0; --ghost)
+    for (const Series& s : spec.series) {
+      if (s.ghost != (ghost == 1)) continue;
+      points.clear();
+      for (std::size_t k = 0; k < s.x.size(); ++k)
+        if (std::isfinite(s.y[k]) && !(spec.log_y && s.y[k] <= 0)) points.push_back(f.to_screen(s.x[k], s.y[k]));
+      if (points.size() < 2) continue;
+      const ImU32 color = s.ghost ? (s.color & 0x00FFFFFF) | 0x60000000 : s.color;
+      draw->AddPolyline(points.data(), static_cast<int>(points.size()), color, ImDrawFlags_None, s.ghost ? 1.5f : 2.0f);
+    }
+  if (spec.cursor) {
+    const float sx = f.to_screen(*spec.cursor, spec.log_y ? 1 : y0).x;
+    draw->AddLine(ImVec2(sx, f.plot_min.y), ImVec2(sx, f.plot_max.y), th.text, 1.5f);
+  }
+  draw->PopClipRect();
+  draw->AddRect(f.plot_min, f.plot_max, th.frame);
+
+  // Legend, top right inside the axes.
+  float widest = 0;
+  int entries = 0;
+  for (const Series& s : spec.series)
+    if (!s.ghost) widest = std::max(widest, ImGui::CalcTextSize(s.label.c_str()).x), ++entries;
+  if (!spec.events.empty()) widest = std::max(widest, ImGui::CalcTextSize(spec.event_label.c_str()).x), ++entries;
+  if (entries > 0) {
+    const float line = 1.2f * font, swatch = 1.6f * font;
+    const ImVec2 box_max(f.plot_max.x - 0.5f * font, f.plot_min.y + 0.5f * font + entries * line + 0.5f * font);
+    const ImVec2 box_min(box_max.x - widest - swatch - 1.5f * font, f.plot_min.y + 0.5f * font);
+    draw->AddRectFilled(box_min, box_max, (th.background & 0x00FFFFFF) | 0xE0000000);
+    draw->AddRect(box_min, box_max, th.grid);
+    float y = box_min.y + 0.5f * font;
+    auto entry = [&](const std::string& label, ImU32 color, bool dashed) {
+      const ImVec2 a(box_min.x + 0.5f * font, y + line / 2), b(a.x + swatch, a.y);
+      if (dashed)
+        dashed_line(draw, a, b, color, 1.5f, 4);
+      else
+        draw->AddLine(a, b, color, 2.5f);
+      draw->AddText(ImVec2(b.x + 0.5f * font, y + (line - font) / 2), th.text, label.c_str());
+      y += line;
+    };
+    for (const Series& s : spec.series)
+      if (!s.ghost) entry(s.label, s.color, false);
+    if (!spec.events.empty()) entry(spec.event_label, th.event, true);
+  }
+  return f;
+}
+
+}  // namespace unfurl::render

@@ -1,0 +1,50 @@
+// Line plots drawn with an ImDrawList: axes with nice ticks (linear or
+// logarithmic), labels, a legend, vertical event markers and an optional
+// play-head. The same code draws the PNG plots and the GUI's plots.
+#pragma once
+
+#include <imgui.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace unfurl::render {
+
+struct Series {
+  std::string label;
+  std::vector<double> x, y;
+  ImU32 color = IM_COL32(255, 255, 255, 255);
+  bool ghost = false;  // a previous run, drawn faint and dashed, not in the legend
+};
+
+struct PlotSpec {
+  std::string title, x_label, y_label;
+  std::vector<Series> series;
+  bool log_y = false;
+  std::vector<double> events;    // x of vertical markers (latches)
+  std::string event_label = "latch";
+  std::optional<double> cursor;  // x of the play-head
+};
+
+// Where the data went on screen: for hit tests (hover values) and tests.
+struct PlotFrame {
+  ImVec2 plot_min, plot_max;  // the axes' box
+  double x_min = 0, x_max = 1, y_min = 0, y_max = 1;
+  bool log_y = false;
+  ImVec2 to_screen(double x, double y) const;
+  double x_at(float screen_x) const;
+};
+
+// Draws the plot in [origin, origin + size]; `light` picks dark text on a
+// light background (PNG) or light text on a dark one (GUI).
+PlotFrame draw_plot(ImDrawList* draw, ImVec2 origin, ImVec2 size, const PlotSpec& spec, bool light);
+
+// The i-th colour of a palette of distinguishable hues.
+ImU32 palette(int i);
+
+// Ticks from lo to hi at a 1-2-5 step (linear) or at decades (log).
+std::vector<double> nice_ticks(double lo, double hi, int target_count);
+std::vector<double> decade_ticks(double lo_exp, double hi_exp);
+
+}  // namespace unfurl::render

@@ -1,0 +1,178 @@
+#include "scene_view.hpp"
+
+#include <cmath>
+#include <set>
+
+namespace unfurl::render {
+
+namespace {
+
+const char* kVertex = R"(#version 330 core
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec3 normal;
+uniform mat4 model;
+uniform mat4 view_projection;
+uniform mat3 normal_matrix;
+out vec3 world_normal;
+out vec3 world_position;
+void main() {
+  vec4 p = model * vec4(position, 1.0);
+  world_position = p.xyz;
+  world_normal = normal_matrix * normal;
+  gl_Position = view_projection * p;
+}
+)";
+
+// A sun (directional, warm white) with a sky/ground ambient and a soft
+// specular highlight.
+const char* kFragment = R"(#version 330 core
+in vec3 world_normal;
+in vec3 world_position;
+uniform vec3 color;
+uniform vec3 sun_direction;
+uniform vec3 eye;
+out vec4 fragment;
+void main() {
+  vec3 n = normalize(world_normal);
+  vec3 v = normalize(eye - world_position);
+  if (dot(n, v) < 0.0) n = -n;
+  float sun = max(dot(n, sun_direction), 0.0);
+  vec3 h = normalize(sun_direction + v);
+  float specular = pow(max(dot(n, h), 0.0), 48.0) * step(0.0, dot(n, sun_direction));
+  vec3 ambient = mix(vec3(0.16, 0.15, 0.14), vec3(0.30, 0.33, 0.40), 0.5 + 0.5 * n.z);
+  vec3 lit = color * (ambient + 0.85 * sun * vec3(1.0, 0.97, 0.92)) + 0.35 * specular * vec3(1.0);
+  fragment = vec4(pow(lit, vec3(1.0 / 1.1)), 1.0);
+}
+)";
+
+const char* kBackgroundVertex = R"(#version 330 core
+out float height;
+void main() {
+  vec2 corners[3] = vec2[3](vec2(-1.0, -1.0), vec2(3.0, -1.0), vec2(-1.0, 3.0));
+  gl_Position = vec4(corners[gl_VertexID], 0.0, 1.0);
+  height = 0.5 * (corners[gl_VertexID].y + 1.0);
+}
+)";
+
+const char* kBackgroundFragment = R"(#version 330 core
+in float height;
+out vec4 fragment;
+void main() {
+  vec3 bottom = vec3(0.30, 0.34, 0.42);
+  vec3 top = vec3(0.02, 0.03, 0.08);
+  fragment = vec4(mix(bottom, top, smoothstep(0.0, 1.0, height)), 1.0);
+}
+)";
+
+constexpr float kPinRadius = 0.008f, kPinLength = 0.05f;
+
+Eigen::Affine3f pose_transform(const Pose& pose) {
+  Eigen::Affine3f T = Eigen::Affine3f::Identity();
+  T.linear() = pose.rotation.transpose().cast<float>();
+  T.translation() = pose.position.cast<float>();
+  return T;
+}
+
+Eigen::Affine3f visual_transform(const Visual& v) {
+  Eigen::Affine3f T = Eigen::Affine3f::Identity();
+  T.translate(v.offset.cast<float>());
+  if (v.rotation_deg != 0)
+    T.rotate(Eigen::AngleAxisf(static_cast<float>(v.rotation_deg * M_PI / 180), v.rotation_axis.cast<float>()));
+  T.scale(v.scale.cast<float>());
+  return T;
+}
+
+}  // namespace
+
+SceneView::SceneView(const Scene& scene, MeshLibrary& meshes)
+    : shader_(std::make_unique<Shader>(kVertex, kFragment)),
+      background_(std::make_unique<Shader>(kBackgroundVertex, kBackgroundFragment)) {
+  glGenVertexArrays(1, &background_vao_);
+  std::set<int> images;
+  for (const Loop& loop : scene.loops) images.insert(loop.image);
+  if (!scene.base_visual.mesh.empty())
+    items_.push_back({kBase, &meshes.get(scene.base_visual.mesh), visual_transform(scene.base_visual)});
+  for (int i = 0; i < scene.model.size(); ++i) {
+    const Visual& v = scene.visuals[i];
+    if (v.mesh.empty() || images.count(i)) continue;
+    items_.push_back({i, &meshes.get(v.mesh), visual_transform(v)});
+  }
+  add_pins(scene, meshes);
+}
+
+void SceneView::add_pins(const Scene& scene, MeshLibrary& meshes) {
+  // Two short pins near the ends of a hinge line as wide as the child's
+  // mesh; one pin where the child is not drawn (a cross pivot to an image).
+  const MeshModel& pin = meshes.get("pin");
+  std::set<int> images;
+  for (const Loop& loop : scene.loops) images.insert(loop.image);
+  for (int i = 0; i < scene.model.size(); ++i) {
+    const Joint& joint = scene.model.joints[i];
+    if (joint.type != JointType::revolute) continue;
+    const Eigen::Vector3f axis = joint.axis.cast<float>();
+    const Eigen::Quaternionf turn = Eigen::Quaternionf::FromTwoVectors(Eigen::Vector3f::UnitZ(), axis);
+    std::vector<float> stations{0.0f};
+    const Visual& v = scene.visuals[i];
+    if (!v.mesh.empty() && !images.count(i)) {
+      const Eigen::Vector3f size = meshes.get(v.mesh).bounds.sizes().cwiseProduct(v.scale.cast<float>());
+      const float width = size.dot(axis.cwiseAbs());
+      if (width > 8 * kPinLength) stations = {-0.4f * width, 0.4f * width};
+    }
+    for (float s : stations) {
+      Eigen::Affine3f T = Eigen::Affine3f::Identity();
+      T.translate(joint.parent_point.cast<float>() + s * axis);
+      T.rotate(turn);
+      T.scale(Eigen::Vector3f(2 * kPinRadius, 2 * kPinRadius, kPinLength));
+      items_.push_back({scene.model.parent[i], &pin, T});
+    }
+  }
+}
+
+Eigen::Affine3f SceneView::placement(const Item& item, const std::vector<Pose>& poses) const {
+  return (item.body == kBase ? Eigen::Affine3f::Identity() : pose_transform(poses[item.body])) * item.local;
+}
+
+Eigen::AlignedBox3f SceneView::bounds(const std::vector<Pose>& poses) const {
+  Eigen::AlignedBox3f box;
+  for (const Item& item : items_) {
+    const Eigen::Affine3f T = placement(item, poses);
+    for (int corner = 0; corner < 8; ++corner)
+      box.extend(T * item.mesh->bounds.corner(static_cast<Eigen::AlignedBox3f::CornerType>(corner)));
+  }
+  return box;
+}
+
+void SceneView::draw(const std::vector<Pose>& poses, const Camera& camera, int width, int height) const {
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  background_->use();
+  glBindVertexArray(background_vao_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+
+  glClear(GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_BACK);
+  shader_->use();
+  const Eigen::Matrix4f view_projection = camera.projection(static_cast<float>(width) / height) * camera.view();
+  glUniformMatrix4fv(shader_->uniform("view_projection"), 1, GL_FALSE, view_projection.data());
+  const Eigen::Vector3f sun = Eigen::Vector3f(0.35f, -0.45f, 0.82f).normalized();
+  glUniform3fv(shader_->uniform("sun_direction"), 1, sun.data());
+  const Eigen::Vector3f eye = camera.eye();
+  glUniform3fv(shader_->uniform("eye"), 1, eye.data());
+  for (const Item& item : items_) {
+    const Eigen::Affine3f T = placement(item, poses);
+    const Eigen::Matrix4f model = T.matrix();
+    const Eigen::Matrix3f normal = T.linear().inverse().transpose();
+    glUniformMatrix4fv(shader_->uniform("model"), 1, GL_FALSE, model.data());
+    glUniformMatrix3fv(shader_->uniform("normal_matrix"), 1, GL_FALSE, normal.data());
+    for (const MeshPart& part : item.mesh->parts) {
+      glUniform3fv(shader_->uniform("color"), 1, part.color.data());
+      glBindVertexArray(part.vao);
+      glDrawElements(GL_TRIANGLES, part.index_count, GL_UNSIGNED_INT, nullptr);
+    }
+  }
+  glBindVertexArray(0);
+}
+
+}  // namespace unfurl::render

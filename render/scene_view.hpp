@@ -1,0 +1,46 @@
+// Draws a scene's bodies at given poses: each body's mesh (scaled, offset,
+// turned as the scene says) placed by its pose, hinge pins at the joints, a
+// sun-like light with ambient fill, over a gradient background. Images of
+// split bodies are not drawn (they coincide with their originals).
+#pragma once
+
+#include <Eigen/Geometry>
+#include <memory>
+#include <vector>
+
+#include "camera.hpp"
+#include "kinematics.hpp"
+#include "mesh_library.hpp"
+#include "scene.hpp"
+#include "shader.hpp"
+
+namespace unfurl::render {
+
+class SceneView {
+ public:
+  // Loads the meshes the scene names (throws std::runtime_error when one is
+  // missing). Needs a current GL context.
+  SceneView(const Scene& scene, MeshLibrary& meshes);
+
+  // Draws into the bound framebuffer of size width x height.
+  void draw(const std::vector<Pose>& poses, const Camera& camera, int width, int height) const;
+
+  // The base-frame bounds of everything drawn at these poses.
+  Eigen::AlignedBox3f bounds(const std::vector<Pose>& poses) const;
+
+ private:
+  struct Item {
+    int body = kBase;           // whose pose places it (kBase: body 0)
+    const MeshModel* mesh = nullptr;
+    Eigen::Affine3f local;      // mesh units -> body frame
+  };
+
+  Eigen::Affine3f placement(const Item& item, const std::vector<Pose>& poses) const;
+  void add_pins(const Scene& scene, MeshLibrary& meshes);
+
+  std::vector<Item> items_;
+  std::unique_ptr<Shader> shader_, background_;
+  GLuint background_vao_ = 0;
+};
+
+}  // namespace unfurl::render

@@ -1,0 +1,185 @@
+// Headless rendering: pixels of an offscreen frame, frame times, repeatable
+// pictures, plots inside their axes, and the video's frame count.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "frame_renderer.hpp"
+#include "gl_context.hpp"
+#include "mesh_generator.hpp"
+#include "render_options.hpp"
+#include "support.hpp"
+#include "video_pipe.hpp"
+
+namespace unfurl {
+namespace {
+
+using render::Image;
+
+// One GL context for the whole test program.
+class Render : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() { context_ = render::make_offscreen_context().release(); }
+  static void TearDownTestSuite() { delete context_; }
+  static render::GlContext* context_;
+};
+render::GlContext* Render::context_ = nullptr;
+
+// The pixel where a base-frame point projects.
+std::pair<int, int> project(const render::Camera& camera, const Eigen::Vector3f& p, int w, int h) {
+  const Eigen::Vector4f c = camera.projection(static_cast<float>(w) / h) * camera.view() * p.homogeneous();
+  const float x = c.x() / c.w(), y = c.y() / c.w();
+  return {static_cast<int>((x + 1) / 2 * w), static_cast<int>((1 - y) / 2 * h)};
+}
+
+std::vector<Pose> deployed_poses(const Scene& scene) {
+  std::vector<double> q(scene.model.nq, 0.0);
+  std::vector<Pose> poses;
+  body_poses(scene.model, q.data(), poses);
+  return poses;
+}
+
+TEST_F(Render, DeployedPantographFromAbove) {
+  const Scene scene = test::scene_file("pantograph");
+  const int w = 320, h = 180;
+  render::FrameRenderer renderer(scene, w, h, {render::builtin_mesh_directory()});
+  const std::vector<Pose> poses = deployed_poses(scene);
+  const render::Camera camera = *render::camera_preset("top", renderer.view().bounds(poses), float(w) / h);
+  Image image;
+  renderer.frame(poses, 0, camera, image);
+  ASSERT_EQ(image.width, w);
+  ASSERT_EQ(image.height, h);
+
+  // Not blank: many distinct colours.
+  std::set<int> colours;
+  for (std::size_t k = 0; k < image.rgb.size(); k += 3)
+    colours.insert(image.rgb[k] << 16 | image.rgb[k + 1] << 8 | image.rgb[k + 2]);
+  EXPECT_GT(colours.size(), 100u);
+
+  // The panel colour (the blue cells) at panel B2's centre, on its front
+  // face (+z, towards the camera).
+  const int b2 = scene.model.find_body("panel_B2");
+  const Eigen::Vector3f centre = poses[b2].to_base(Vec3(0.1, 0.1, 0.0125)).cast<float>();
+  const auto [px, py] = project(camera, centre, w, h);
+  const std::uint8_t* c = image.pixel(px, py);
+  EXPECT_GT(c[2], c[0] + 40) << "at " << px << "," << py << ": " << int(c[0]) << " " << int(c[1]) << " " << int(c[2]);
+  EXPECT_GT(c[2], c[1] + 20);
+
+  // The background where nothing is: the bottom-left corner is the
+  // gradient's grey-blue.
+  const std::uint8_t* bg = image.pixel(w - 3, h - 3);
+  EXPECT_NEAR(bg[0], 77, 12);
+  EXPECT_NEAR(bg[1], 87, 12);
+  EXPECT_NEAR(bg[2], 107, 12);
+}
+
+TEST_F(Render, SameFrameTwiceGivesIdenticalPixels) {
+  const Scene scene = test::scene_file("zfold");
+  render::FrameRenderer renderer(scene, 200, 120, {render::builtin_mesh_directory()});
+  std::vector<double> q = scene.q0;
+  std::vector<Pose> poses;
+  body_poses(scene.model, q.data(), poses);
+  const render::Camera camera = *render::camera_preset("iso", renderer.view().bounds(poses), 200.0f / 120);
+  Image a, b;
+  renderer.frame(poses, 1.5, camera, a);
+  renderer.frame(poses, 1.5, camera, b);
+  EXPECT_EQ(a.rgb, b.rgb);
+}
+
+TEST_F(Render, PlotCurvesStayInsideTheAxes) {
+  const Scene scene = test::scene_file("zfold");
+  render::FrameRenderer renderer(scene, 640, 360, {render::builtin_mesh_directory()});
+  render::PlotSpec spec;
+  spec.title = "test";
+  render::Series s;
+  s.label = "sine";
+  s.color = IM_COL32(255, 0, 0, 255);
+  for (int k = 0; k <= 200; ++k) {
+    s.x.push_back(k * 0.05);
+    s.y.push_back(3 * std::sin(k * 0.05));
+  }
+  spec.series.push_back(s);
+  Image image;
+  const render::PlotFrame frame = renderer.plot(spec, image);
+  int inside = 0, outside = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const std::uint8_t* p = image.pixel(x, y);
+      if (!(p[0] > 200 && p[1] < 80 && p[2] < 80)) continue;  // the curve's red
+      const bool in = x >= frame.plot_min.x - 1 && x <= frame.plot_max.x + 1 && y >= frame.plot_min.y - 1 &&
+                      y <= frame.plot_max.y + 1;
+      (in ? inside : outside)++;
+    }
+  // The legend's swatch is the only red outside the data, and it is inside
+  // the axes box too.
+  EXPECT_GT(inside, 300);
+  EXPECT_EQ(outside, 0);
+  // The curve spans the box: its extremes touch the padded range.
+  EXPECT_NEAR(frame.y_max, 3 + 0.3, 0.05);
+}
+
+TEST(FrameTimes, RangeAndRate) {
+  app::RenderOptions o;
+  o.fps = 10;
+  o.from = 1.0;
+  o.to = 2.0;
+  const auto t = app::frame_times(o, 0, 20);
+  ASSERT_EQ(t.size(), 11u);
+  EXPECT_DOUBLE_EQ(t.front(), 1.0);
+  EXPECT_NEAR(t.back(), 2.0, 1e-12);
+  EXPECT_NEAR(t[3], 1.3, 1e-12);
+  o.from.reset();
+  o.to.reset();
+  o.fps = 30;
+  EXPECT_EQ(app::frame_times(o, 0, 20).size(), 601u);  // both ends included
+  o.to = 100;                                            // clamped to the run
+  EXPECT_EQ(app::frame_times(o, 0, 20).size(), 601u);
+}
+
+TEST(Meshes, AssetsAreTheGeneratorsOutput) {
+  for (const auto& [name, text] : render::builtin_mesh_files()) {
+    std::ifstream in(test::asset("meshes/" + name));
+    std::stringstream file;
+    file << in.rdbuf();
+    EXPECT_EQ(file.str(), text) << name << " differs from the generator: run build/render/unfurl_meshes assets/meshes";
+  }
+}
+
+int run_command(const std::string& command) {
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+TEST(RenderCommand, WritesFramesPlotsAndAVideoWithTheExpectedFrameCount) {
+  if (!app::on_path("ffmpeg") || !app::on_path("ffprobe")) GTEST_SKIP() << "ffmpeg is not installed";
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("unfurl_render_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  const std::string video = (dir / "zfold.mp4").string();
+  ASSERT_EQ(run_command(std::string(UNFURL_BINARY) + " render zfold --t-end 1 --fps 10 --size 320x180 --plots --quiet" +
+                        " --video " + video + " --out " + dir.string()),
+            0);
+  for (int k = 0; k <= 10; ++k) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%05d.png", k);
+    EXPECT_TRUE(fs::exists(dir / name)) << name;
+  }
+  EXPECT_FALSE(fs::exists(dir / "frame_00011.png"));
+  for (const char* plot : {"angles.png", "rates.png", "energy.png"}) EXPECT_TRUE(fs::exists(dir / plot)) << plot;
+  EXPECT_FALSE(fs::exists(dir / "residuals.png"));  // a tree has no loop residuals
+  const std::string probe = "ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames "
+                            "-of csv=p=0 " + video;
+  FILE* pipe = popen(probe.c_str(), "r");
+  char buf[64] = {0};
+  ASSERT_NE(std::fgets(buf, sizeof buf, pipe), nullptr);
+  pclose(pipe);
+  EXPECT_EQ(std::atoi(buf), 11);
+}
+
+}  // namespace
+}  // namespace unfurl
