@@ -86,7 +86,7 @@ int command_render(const std::vector<std::string>& argv) {
   } else {
     Progress progress("simulating " + scene.name, scene.run.t_end);
     RunObserver observer;
-    if (!quiet) observer.on_progress = [&](double t) { progress.update(t); };
+    if (!quiet) observer.on_progress = [&](const StepProgress& p) { progress.update(p.t); };
     RunResult run = simulate(scene, scene.run, observer);
     progress.finish();
     if (run.status == RunStatus::failed) {

@@ -77,7 +77,7 @@ int command_simulate(const std::vector<std::string>& argv) {
 
   Progress progress("simulating " + scene.name, scene.run.t_end);
   RunObserver observer;
-  if (!args.has("--quiet")) observer.on_progress = [&](double t) { progress.update(t); };
+  if (!args.has("--quiet")) observer.on_progress = [&](const StepProgress& p) { progress.update(p.t); };
   const RunResult result = simulate(scene, scene.run, observer);
   progress.finish();
   const RunSummary summary = summarize(scene, result);

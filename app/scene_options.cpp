@@ -27,6 +27,10 @@ const char* scene_flags_help() {
 }
 
 Scene load_scene(const std::optional<std::string>& argument, const Args& args) {
+  return load_scene_named(argument.value_or("pantograph"), overrides_from(args));
+}
+
+std::vector<Override> overrides_from(const Args& args) {
   std::vector<Override> overrides;
   for (const std::string& s : args.all("--set")) overrides.push_back(parse_override(s));
   // The run flags are overrides of the run section, validated like the file.
@@ -35,8 +39,10 @@ Scene load_scene(const std::optional<std::string>& argument, const Args& args) {
       {"--atol", "atol"},   {"--dt", "dt"},                 {"--sample", "sample"}};
   for (const auto& [flag, key] : run_flags)
     if (const auto value = args.get(flag)) overrides.push_back({std::string("run.") + key, *value});
+  return overrides;
+}
 
-  const std::string name = argument.value_or("pantograph");
+Scene load_scene_named(const std::string& name, const std::vector<Override>& overrides) {
   std::error_code ec;
   if (std::filesystem::is_regular_file(name, ec)) return load_scene_file(name, overrides);
   const auto builtins = builtin_scene_names();

@@ -9,6 +9,7 @@
 
 #include "cli.hpp"
 #include "scene.hpp"
+#include "scene_yaml.hpp"
 
 namespace unfurl::app {
 
@@ -17,9 +18,15 @@ const std::set<std::string>& scene_flags();
 // The help text of those flags.
 const char* scene_flags_help();
 
+// The overrides the flags ask for: every --set, then the run flags.
+std::vector<Override> overrides_from(const Args& args);
+
 // Loads the scene named by `argument` (a path, or a built-in scene name) with
 // the --set overrides of `args`, then applies the run flags. Throws
 // SceneError (exit 2) or UsageError.
 Scene load_scene(const std::optional<std::string>& argument, const Args& args);
+
+// The scene named `name` (a path, or a built-in scene) with overrides.
+Scene load_scene_named(const std::string& name, const std::vector<Override>& overrides);
 
 }  // namespace unfurl::app

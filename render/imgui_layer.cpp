@@ -21,21 +21,28 @@ ImFont* load_font(float pixels) {
   return io.Fonts->AddFontDefault(&config);
 }
 
-ImGuiLayer::ImGuiLayer(float font_pixels) : context_(ImGui::CreateContext()) {
+ImGuiLayer::ImGuiLayer(float font_pixels) {
+  ImGuiContext* callers = ImGui::GetCurrentContext();
+  context_ = ImGui::CreateContext();
   ImGui::SetCurrentContext(context_);
   ImGuiIO& io = ImGui::GetIO();
   io.IniFilename = nullptr;
   load_font(font_pixels);
-  if (!ImGui_ImplOpenGL3_Init("#version 330")) throw std::runtime_error("cannot set up Dear ImGui's OpenGL backend");
+  const bool ok = ImGui_ImplOpenGL3_Init("#version 330");
+  ImGui::SetCurrentContext(callers);
+  if (!ok) throw std::runtime_error("cannot set up Dear ImGui's OpenGL backend");
 }
 
 ImGuiLayer::~ImGuiLayer() {
+  ImGuiContext* callers = ImGui::GetCurrentContext();
   ImGui::SetCurrentContext(context_);
   ImGui_ImplOpenGL3_Shutdown();
   ImGui::DestroyContext(context_);
+  ImGui::SetCurrentContext(callers == context_ ? nullptr : callers);
 }
 
 void ImGuiLayer::begin_frame(int width, int height) {
+  callers_ = ImGui::GetCurrentContext();
   ImGui::SetCurrentContext(context_);
   ImGuiIO& io = ImGui::GetIO();
   io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
@@ -47,6 +54,7 @@ void ImGuiLayer::begin_frame(int width, int height) {
 void ImGuiLayer::end_frame() {
   ImGui::Render();
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  ImGui::SetCurrentContext(callers_);
 }
 
 }  // namespace unfurl::render

@@ -19,7 +19,8 @@ class ImGuiLayer {
   ImGuiLayer(const ImGuiLayer&) = delete;
   ImGuiLayer& operator=(const ImGuiLayer&) = delete;
 
-  // Starts a frame of width x height; draw through draw_list().
+  // Starts a frame of width x height; draw through draw_list(). The
+  // caller's own ImGui context (a GUI's) is set aside until end_frame().
   void begin_frame(int width, int height);
   // Renders what was drawn into the bound framebuffer.
   void end_frame();
@@ -27,6 +28,7 @@ class ImGuiLayer {
 
  private:
   ImGuiContext* context_ = nullptr;
+  ImGuiContext* callers_ = nullptr;
 };
 
 }  // namespace unfurl::render

@@ -45,6 +45,48 @@ void dashed_line(ImDrawList* draw, ImVec2 a, ImVec2 b, ImU32 color, float thickn
   }
 }
 
+// The series on screen, at most a minimum and a maximum per pixel column:
+// long runs draw as fast as short ones and keep their peaks.
+void screen_points(const PlotFrame& f, const Series& s, bool log_y, std::vector<ImVec2>& out) {
+  out.clear();
+  int column = std::numeric_limits<int>::min();
+  ImVec2 first, last, top, bottom;  // of the samples in the current column
+  std::size_t top_at = 0, bottom_at = 0;
+  auto flush = [&] {
+    if (column == std::numeric_limits<int>::min()) return;
+    // Entry, extremes in time order, exit: the shape and the joins survive.
+    out.push_back(first);
+    if (top_at < bottom_at) {
+      out.push_back(top);
+      out.push_back(bottom);
+    } else {
+      out.push_back(bottom);
+      out.push_back(top);
+    }
+    out.push_back(last);
+  };
+  for (std::size_t k = 0; k < s.x.size(); ++k) {
+    if (!std::isfinite(s.y[k]) || (log_y && s.y[k] <= 0)) continue;
+    const ImVec2 p = f.to_screen(s.x[k], s.y[k]);
+    const int c = static_cast<int>(std::floor(p.x));
+    if (c != column) {
+      flush();
+      column = c;
+      first = last = top = bottom = p;
+      top_at = bottom_at = k;
+      continue;
+    }
+    last = p;
+    if (p.y < top.y) top = p, top_at = k;
+    if (p.y > bottom.y) bottom = p, bottom_at = k;
+  }
+  flush();
+  // Drop repeated points: they give the thick-line joins no direction.
+  out.erase(std::unique(out.begin(), out.end(),
+                        [](const ImVec2& a, const ImVec2& b) { return a.x == b.x && a.y == b.y; }),
+            out.end());
+}
+
 }  // namespace
 
 ImU32 palette(int i) {
@@ -72,10 +114,10 @@ std::vector<double> nice_ticks(double lo, double hi, int target_count) {
   return ticks;
 }
 
-std::vector<double> decade_ticks(double lo_exp, double hi_exp) {
+std::vector<double> decade_ticks(double lo_exp, double hi_exp, int target_count) {
   std::vector<double> ticks;
   const int first = static_cast<int>(std::ceil(lo_exp - 1e-9)), last = static_cast<int>(std::floor(hi_exp + 1e-9));
-  const int stride = std::max(1, (last - first) / 8 + 1);
+  const int stride = std::max(1, (last - first + target_count - 1) / std::max(1, target_count));
   for (int e = first; e <= last; e += stride) ticks.push_back(e);
   return ticks;
 }
@@ -121,8 +163,11 @@ PlotFrame draw_plot(ImDrawList* draw, ImVec2 origin, ImVec2 size, const PlotSpec
   f.x_min = x0, f.x_max = x1, f.y_min = y0, f.y_max = y1;
 
   // Grid, ticks and labels.
-  const std::vector<double> xt = nice_ticks(x0, x1, 8);
-  const std::vector<double> yt = spec.log_y ? decade_ticks(y0, y1) : nice_ticks(y0, y1, 6);
+  // As many ticks as the axes have room for.
+  const int x_room = std::max(2, static_cast<int>((f.plot_max.x - f.plot_min.x) / (6 * font)));
+  const int y_room = std::max(2, static_cast<int>((f.plot_max.y - f.plot_min.y) / (2.5f * font)));
+  const std::vector<double> xt = nice_ticks(x0, x1, std::min(8, x_room));
+  const std::vector<double> yt = spec.log_y ? decade_ticks(y0, y1, y_room) : nice_ticks(y0, y1, std::min(6, y_room));
   for (double x : xt) {
     const float sx = f.to_screen(x, spec.log_y ? 1 : y0).x;
     draw->AddLine(ImVec2(sx, f.plot_min.y), ImVec2(sx, f.plot_max.y), th.grid);
@@ -137,11 +182,13 @@ PlotFrame draw_plot(ImDrawList* draw, ImVec2 origin, ImVec2 size, const PlotSpec
     const ImVec2 ts = ImGui::CalcTextSize(label.c_str());
     draw->AddText(ImVec2(f.plot_min.x - ts.x - 0.4f * font, sy - ts.y / 2), th.text, label.c_str());
   }
-  draw->AddText(ImVec2(origin.x + 5.0f * font, origin.y + 0.4f * font), th.text, spec.title.c_str());
+  // The title with the quantity's unit, over the axes.
+  draw->AddText(ImVec2(f.plot_min.x, origin.y + 0.4f * font), th.text, spec.title.c_str());
+  const ImVec2 title_size = ImGui::CalcTextSize(spec.title.c_str());
+  draw->AddText(ImVec2(f.plot_min.x + title_size.x + font, origin.y + 0.4f * font), th.muted, spec.y_label.c_str());
   const ImVec2 xs = ImGui::CalcTextSize(spec.x_label.c_str());
   draw->AddText(ImVec2((f.plot_min.x + f.plot_max.x - xs.x) / 2, f.plot_max.y + 1.6f * font), th.muted,
                 spec.x_label.c_str());
-  draw->AddText(ImVec2(origin.x + 0.3f * font, f.plot_min.y - 1.6f * font), th.muted, spec.y_label.c_str());
 
   // Curves, clipped to the axes.
   draw->PushClipRect(f.plot_min, f.plot_max, true);
@@ -153,9 +200,7 @@ PlotFrame draw_plot(ImDrawList* draw, ImVec2 origin, ImVec2 size, const PlotSpec
   for (int ghost = 1; ghost >= 0; --ghost)
     for (const Series& s : spec.series) {
       if (s.ghost != (ghost == 1)) continue;
-      points.clear();
-      for (std::size_t k = 0; k < s.x.size(); ++k)
-        if (std::isfinite(s.y[k]) && !(spec.log_y && s.y[k] <= 0)) points.push_back(f.to_screen(s.x[k], s.y[k]));
+      screen_points(f, s, spec.log_y, points);
       if (points.size() < 2) continue;
       const ImU32 color = s.ghost ? (s.color & 0x00FFFFFF) | 0x60000000 : s.color;
       draw->AddPolyline(points.data(), static_cast<int>(points.size()), color, ImDrawFlags_None, s.ghost ? 1.5f : 2.0f);
@@ -167,31 +212,40 @@ PlotFrame draw_plot(ImDrawList* draw, ImVec2 origin, ImVec2 size, const PlotSpec
   draw->PopClipRect();
   draw->AddRect(f.plot_min, f.plot_max, th.frame);
 
-  // Legend, top right inside the axes.
-  float widest = 0;
-  int entries = 0;
+  // Legend, top right inside the axes, as many entries as fit.
+  std::vector<std::pair<std::string, ImU32>> entries;
   for (const Series& s : spec.series)
-    if (!s.ghost) widest = std::max(widest, ImGui::CalcTextSize(s.label.c_str()).x), ++entries;
-  if (!spec.events.empty()) widest = std::max(widest, ImGui::CalcTextSize(spec.event_label.c_str()).x), ++entries;
-  if (entries > 0) {
-    const float line = 1.2f * font, swatch = 1.6f * font;
-    const ImVec2 box_max(f.plot_max.x - 0.5f * font, f.plot_min.y + 0.5f * font + entries * line + 0.5f * font);
+    if (!s.ghost) entries.emplace_back(s.label, s.color);
+  const bool has_events = !spec.events.empty();
+  const float line = 1.2f * font, swatch = 1.6f * font;
+  const int room = std::max(1, static_cast<int>((f.plot_max.y - f.plot_min.y - 1.5f * font) / line));
+  const int total = static_cast<int>(entries.size()) + (has_events ? 1 : 0);
+  std::string more;
+  if (room < 4 && total > room) return f;  // too small for a useful legend
+  if (total > room) {
+    more = "+" + std::to_string(total - room + 1) + " more";
+    entries.resize(std::max(0, room - 1 - (has_events ? 1 : 0)));
+  }
+  if (has_events) entries.emplace_back(spec.event_label, th.event);
+  float widest = ImGui::CalcTextSize(more.c_str()).x;
+  for (const auto& e : entries) widest = std::max(widest, ImGui::CalcTextSize(e.first.c_str()).x);
+  const int rows = static_cast<int>(entries.size()) + (more.empty() ? 0 : 1);
+  if (rows > 0) {
+    const ImVec2 box_max(f.plot_max.x - 0.5f * font, f.plot_min.y + 0.5f * font + rows * line + 0.5f * font);
     const ImVec2 box_min(box_max.x - widest - swatch - 1.5f * font, f.plot_min.y + 0.5f * font);
     draw->AddRectFilled(box_min, box_max, (th.background & 0x00FFFFFF) | 0xE0000000);
     draw->AddRect(box_min, box_max, th.grid);
     float y = box_min.y + 0.5f * font;
-    auto entry = [&](const std::string& label, ImU32 color, bool dashed) {
+    for (const auto& [label, color] : entries) {
       const ImVec2 a(box_min.x + 0.5f * font, y + line / 2), b(a.x + swatch, a.y);
-      if (dashed)
+      if (has_events && label == spec.event_label && color == th.event)
         dashed_line(draw, a, b, color, 1.5f, 4);
       else
         draw->AddLine(a, b, color, 2.5f);
       draw->AddText(ImVec2(b.x + 0.5f * font, y + (line - font) / 2), th.text, label.c_str());
       y += line;
-    };
-    for (const Series& s : spec.series)
-      if (!s.ghost) entry(s.label, s.color, false);
-    if (!spec.events.empty()) entry(spec.event_label, th.event, true);
+    }
+    if (!more.empty()) draw->AddText(ImVec2(box_min.x + 0.5f * font, y + (line - font) / 2), th.muted, more.c_str());
   }
   return f;
 }

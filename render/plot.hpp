@@ -45,6 +45,6 @@ ImU32 palette(int i);
 
 // Ticks from lo to hi at a 1-2-5 step (linear) or at decades (log).
 std::vector<double> nice_ticks(double lo, double hi, int target_count);
-std::vector<double> decade_ticks(double lo_exp, double hi_exp);
+std::vector<double> decade_ticks(double lo_exp, double hi_exp, int target_count);
 
 }  // namespace unfurl::render

@@ -60,26 +60,26 @@ void add_curves(PlotSpec& spec, PlotKind kind, const Scene& scene, const Traject
 PlotSpec trajectory_plot(PlotKind kind, const Scene& scene, const Trajectory& trajectory, const Trajectory* ghost,
                          int max_joints) {
   PlotSpec spec;
-  spec.x_label = "time [s]";
+  spec.x_label = "time, s";
   const bool truncated = scene.model.nq > max_joints;
   const std::string which = truncated ? " (first " + std::to_string(max_joints) + " joints)" : "";
   switch (kind) {
     case PlotKind::angles:
       spec.title = scene.name + ": joint angles" + which;
-      spec.y_label = "q [rad]";
+      spec.y_label = "q, rad";
       break;
     case PlotKind::rates:
       spec.title = scene.name + ": joint rates" + which;
-      spec.y_label = "dq/dt [rad/s]";
+      spec.y_label = "dq/dt, rad/s";
       break;
     case PlotKind::residuals:
       spec.title = scene.name + ": loop residuals |eps pi|";
-      spec.y_label = "|eps pi|";
+      spec.y_label = "m and rad, log scale";
       spec.log_y = true;
       break;
     case PlotKind::energy:
       spec.title = scene.name + ": energy";
-      spec.y_label = "E [J]";
+      spec.y_label = "J";
       break;
   }
   if (ghost) add_curves(spec, kind, scene, *ghost, true, max_joints);

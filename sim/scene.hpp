@@ -49,7 +49,8 @@ struct Scene {
   std::string description;
   std::string source;  // the file it came from, or "built-in"
   Model model;
-  std::vector<JointSpring> springs;
+  std::vector<JointSpring> springs;  // the file's springs, then its dampers
+  std::size_t dampers_from = 0;      // springs[dampers_from..] came from `dampers:`
   std::vector<BodyLoad> loads;
   std::vector<Latch> latches;
   std::vector<Loop> loops;

@@ -551,6 +551,7 @@ Scene SceneReader::read(const std::string& text_in, const std::vector<Override>&
   scene.model.finalize();
 
   if (root["springs"]) read_springs(root["springs"], scene);
+  scene.dampers_from = scene.springs.size();
   if (root["dampers"]) read_dampers(root["dampers"], scene);
   if (root["loads"]) read_loads(root["loads"], scene);
   if (root["latches"]) read_latches(root["latches"], scene);

@@ -130,7 +130,8 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
       fail(t, integrator->current_step(), "steps", "more than " + std::to_string(settings.max_steps) + " steps");
       break;
     }
-    if (observer.on_progress) observer.on_progress(t);
+    if (observer.on_progress)
+      observer.on_progress({t, integrator->current_step(), integrator->stats().steps, dynamics.rhs_calls()});
   }
 
   if (integrator) result.stats = integrator->stats();

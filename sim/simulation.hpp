@@ -37,12 +37,20 @@ struct RunResult {
   Trajectory trajectory;
 };
 
+// Where a run is, after each step.
+struct StepProgress {
+  double t = 0;
+  double step = 0;
+  long steps = 0;
+  long rhs_calls = 0;
+};
+
 // Hooks for a caller that watches or stops a run (a GUI's thread, a
 // progress bar). Called on the running thread.
 struct RunObserver {
   std::function<void(const Sample&)> on_sample;
   std::function<void(const LatchEvent&)> on_event;
-  std::function<void(double t)> on_progress;  // after every step
+  std::function<void(const StepProgress&)> on_progress;  // after every step
   const std::atomic<bool>* cancel = nullptr;
 };
 

@@ -107,6 +107,7 @@ TEST_F(Render, PlotCurvesStayInsideTheAxes) {
   Image image;
   const render::PlotFrame frame = renderer.plot(spec, image);
   int inside = 0, outside = 0;
+  std::set<int> columns;
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
       const std::uint8_t* p = image.pixel(x, y);
@@ -114,11 +115,16 @@ TEST_F(Render, PlotCurvesStayInsideTheAxes) {
       const bool in = x >= frame.plot_min.x - 1 && x <= frame.plot_max.x + 1 && y >= frame.plot_min.y - 1 &&
                       y <= frame.plot_max.y + 1;
       (in ? inside : outside)++;
+      columns.insert(x);
     }
   // The legend's swatch is the only red outside the data, and it is inside
   // the axes box too.
   EXPECT_GT(inside, 300);
   EXPECT_EQ(outside, 0);
+  // The whole curve is drawn, rising and falling parts alike: every pixel
+  // column of the axes holds some of it.
+  const int width = static_cast<int>(frame.plot_max.x - frame.plot_min.x);
+  EXPECT_GE(static_cast<int>(columns.size()), width - 2);
   // The curve spans the box: its extremes touch the padded range.
   EXPECT_NEAR(frame.y_max, 3 + 0.3, 0.05);
 }

@@ -1,0 +1,42 @@
+// unfurl gui: the interactive workbench.
+#include <cstdio>
+
+#include "cli.hpp"
+#include "commands.hpp"
+#include "gui/gui_app.hpp"
+#include "scene_options.hpp"
+
+namespace unfurl::app {
+
+namespace {
+const char* kHelp =
+    "usage: unfurl gui [SCENE] [--script FILE] [scene options]\n"
+    "\n"
+    "Opens the workbench: a 3D view (left drag orbits, right drag pans, the wheel zooms), a timeline\n"
+    "(play, pause, speed, scrub, step, loop; latches marked), the parameters of the scene's springs,\n"
+    "latches, loop regulator and integrator (a change re-runs the simulation at once, the previous\n"
+    "run stays as a ghost in the plots), plots with values on hover, and export of the frame, of\n"
+    "frames or video of a time range, and of the trajectory. The scene file is reloaded when it\n"
+    "changes. Needs a display (DISPLAY; Xvfb works).\n"
+    "\n"
+    "options:\n"
+    "  --script FILE         run a scripted session (see app/gui/gui_script.hpp for the commands)\n"
+    "%s";
+}  // namespace
+
+int command_gui(const std::vector<std::string>& argv) {
+  std::set<std::string> valued = scene_flags();
+  valued.insert("--script");
+  const Args args(argv, valued, {"--help", "-h"});
+  if (args.has("--help") || args.has("-h")) {
+    std::printf(kHelp, scene_flags_help());
+    return 0;
+  }
+  if (args.positionals().size() > 1) throw UsageError("gui takes one SCENE (see --help)");
+  std::vector<ScriptCommand> script;
+  if (const auto file = args.get("--script")) script = read_gui_script(*file);
+  GuiApp app(args.positionals().empty() ? "pantograph" : args.positionals()[0], overrides_from(args), script);
+  return app.run();
+}
+
+}  // namespace unfurl::app

@@ -1,0 +1,113 @@
+#include "export_job.hpp"
+
+#include <chrono>
+#include <cstdio>
+
+#include "output_file.hpp"
+#include "png_file.hpp"
+
+namespace unfurl::app {
+
+ExportJob::ExportJob(const ExportRequest& request, const Scene& scene, const Trajectory& trajectory,
+                     const render::Camera& camera)
+    : request_(request),
+      scene_(scene),
+      trajectory_(trajectory),
+      camera_(camera),
+      times_(frame_times(request.options, trajectory.t_begin(), trajectory.t_end())),
+      renderer_(std::make_unique<render::FrameRenderer>(scene_, request.options.width, request.options.height,
+                                                        mesh_directories(scene_))) {
+  if (request_.frames) make_directory(request_.dir);
+  if (request_.options.video)
+    video_ = std::make_unique<VideoPipe>(*request_.options.video, request_.options.width, request_.options.height,
+                                         request_.options.fps);
+  encoder_ = std::thread([this] { encode(); });
+}
+
+ExportJob::~ExportJob() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    finished_drawing_ = true;
+  }
+  ready_.notify_all();
+  encoder_.join();
+}
+
+bool ExportJob::step(double budget_ms) {
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<double> q;
+  std::vector<Pose> poses;
+  while (drawn_ < times_.size()) {
+    {
+      // Do not run ahead of the encoder by more than a few frames.
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (!error_.empty()) break;
+      if (queue_.size() >= 4) return true;
+    }
+    trajectory_.coordinates_at(times_[drawn_], q);
+    body_poses(scene_.model, q.data(), poses);
+    render::Image image;
+    renderer_->frame(poses, times_[drawn_], camera_, image);
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      queue_.emplace_back(drawn_, std::move(image));
+    }
+    ready_.notify_all();
+    ++drawn_;
+    if (std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() > budget_ms)
+      return true;
+  }
+  std::unique_lock<std::mutex> lock(mutex_);
+  finished_drawing_ = true;
+  ready_.notify_all();
+  return !encoder_done_;
+}
+
+void ExportJob::encode() {
+  for (;;) {
+    std::pair<std::size_t, render::Image> item;
+    {
+      std::unique_lock<std::mutex> lock(mutex_);
+      ready_.wait(lock, [this] { return !queue_.empty() || finished_drawing_; });
+      if (queue_.empty()) break;
+      item = std::move(queue_.front());
+      queue_.pop_front();
+    }
+    try {
+      if (request_.frames) {
+        char name[32];
+        std::snprintf(name, sizeof name, "/frame_%05zu.png", item.first);
+        write_png(item.second, request_.dir + name);
+      }
+      if (video_) video_->add(item.second);
+    } catch (const std::exception& e) {
+      std::lock_guard<std::mutex> lock(mutex_);
+      error_ = e.what();
+      queue_.clear();
+      break;
+    }
+    ready_.notify_all();
+  }
+  std::string error;
+  if (video_) {
+    try {
+      if (error_.empty()) video_->finish();
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+  }
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (error_.empty()) error_ = error;
+  encoder_done_ = true;
+}
+
+std::string ExportJob::result() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (!error_.empty()) return "export failed: " + error_;
+  std::string what = std::to_string(times_.size()) + " frames";
+  if (request_.frames) what += " in " + request_.dir;
+  if (request_.options.video) what += ", video " + *request_.options.video;
+  return "exported " + what;
+}
+
+}  // namespace unfurl::app

@@ -1,0 +1,58 @@
+// Exporting a time range as PNG frames and/or a video from the GUI, through
+// the same renderer and encoders as `unfurl render`. Frames are drawn on the
+// UI thread (they need its GL context) a few per UI frame; encoding them
+// (PNG, ffmpeg) runs on a thread of its own, so the UI stays responsive.
+#pragma once
+
+#include <condition_variable>
+#include <deque>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+
+#include "frame_renderer.hpp"
+#include "gui_state.hpp"
+#include "video_pipe.hpp"
+
+namespace unfurl::app {
+
+class ExportJob {
+ public:
+  // Throws std::runtime_error when the renderer, directory or ffmpeg fail.
+  ExportJob(const ExportRequest& request, const Scene& scene, const Trajectory& trajectory,
+            const render::Camera& camera);
+  ~ExportJob();  // stops the encoder
+  ExportJob(const ExportJob&) = delete;
+  ExportJob& operator=(const ExportJob&) = delete;
+
+  // Draws frames for about `budget_ms` milliseconds; returns false when all
+  // frames are drawn and encoded (or encoding failed).
+  bool step(double budget_ms);
+  std::size_t done() const { return drawn_; }
+  std::size_t total() const { return times_.size(); }
+  // What happened: the files written, or the error.
+  std::string result();
+
+ private:
+  void encode();
+
+  ExportRequest request_;
+  const Scene scene_;
+  const Trajectory trajectory_;
+  render::Camera camera_;
+  std::vector<double> times_;
+  std::unique_ptr<render::FrameRenderer> renderer_;
+  std::size_t drawn_ = 0;
+
+  // The encoder thread's queue.
+  std::mutex mutex_;
+  std::condition_variable ready_;
+  std::deque<std::pair<std::size_t, render::Image>> queue_;
+  bool finished_drawing_ = false, encoder_done_ = false;
+  std::string error_;
+  std::unique_ptr<VideoPipe> video_;
+  std::thread encoder_;
+};
+
+}  // namespace unfurl::app

@@ -1,0 +1,487 @@
+#include "gui_app.hpp"
+
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <thread>
+
+#include "imgui_layer.hpp"
+#include "json_writer.hpp"
+#include "output_file.hpp"
+#include "png_file.hpp"
+#include "gui_panels.hpp"
+#include "run_files.hpp"
+#include "scene_options.hpp"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+namespace unfurl::app {
+
+namespace {
+
+double now_seconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+std::optional<std::filesystem::file_time_type> modification_time(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return std::nullopt;
+  const auto t = std::filesystem::last_write_time(path, ec);
+  return ec ? std::nullopt : std::optional(t);
+}
+
+}  // namespace
+
+GuiApp::GuiApp(const std::string& scene_name, std::vector<Override> command_line_set, std::vector<ScriptCommand> script)
+    : window_(1280, 800, "unfurl"), script_(std::move(script)) {
+  state_.command_line_set = std::move(command_line_set);
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;
+  ImGui::StyleColorsDark();
+  render::load_font(17);
+  ImGui_ImplGlfw_InitForOpenGL(window_.handle(), true);
+  ImGui_ImplOpenGL3_Init("#version 330");
+  meshes_ = std::make_unique<render::MeshLibrary>(std::vector<std::string>{});
+  if (!load_and_run(scene_name)) {
+    // Show the error over a scene that loads: the built-in pantograph.
+    const std::string error = state_.scene_error;
+    state_.command_line_set.clear();
+    load_and_run("pantograph");
+    state_.scene_error = error + " (showing the built-in pantograph instead)";
+  }
+}
+
+GuiApp::~GuiApp() {
+  export_job_.reset();
+  view_.reset();
+  viewport_.reset();
+  meshes_.reset();
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+}
+
+bool GuiApp::load_and_run(const std::string& name) {
+  try {
+    std::vector<Override> overrides = state_.command_line_set;
+    overrides.insert(overrides.end(), state_.edits.begin(), state_.edits.end());
+    Scene scene = load_scene_named(name, overrides);
+    auto meshes = std::make_unique<render::MeshLibrary>(mesh_directories(scene));
+    auto view = std::make_unique<render::SceneView>(scene, *meshes);
+    const bool same_scene = name == state_.scene_name && scene.name == state_.scene.name;
+    state_.scene = std::move(scene);
+    state_.scene_name = name;
+    state_.scene_mtime = modification_time(name);
+    state_.scene_error.clear();
+    view_ = std::move(view);
+    meshes_ = std::move(meshes);
+    if (!same_scene) {
+      state_.camera_fitted = false;
+      state_.play_time = 0;
+      state_.ghost = Trajectory{};
+    }
+    start_run();
+    return true;
+  } catch (const std::exception& e) {
+    state_.scene_error = e.what();
+    return false;
+  }
+}
+
+void GuiApp::start_run() { state_.requested_generation = worker_.run(state_.scene); }
+
+void GuiApp::sync_run() {
+  const long before = state_.generation;
+  state_.progress = worker_.sync(state_.generation, state_.trajectory, state_.ghost);
+  if (state_.generation != before && state_.ghost.samples.size() < 2) state_.ghost = Trajectory{};
+}
+
+void GuiApp::advance_playback(double dt) {
+  if (!state_.playing) return;
+  const double t_end = state_.scene.run.t_end, next = state_.play_time + dt * state_.speed;
+  // While the run computes, playback waits at what is known; the play-head
+  // itself keeps any time it was given (a re-run keeps it).
+  if (state_.progress.running && next > state_.progress.t_reached) return;
+  if (next <= t_end) {
+    state_.play_time = next;
+  } else if (state_.loop) {
+    state_.play_time = 0;
+  } else {
+    state_.play_time = t_end;
+    state_.playing = false;
+  }
+}
+
+void GuiApp::watch_scene_file() {
+  const double now = now_seconds();
+  if (now - last_file_check_ < 1.0) return;
+  last_file_check_ = now;
+  const auto mtime = modification_time(state_.scene_name);
+  if (mtime && state_.scene_mtime && *mtime != *state_.scene_mtime) {
+    state_.scene_mtime = mtime;
+    if (load_and_run(state_.scene_name)) state_.notice = "reloaded " + state_.scene_name + " (the file changed)";
+  }
+}
+
+void GuiApp::current_poses(std::vector<Pose>& poses) const {
+  std::vector<double> q = state_.scene.q0;
+  if (!state_.trajectory.empty()) state_.trajectory.coordinates_at(state_.play_time, q);
+  body_poses(state_.scene.model, q.data(), poses);
+}
+
+Eigen::AlignedBox3f GuiApp::swept_bounds() const {
+  Eigen::AlignedBox3f bounds;
+  std::vector<Pose> poses;
+  body_poses(state_.scene.model, state_.scene.q0.data(), poses);
+  bounds.extend(view_->bounds(poses));
+  const Trajectory& tr = state_.trajectory;
+  const std::size_t stride = std::max<std::size_t>(1, tr.samples.size() / 100);
+  std::vector<double> q;
+  for (std::size_t k = 0; k < tr.samples.size(); k += stride) {
+    q.assign(tr.samples[k].y.begin(), tr.samples[k].y.begin() + state_.scene.model.nq);
+    body_poses(state_.scene.model, q.data(), poses);
+    bounds.extend(view_->bounds(poses));
+  }
+  return bounds;
+}
+
+void GuiApp::draw_viewport_texture() {
+  const int w = std::max(16, state_.viewport_width), h = std::max(16, state_.viewport_height);
+  if (!viewport_ || viewport_->width() != w || viewport_->height() != h)
+    viewport_ = std::make_unique<render::Framebuffer>(w, h);
+  // Frame the whole motion until the first run is done (or after "reset").
+  if (!state_.camera_fitted) {
+    const render::Camera fitted = *render::camera_preset("iso", swept_bounds(), float(w) / h);
+    state_.camera = fitted;
+    state_.camera_fitted = !state_.progress.running && state_.generation >= state_.requested_generation;
+  }
+  std::vector<Pose> poses;
+  current_poses(poses);
+  viewport_->bind();
+  view_->draw(poses, state_.camera, w, h);
+  viewport_->resolve();
+}
+
+void GuiApp::draw_plots_texture() {
+  // Plots are the costliest thing to draw in software GL: redraw them only
+  // when their data or size changed, at most twice a second while a
+  // run streams in. The play-head is drawn over them by the panel.
+  const int w = std::max(16, state_.plots_width), h = std::max(16, state_.plots_height);
+  const PlotsKey key{state_.generation, state_.trajectory.samples.size(), state_.ghost.samples.size(), w, h,
+                     state_.plot_tab};
+  const double now = now_seconds();
+  if (plots_ && key == plots_key_) return;
+  if (plots_ && state_.progress.running && now - plots_drawn_at_ < 0.5) return;
+  if (!plots_ || plots_->width() != w || plots_->height() != h) plots_ = std::make_unique<render::Framebuffer>(w, h, 1);
+  if (!plots_layer_) plots_layer_ = std::make_unique<render::ImGuiLayer>(15);
+  plots_key_ = key;
+  plots_drawn_at_ = now;
+  plot_frames_.clear();
+  plots_->bind();
+  const ImVec4 background = ImGui::GetStyle().Colors[ImGuiCol_WindowBg];
+  glClearColor(background.x, background.y, background.z, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  plots_layer_->begin_frame(w, h);
+  const std::vector<render::PlotKind> kinds = shown_plots(state_);
+  const Trajectory* ghost = state_.ghost.empty() ? nullptr : &state_.ghost;
+  for (std::size_t k = 0; k < kinds.size(); ++k) {
+    const ImVec4 cell = plot_cell(k, kinds.size(), ImVec2(static_cast<float>(w), static_cast<float>(h)));
+    if (state_.trajectory.empty()) continue;
+    const render::PlotSpec spec = render::trajectory_plot(kinds[k], state_.scene, state_.trajectory, ghost);
+    plot_frames_.push_back(render::draw_plot(plots_layer_->draw_list(), ImVec2(cell.x, cell.y), ImVec2(cell.z, cell.w),
+                                             spec, false));
+  }
+  plots_layer_->end_frame();
+  plots_->resolve();
+}
+
+void GuiApp::layout_and_panels(Requests& requests) {
+  int W = 0, H = 0;
+  window_.framebuffer_size(W, H);
+  const float w = static_cast<float>(W), h = static_cast<float>(H);
+  const float toolbar = state_.scene_error.empty() && state_.progress.failure.empty() ? 40.0f : 84.0f;
+  const float status = 30, left = std::round(0.62f * w), view_h = std::round(0.5f * (h - toolbar - status));
+  const float timeline = 80;
+  // No window backgrounds: the clear colour is the background, so a
+  // software renderer (Xvfb, llvmpipe) fills each pixel about once.
+  const ImGuiWindowFlags fixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBackground;
+  auto place = [&](float x, float y, float ww, float hh) {
+    ImGui::SetNextWindowPos(ImVec2(x, y));
+    ImGui::SetNextWindowSize(ImVec2(ww, hh));
+  };
+
+  place(0, 0, w, toolbar);
+  ImGui::Begin("toolbar", nullptr, fixed | ImGuiWindowFlags_NoTitleBar);
+  toolbar_panel(state_, requests);
+  ImGui::End();
+
+  place(0, toolbar, left, view_h);
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(2, 2));
+  ImGui::Begin("View", nullptr, fixed | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+  viewport_panel(state_, viewport_ ? viewport_->texture() : 0, swept_bounds());
+  ImGui::End();
+  ImGui::PopStyleVar();
+
+  place(0, toolbar + view_h, left, timeline);
+  ImGui::Begin("Timeline", nullptr, fixed);
+  timeline_panel(state_);
+  ImGui::End();
+
+  place(0, toolbar + view_h + timeline, left, h - toolbar - view_h - timeline - status);
+  ImGui::Begin("Plots", nullptr, fixed | ImGuiWindowFlags_NoScrollbar);
+  plots_panel(state_, plots_ ? plots_->texture() : 0, plot_frames_);
+  ImGui::End();
+
+  place(left, toolbar, w - left, h - toolbar - status);
+  ImGui::Begin("Settings", nullptr, fixed);
+  if (ImGui::BeginTabBar("tabs")) {
+    if (ImGui::BeginTabItem("Parameters")) {
+      parameters_panel(state_, requests);
+      ImGui::EndTabItem();
+    }
+    if (ImGui::BeginTabItem("Export")) {
+      export_panel(state_, requests);
+      ImGui::EndTabItem();
+    }
+    ImGui::EndTabBar();
+  }
+  ImGui::End();
+
+  place(0, h - status, w, status);
+  ImGui::Begin("status", nullptr, fixed | ImGuiWindowFlags_NoTitleBar);
+  status_bar(state_);
+  ImGui::End();
+}
+
+void GuiApp::apply(const Requests& r) {
+  if (r.edit) {
+    // The latest value for a path replaces an earlier one.
+    auto& edits = state_.edits;
+    edits.erase(std::remove_if(edits.begin(), edits.end(), [&](const Override& o) { return o.path == r.edit->path; }),
+                edits.end());
+    edits.push_back(*r.edit);
+    if (!load_and_run(state_.scene_name)) edits.pop_back();
+  }
+  if (r.reset_edits) {
+    state_.edits.clear();
+    load_and_run(state_.scene_name);
+  }
+  if (r.open) {
+    const auto kept = state_.edits;
+    state_.edits.clear();
+    if (!load_and_run(*r.open)) state_.edits = kept;
+  }
+  if (r.reload) load_and_run(state_.scene_name);
+  if (r.save_frame) save_view_png(*r.save_frame);
+  if (r.save_trajectory) {
+    try {
+      make_directory(std::filesystem::path(*r.save_trajectory).parent_path().string().empty()
+                         ? "."
+                         : std::filesystem::path(*r.save_trajectory).parent_path().string());
+      write_trajectory_csv(state_.scene, state_.trajectory, *r.save_trajectory);
+      state_.notice = "saved " + *r.save_trajectory;
+    } catch (const std::exception& e) {
+      state_.notice = e.what();
+    }
+  }
+  if (r.export_range && !export_job_) {
+    try {
+      if (state_.trajectory.empty()) throw std::runtime_error("nothing computed yet");
+      export_job_ = std::make_unique<ExportJob>(*r.export_range, state_.scene, state_.trajectory, state_.camera);
+      state_.export_progress = {true, 0, export_job_->total(), ""};
+    } catch (const std::exception& e) {
+      state_.export_progress = {false, 0, 0, std::string("export failed: ") + e.what()};
+    }
+  }
+}
+
+void GuiApp::save_view_png(const std::string& path) {
+  try {
+    const std::string dir = std::filesystem::path(path).parent_path().string();
+    if (!dir.empty()) make_directory(dir);
+    render::Image image;
+    viewport_->read(image);
+    write_png(image, path);
+    state_.notice = "saved " + path;
+  } catch (const std::exception& e) {
+    state_.notice = e.what();
+  }
+}
+
+void GuiApp::screenshot(const std::string& path) {
+  int W = 0, H = 0;
+  window_.framebuffer_size(W, H);
+  render::Image image;
+  image.width = W;
+  image.height = H;
+  image.rgb.resize(static_cast<std::size_t>(W) * H * 3);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  glReadBuffer(GL_BACK);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, W, H, GL_RGB, GL_UNSIGNED_BYTE, image.rgb.data());
+  std::vector<std::uint8_t> flipped(image.rgb.size());
+  const std::size_t row = static_cast<std::size_t>(W) * 3;
+  for (int y = 0; y < H; ++y) std::copy_n(&image.rgb[(H - 1 - y) * row], row, &flipped[y * row]);
+  image.rgb.swap(flipped);
+  const std::string dir = std::filesystem::path(path).parent_path().string();
+  if (!dir.empty()) make_directory(dir);
+  write_png(image, path, 6);
+}
+
+void GuiApp::write_report(const std::string& path) const {
+  OutputFile file(path);
+  JsonWriter json(file.stream());
+  json.begin_object();
+  json.value("scene", state_.scene.name).value("generation", state_.generation);
+  auto run = [&](const char* key, const Trajectory& tr) {
+    json.begin_object(key);
+    json.value("samples", static_cast<long>(tr.samples.size()));
+    json.value("t_end", tr.empty() ? 0.0 : tr.t_end());
+    json.begin_object("latch_times");
+    for (const LatchEvent& e : tr.events) json.value(state_.scene.model.joints[e.joint].name, e.t);
+    json.end_object();
+    json.end_object();
+  };
+  run("current", state_.trajectory);
+  run("previous", state_.ghost);
+  json.value("status", state_.progress.running ? "running" : run_status_name(state_.progress.status));
+  json.value("play_time", state_.play_time);
+  json.value("fps", state_.fps);
+  json.value("frames_while_running", state_.frames_while_running);
+  json.value("fps_while_running",
+             state_.seconds_while_running > 0 ? state_.frames_while_running / state_.seconds_while_running : 0.0);
+  json.value("worst_frame_ms_while_running", 1000 * state_.worst_frame_while_running);
+  json.begin_array("edits");
+  for (const Override& o : state_.edits) json.value("", o.path + "=" + o.value);
+  json.end_array();
+  json.end_object();
+  file.commit();
+}
+
+void GuiApp::run_script() {
+  while (script_next_ < script_.size()) {
+    const ScriptCommand& c = script_[script_next_];
+    const auto arg = [&](std::size_t i) { return c.args[i]; };
+    const double now = now_seconds();
+    if (c.name == "wait") {
+      if (script_wait_until_ == 0) script_wait_until_ = now + std::stod(arg(0));
+      if (now < script_wait_until_) return;
+      script_wait_until_ = 0;
+    } else if (c.name == "wait_run") {
+      if (state_.progress.running || state_.generation < state_.requested_generation) return;
+    } else if (c.name == "wait_export") {
+      if (export_job_) return;
+    } else if (c.name == "play") {
+      state_.playing = true;
+    } else if (c.name == "pause") {
+      state_.playing = false;
+    } else if (c.name == "speed") {
+      state_.speed = std::stof(arg(0));
+    } else if (c.name == "loop") {
+      state_.loop = arg(0) == "on";
+    } else if (c.name == "scrub") {
+      state_.play_time = std::stod(arg(0));
+    } else if (c.name == "camera") {
+      if (const auto cam = render::camera_preset(arg(0), swept_bounds(),
+                                                 float(state_.viewport_width) / std::max(1, state_.viewport_height)))
+        state_.camera = *cam, state_.camera_fitted = true;
+    } else if (c.name == "set") {
+      Requests r;
+      r.edit = Override{arg(0), arg(1)};
+      apply(r);
+    } else if (c.name == "screenshot") {
+      screenshot(arg(0));
+    } else if (c.name == "save_frame") {
+      save_view_png(arg(0));
+    } else if (c.name == "export") {
+      Requests r;
+      ExportRequest e;
+      e.dir = arg(0);
+      e.options.from = std::stod(arg(1));
+      e.options.to = std::stod(arg(2));
+      e.options.fps = std::stod(arg(3));
+      if (c.args.size() > 4) e.options.video = arg(4);
+      r.export_range = e;
+      apply(r);
+    } else if (c.name == "report") {
+      write_report(arg(0));
+    } else if (c.name == "quit") {
+      quit_ = true;
+    }
+    ++script_next_;
+    if (c.name == "screenshot") return;  // one per frame: the next one shows the script's effect
+  }
+}
+
+void GuiApp::record_frame_time(double seconds) {
+  state_.frame_seconds.push_back(seconds);
+  if (state_.frame_seconds.size() > 60) state_.frame_seconds.pop_front();
+  double total = 0;
+  for (double s : state_.frame_seconds) total += s;
+  state_.fps = total > 0 ? state_.frame_seconds.size() / total : 0;
+  if (state_.progress.running) {
+    ++state_.frames_while_running;
+    state_.seconds_while_running += seconds;
+    state_.worst_frame_while_running = std::max(state_.worst_frame_while_running, seconds);
+  }
+}
+
+void GuiApp::frame() {
+  glfwPollEvents();
+  sync_run();
+  watch_scene_file();
+  if (export_job_) {
+    const bool more = export_job_->step(8);
+    state_.export_progress.done = export_job_->done();
+    if (!more) {
+      state_.export_progress = {false, 0, 0, export_job_->result()};
+      export_job_.reset();
+    }
+  }
+  draw_viewport_texture();
+  draw_plots_texture();
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  Requests requests;
+  layout_and_panels(requests);
+  ImGui::Render();
+  int W = 0, H = 0;
+  window_.framebuffer_size(W, H);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, W, H);
+  const ImVec4 background = ImGui::GetStyle().Colors[ImGuiCol_WindowBg];
+  glClearColor(background.x, background.y, background.z, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  // The script runs here, between drawing and showing, so a screenshot
+  // reads back the frame just drawn.
+  run_script();
+  window_.swap();
+  apply(requests);
+}
+
+int GuiApp::run() {
+  double last = now_seconds();
+  while (!window_.should_close() && !quit_) {
+    frame();
+    // At most about 60 frames per second: the solver thread needs the rest.
+    const double before_sleep = now_seconds();
+    const double spare = 1.0 / 60 - (before_sleep - last);
+    if (spare > 0) std::this_thread::sleep_for(std::chrono::duration<double>(spare));
+    const double now = now_seconds();
+    record_frame_time(now - last);
+    advance_playback(now - last);
+    last = now;
+  }
+  return exit_code_;
+}
+
+}  // namespace unfurl::app

@@ -1,0 +1,81 @@
+// The interactive workbench: a GLFW window with Dear ImGui, drawing with
+// render/. The simulation thread (SimulationWorker) owns the solver; this
+// UI thread draws, copies new samples once per frame, and turns panel
+// requests into new runs.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "export_job.hpp"
+#include "framebuffer.hpp"
+#include "glfw_window.hpp"
+#include "gui_script.hpp"
+#include "gui_state.hpp"
+#include "imgui_layer.hpp"
+#include "plot.hpp"
+#include "mesh_library.hpp"
+#include "scene_view.hpp"
+#include "simulation_worker.hpp"
+
+namespace unfurl::app {
+
+class GuiApp {
+ public:
+  GuiApp(const std::string& scene_name, std::vector<Override> command_line_set,
+         std::vector<ScriptCommand> script);
+  ~GuiApp();
+  GuiApp(const GuiApp&) = delete;
+  GuiApp& operator=(const GuiApp&) = delete;
+
+  // Runs until the window closes (or the script quits); returns the exit code.
+  int run();
+
+ private:
+  void frame();
+  void sync_run();
+  void advance_playback(double dt);
+  void watch_scene_file();
+  void draw_viewport_texture();
+  void draw_plots_texture();
+  void layout_and_panels(Requests& requests);
+  void apply(const Requests& requests);
+  void run_script();
+  void record_frame_time(double seconds);
+
+  // Loads the scene with the command-line and panel edits; on success swaps
+  // it in (and its meshes) and starts a run. Errors go to state_.scene_error.
+  bool load_and_run(const std::string& name);
+  void start_run();
+  Eigen::AlignedBox3f swept_bounds() const;
+  void current_poses(std::vector<Pose>& poses) const;
+  void save_view_png(const std::string& path);
+  void screenshot(const std::string& path);
+  void write_report(const std::string& path) const;
+
+  GlfwWindow window_;
+  GuiState state_;
+  std::unique_ptr<render::MeshLibrary> meshes_;
+  std::unique_ptr<render::SceneView> view_;
+  std::unique_ptr<render::Framebuffer> viewport_;
+  std::unique_ptr<render::Framebuffer> plots_;
+  std::unique_ptr<render::ImGuiLayer> plots_layer_;
+  std::vector<render::PlotFrame> plot_frames_;
+  using PlotsKey = std::tuple<long, std::size_t, std::size_t, int, int, int>;
+  PlotsKey plots_key_{};
+  double plots_drawn_at_ = 0;
+  std::unique_ptr<ExportJob> export_job_;
+  SimulationWorker worker_;
+
+  std::vector<ScriptCommand> script_;
+  std::size_t script_next_ = 0;
+  double script_wait_until_ = 0;
+  bool quit_ = false;
+  int exit_code_ = 0;
+  double last_file_check_ = 0;
+};
+
+}  // namespace unfurl::app

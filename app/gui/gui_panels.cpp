@@ -1,0 +1,311 @@
+#include "gui_panels.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "output_file.hpp"
+#include "trajectory_plots.hpp"
+
+namespace unfurl::app {
+
+namespace {
+
+constexpr double kFrame = 1.0 / 30;  // one frame of playback
+
+// A number field for a scene value; on commit, requests `path` = value.
+void value_field(const char* label, const std::string& path, double value, double speed, Requests& requests,
+                 double lo = 0, double hi = 0, const char* format = "%.6g") {
+  double v = value;
+  ImGui::SetNextItemWidth(160);
+  ImGui::DragScalar(label, ImGuiDataType_Double, &v, static_cast<float>(speed), lo < hi ? &lo : nullptr,
+                    lo < hi ? &hi : nullptr, format);
+  if (ImGui::IsItemDeactivatedAfterEdit() && v != value) requests.edit = Override{path, format_number(v)};
+}
+
+double run_end(const GuiState& state) { return state.scene.run.t_end; }
+
+}  // namespace
+
+void toolbar_panel(GuiState& state, Requests& requests) {
+  char* path = state.scene_path;
+  if (path[0] == 0) std::snprintf(path, sizeof state.scene_path, "%s", state.scene_name.c_str());
+  ImGui::TextUnformatted("Scene");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(360);
+  const bool entered = ImGui::InputText("##scene", path, sizeof state.scene_path, ImGuiInputTextFlags_EnterReturnsTrue);
+  ImGui::SameLine();
+  if (ImGui::Button("Open") || entered) requests.open = std::string(path);
+  ImGui::SameLine();
+  if (ImGui::Button("Reload")) requests.reload = true;
+  ImGui::SameLine();
+  ImGui::TextDisabled("%s", state.scene.source.c_str());
+  if (state.progress.running || state.generation < state.requested_generation) {
+    ImGui::SameLine();
+    const float pulse = 0.6f + 0.4f * std::sin(static_cast<float>(ImGui::GetTime()) * 6);
+    ImGui::TextColored(ImVec4(1.0f, 0.75f * pulse, 0.2f, 1), "re-simulating...");
+  }
+  if (!state.scene_error.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", state.scene_error.c_str());
+  if (state.progress.status == RunStatus::failed && !state.progress.failure.empty())
+    ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "run failed: %s", state.progress.failure.c_str());
+}
+
+void viewport_panel(GuiState& state, unsigned texture, const Eigen::AlignedBox3f& bounds) {
+  for (const std::string& name : render::camera_preset_names()) {
+    if (ImGui::SmallButton(name.c_str()))
+      state.camera = *render::camera_preset(name, bounds, float(state.viewport_width) / std::max(1, state.viewport_height));
+    ImGui::SameLine();
+  }
+  if (ImGui::SmallButton("reset view")) state.camera_fitted = false;
+  const ImVec2 size = ImGui::GetContentRegionAvail();
+  state.viewport_width = std::max(16, static_cast<int>(size.x));
+  state.viewport_height = std::max(16, static_cast<int>(size.y));
+  ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture)), size, ImVec2(0, 1), ImVec2(1, 0));
+  if (!ImGui::IsItemHovered()) return;
+  const ImGuiIO& io = ImGui::GetIO();
+  render::Camera& c = state.camera;
+  if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
+    c.azimuth_deg -= 0.3f * io.MouseDelta.x;
+    c.elevation_deg = std::clamp(c.elevation_deg + 0.3f * io.MouseDelta.y, -89.9f, 89.9f);
+  }
+  if (ImGui::IsMouseDragging(ImGuiMouseButton_Right) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle)) {
+    const Eigen::Matrix4f V = c.view();
+    const float scale = c.distance * 0.0015f;
+    c.target -= scale * io.MouseDelta.x * V.block<1, 3>(0, 0).transpose();
+    c.target += scale * io.MouseDelta.y * V.block<1, 3>(1, 0).transpose();
+  }
+  if (io.MouseWheel != 0) c.distance *= std::pow(0.9f, io.MouseWheel);
+}
+
+void timeline_panel(GuiState& state) {
+  const double t_end = run_end(state);
+  if (ImGui::Button(state.playing ? "Pause" : "Play", ImVec2(70, 0))) state.playing = !state.playing;
+  ImGui::SameLine();
+  if (ImGui::ArrowButton("back", ImGuiDir_Left)) state.playing = false, state.play_time -= kFrame;
+  ImGui::SameLine();
+  if (ImGui::ArrowButton("forward", ImGuiDir_Right)) state.playing = false, state.play_time += kFrame;
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(140);
+  ImGui::SliderFloat("speed", &state.speed, 0.1f, 10.0f, "%.2fx", ImGuiSliderFlags_Logarithmic);
+  ImGui::SameLine();
+  ImGui::Checkbox("loop", &state.loop);
+  ImGui::SameLine();
+  ImGui::Text("t = %.3f s", state.play_time);
+
+  // The scrubber, with what is computed shaded and the latches marked.
+  float t = static_cast<float>(state.play_time);
+  ImGui::SetNextItemWidth(-1);
+  if (ImGui::SliderFloat("##time", &t, 0.0f, static_cast<float>(t_end), "%.3f s")) state.play_time = t;
+  const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const float computed = static_cast<float>(std::min(1.0, state.progress.t_reached / t_end));
+  draw->AddRectFilled(ImVec2(lo.x, hi.y - 3), ImVec2(lo.x + computed * (hi.x - lo.x), hi.y), IM_COL32(80, 170, 255, 200));
+  for (const LatchEvent& e : state.trajectory.events) {
+    const float x = lo.x + static_cast<float>(e.t / t_end) * (hi.x - lo.x);
+    draw->AddLine(ImVec2(x, lo.y), ImVec2(x, hi.y), IM_COL32(255, 90, 90, 255), 2);
+  }
+  state.play_time = std::clamp(state.play_time, 0.0, t_end);
+}
+
+void parameters_panel(const GuiState& state, Requests& requests) {
+  const Scene& scene = state.scene;
+  const Model& model = scene.model;
+  if (ImGui::Button("Reset to the file's values")) requests.reset_edits = true;
+  if (!scene.springs.empty() && ImGui::CollapsingHeader("Springs and dampers", ImGuiTreeNodeFlags_DefaultOpen)) {
+    for (std::size_t k = 0; k < scene.springs.size(); ++k) {
+      const JointSpring& s = scene.springs[k];
+      const bool damper = k >= scene.dampers_from;
+      const std::string path = damper ? "dampers." + std::to_string(k - scene.dampers_from)
+                                      : "springs." + std::to_string(k);
+      ImGui::PushID(static_cast<int>(k));
+      ImGui::Text("%s %s", damper ? "damper" : "spring", model.joints[s.joint].name.c_str());
+      if (!damper) {
+        value_field("stiffness [N m/rad]", path + ".stiffness", s.stiffness, 0.005, requests, 0, 1e9);
+        value_field("preload: free angle [rad]", path + ".free_position", s.free_position, 0.01, requests);
+      }
+      value_field("damping [N m s/rad]", path + ".damping", s.damping, 0.001, requests, 0, 1e9);
+      ImGui::PopID();
+    }
+  }
+  if (!scene.latches.empty() && ImGui::CollapsingHeader("Latches")) {
+    for (std::size_t k = 0; k < scene.latches.size(); ++k) {
+      const Latch& l = scene.latches[k];
+      const std::string path = "latches." + std::to_string(k);
+      ImGui::PushID(1000 + static_cast<int>(k));
+      ImGui::Text("latch %s at %.4g", model.joints[l.joint].name.c_str(), l.position);
+      value_field("stiffness [N m/rad]##l", path + ".stiffness", l.stiffness, 10, requests, 1e-9, 1e12);
+      value_field("damping [N m s/rad]##l", path + ".damping", l.damping, 0.1, requests, 0, 1e12);
+      ImGui::PopID();
+    }
+  }
+  if (!scene.loops.empty() && ImGui::CollapsingHeader("Loop regulator", ImGuiTreeNodeFlags_DefaultOpen)) {
+    const RegulatorSettings& r = scene.regulator;
+    int gains = r.gains == GainTuning::full ? 0 : 1;
+    ImGui::SetNextItemWidth(160);
+    if (ImGui::Combo("gains", &gains, "full (current W)\0paper (16), diagonal\0"))
+      requests.edit = Override{"regulator.gains", gains == 0 ? "full" : "paper"};
+    value_field("v_max [rad/s]", "regulator.v_max", r.v_max, 10, requests, 1e-3, 1e9);
+    value_field("p0", "regulator.p0", r.p0, 0.01, requests, 1e-3, 100);
+    value_field("p1", "regulator.p1", r.p1, 0.01, requests, 1e-3, 0.999);
+  }
+  if (ImGui::CollapsingHeader("Integrator", ImGuiTreeNodeFlags_DefaultOpen)) {
+    const RunSettings& run = scene.run;
+    int current = 0;
+    const auto& kinds = all_integrators();
+    for (std::size_t k = 0; k < kinds.size(); ++k)
+      if (kinds[k] == run.integrator) current = static_cast<int>(k);
+    ImGui::SetNextItemWidth(160);
+    if (ImGui::Combo("integrator", &current, "cvode-bdf\0cvode-adams\0arkode-erk\0arkode-dirk\0rk4\0"))
+      requests.edit = Override{"run.integrator", integrator_name(kinds[current])};
+    if (run.integrator == IntegratorKind::rk4) {
+      value_field("step [s]", "run.dt", run.dt, 1e-6, requests, 1e-9, 1, "%.3g");
+    } else {
+      value_field("rtol", "run.rtol", run.rtol, 1e-10, requests, 1e-14, 1e-1, "%.3g");
+      value_field("atol", "run.atol", run.atol, 1e-12, requests, 1e-16, 1e-1, "%.3g");
+    }
+    value_field("t_end [s]", "run.t_end", run.t_end, 0.1, requests, 1e-3, 1e6);
+  }
+  if (!state.edits.empty()) {
+    ImGui::Separator();
+    ImGui::TextDisabled("changed from the file:");
+    for (const Override& o : state.edits) ImGui::TextDisabled("  %s = %s", o.path.c_str(), o.value.c_str());
+  }
+}
+
+std::vector<render::PlotKind> plot_kinds(const Scene& scene) {
+  std::vector<render::PlotKind> kinds{render::PlotKind::angles, render::PlotKind::rates};
+  if (!scene.loops.empty()) kinds.push_back(render::PlotKind::residuals);
+  kinds.push_back(render::PlotKind::energy);
+  return kinds;
+}
+
+std::vector<render::PlotKind> shown_plots(const GuiState& state) {
+  const std::vector<render::PlotKind> kinds = plot_kinds(state.scene);
+  if (state.plot_tab >= 0 && state.plot_tab < static_cast<int>(kinds.size())) return {kinds[state.plot_tab]};
+  return kinds;
+}
+
+ImVec4 plot_cell(std::size_t k, std::size_t count, ImVec2 panel) {
+  if (count == 1) return ImVec4(0, 0, panel.x, panel.y);
+  const std::size_t rows = (count + 1) / 2;
+  const float w = panel.x / 2, h = panel.y / static_cast<float>(rows);
+  return ImVec4(static_cast<float>(k % 2) * w, static_cast<float>(k / 2) * h, w - 4, h - 4);
+}
+
+void plots_panel(GuiState& state, unsigned texture, const std::vector<render::PlotFrame>& frames) {
+  static const char* names[] = {"angles", "rates", "loop residuals", "energy"};
+  const std::vector<render::PlotKind> all = plot_kinds(state.scene);
+  for (std::size_t k = 0; k <= all.size(); ++k) {
+    if (k > 0) ImGui::SameLine();
+    const char* name = k < all.size() ? names[static_cast<int>(all[k])] : "all";
+    if (ImGui::RadioButton(name, state.plot_tab == static_cast<int>(k))) state.plot_tab = static_cast<int>(k);
+  }
+  const ImVec2 size = ImGui::GetContentRegionAvail();
+  state.plots_width = std::max(16, static_cast<int>(size.x));
+  state.plots_height = std::max(16, static_cast<int>(size.y));
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture)), size, ImVec2(0, 1), ImVec2(1, 0));
+  const bool hovered = ImGui::IsItemHovered(), clicked = ImGui::IsItemClicked();
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const std::vector<render::PlotKind> kinds = shown_plots(state);
+  for (std::size_t k = 0; k < frames.size() && k < kinds.size(); ++k) {
+    render::PlotFrame f = frames[k];
+    f.plot_min = ImVec2(f.plot_min.x + origin.x, f.plot_min.y + origin.y);
+    f.plot_max = ImVec2(f.plot_max.x + origin.x, f.plot_max.y + origin.y);
+    const float x = f.to_screen(state.play_time, f.log_y ? 1 : f.y_min).x;
+    if (x >= f.plot_min.x && x <= f.plot_max.x)
+      draw->AddLine(ImVec2(x, f.plot_min.y), ImVec2(x, f.plot_max.y), IM_COL32(240, 240, 240, 220), 1.5f);
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    if (!hovered || mouse.x < f.plot_min.x || mouse.x > f.plot_max.x || mouse.y < f.plot_min.y ||
+        mouse.y > f.plot_max.y || state.trajectory.empty())
+      continue;
+    const double t = f.x_at(mouse.x);
+    if (clicked) state.play_time = t, state.playing = false;
+    const render::PlotSpec spec = render::trajectory_plot(kinds[k], state.scene, state.trajectory);
+    ImGui::BeginTooltip();
+    ImGui::Text("t = %.4f s", t);
+    for (const render::Series& s : spec.series) {
+      if (s.x.empty()) continue;
+      const auto it = std::lower_bound(s.x.begin(), s.x.end(), t);
+      const std::size_t i = std::min<std::size_t>(it - s.x.begin(), s.x.size() - 1);
+      ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(s.color), "%s: %.6g", s.label.c_str(), s.y[i]);
+    }
+    ImGui::EndTooltip();
+  }
+}
+
+void export_panel(GuiState& state, Requests& requests) {
+  ExportForm& f = state.export_form;
+  char* frame_path = f.frame_path;
+  char* csv_path = f.csv_path;
+  char* dir = f.dir;
+  char* video = f.video;
+  float& from = f.from;
+  float& to = f.to;
+  float& fps = f.fps;
+  int* size = f.size;
+  bool& with_video = f.with_video;
+  bool& frames = f.frames;
+  if (to <= 0) to = static_cast<float>(state.scene.run.t_end);
+
+  ImGui::SetNextItemWidth(260);
+  ImGui::InputText("##frame", frame_path, sizeof f.frame_path);
+  ImGui::SameLine();
+  if (ImGui::Button("Save frame (PNG)")) requests.save_frame = std::string(frame_path);
+
+  ImGui::SetNextItemWidth(260);
+  ImGui::InputText("##csv", csv_path, sizeof f.csv_path);
+  ImGui::SameLine();
+  if (ImGui::Button("Save trajectory (CSV)")) requests.save_trajectory = std::string(csv_path);
+
+  ImGui::Separator();
+  ImGui::TextUnformatted("Frames or video of a time range");
+  ImGui::SetNextItemWidth(200);
+  ImGui::InputFloat("from [s]", &from, 0.1f, 1.0f, "%.3f");
+  ImGui::SetNextItemWidth(200);
+  ImGui::InputFloat("to [s]", &to, 0.1f, 1.0f, "%.3f");
+  ImGui::SetNextItemWidth(200);
+  ImGui::InputFloat("fps", &fps, 1, 10, "%.1f");
+  ImGui::SetNextItemWidth(200);
+  ImGui::InputInt2("size", size);
+  ImGui::SetNextItemWidth(260);
+  ImGui::InputText("directory", dir, sizeof f.dir);
+  ImGui::Checkbox("PNG frames", &frames);
+  ImGui::SameLine();
+  ImGui::Checkbox("video", &with_video);
+  if (with_video) {
+    ImGui::SetNextItemWidth(260);
+    ImGui::InputText("video file", video, sizeof f.video);
+  }
+  const ExportProgress& ex = state.export_progress;
+  if (ex.active) {
+    ImGui::ProgressBar(ex.total ? float(ex.done) / ex.total : 0.0f, ImVec2(-1, 0));
+  } else if (ImGui::Button("Export")) {
+    ExportRequest r;
+    r.dir = dir;
+    r.frames = frames;
+    r.options.from = from;
+    r.options.to = to;
+    r.options.fps = std::max(1.0f, fps);
+    r.options.width = std::clamp(size[0], 16, 8192);
+    r.options.height = std::clamp(size[1], 16, 8192);
+    if (with_video) r.options.video = std::string(video);
+    requests.export_range = r;
+  }
+  if (!ex.message.empty()) ImGui::TextWrapped("%s", ex.message.c_str());
+}
+
+void status_bar(const GuiState& state) {
+  const RunProgress& p = state.progress;
+  const double factor = p.wall_time_s > 0 ? p.t_reached / p.wall_time_s : 0;
+  const RunSettings& run = state.scene.run;
+  ImGui::Text("simulated %.3f / %.3g s | wall %.3f s | %ld steps | %ld RHS | %.1fx real time | %s rtol %.0e | %s | UI %.0f fps",
+              p.t_reached, run.t_end, p.wall_time_s, p.steps, p.rhs_calls, factor, integrator_name(run.integrator),
+              run.rtol, p.running ? "running" : run_status_name(p.status), state.fps);
+  if (!state.notice.empty()) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("| %s", state.notice.c_str());
+  }
+}
+
+}  // namespace unfurl::app

@@ -1,0 +1,45 @@
+// The GUI's panels, each a function drawing one window's contents from the
+// state (see gui_state.hpp for what they may change and what they request).
+#pragma once
+
+#include <imgui.h>
+
+#include "gui_state.hpp"
+#include "plot.hpp"
+#include "trajectory_plots.hpp"
+
+namespace unfurl::app {
+
+// Scene path, open, reload, and the re-simulating indicator.
+void toolbar_panel(GuiState& state, Requests& requests);
+
+// The 3D view (a texture rendered beforehand at the size this panel asks
+// for), camera by mouse: left drag orbits, right drag pans, wheel zooms.
+void viewport_panel(GuiState& state, unsigned texture, const Eigen::AlignedBox3f& bounds);
+
+// Scrubber with the computed span and latch marks, play/pause, speed,
+// single steps, loop.
+void timeline_panel(GuiState& state);
+
+// Spring, latch, regulator and integrator settings built from the scene.
+void parameters_panel(const GuiState& state, Requests& requests);
+
+// The plots this scene shows: angles, rates, residuals (loops only), energy.
+std::vector<render::PlotKind> plot_kinds(const Scene& scene);
+// The plots the selected tab shows, and where plot k of them goes in a
+// panel of this size (one plot, or all in two columns).
+std::vector<render::PlotKind> shown_plots(const GuiState& state);
+ImVec4 plot_cell(std::size_t k, std::size_t count, ImVec2 panel);
+
+// The plots (drawn beforehand into `texture` with the previous run as a
+// ghost; `frames` says where each plot's axes are), the play-head over them,
+// values on hover; a click seeks.
+void plots_panel(GuiState& state, unsigned texture, const std::vector<render::PlotFrame>& frames);
+
+// Save the frame, export a range as frames or video, save the trajectory.
+void export_panel(GuiState& state, Requests& requests);
+
+// Simulated time, wall time, steps, RHS calls, real-time factor, integrator.
+void status_bar(const GuiState& state);
+
+}  // namespace unfurl::app

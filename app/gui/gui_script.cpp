@@ -1,0 +1,37 @@
+#include "gui_script.hpp"
+
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+namespace unfurl::app {
+
+std::vector<ScriptCommand> read_gui_script(const std::string& path) {
+  // Command -> (least, most) arguments.
+  static const std::map<std::string, std::pair<int, int>> arity{
+      {"wait", {1, 1}},   {"wait_run", {0, 0}},   {"play", {0, 0}},       {"pause", {0, 0}},
+      {"speed", {1, 1}},  {"loop", {1, 1}},       {"scrub", {1, 1}},      {"camera", {1, 1}},
+      {"set", {2, 2}},    {"screenshot", {1, 1}}, {"save_frame", {1, 1}}, {"export", {4, 5}},
+      {"wait_export", {0, 0}}, {"report", {1, 1}}, {"quit", {0, 0}}};
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path + ": cannot open the script");
+  std::vector<ScriptCommand> commands;
+  std::string text;
+  for (int n = 1; std::getline(in, text); ++n) {
+    std::istringstream words(text);
+    ScriptCommand c;
+    c.line = n;
+    if (!(words >> c.name) || c.name[0] == '#') continue;
+    for (std::string w; words >> w;) c.args.push_back(w);
+    const auto it = arity.find(c.name);
+    if (it == arity.end()) throw std::runtime_error(path + ":" + std::to_string(n) + ": unknown command '" + c.name + "'");
+    const int count = static_cast<int>(c.args.size());
+    if (count < it->second.first || count > it->second.second)
+      throw std::runtime_error(path + ":" + std::to_string(n) + ": wrong number of arguments for '" + c.name + "'");
+    commands.push_back(c);
+  }
+  return commands;
+}
+
+}  // namespace unfurl::app

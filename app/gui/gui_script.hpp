@@ -1,0 +1,37 @@
+// A scripted GUI session, for tests and demos: one command per line, run
+// between frames while the window keeps drawing.
+//
+//   wait SECONDS          let the UI run (wall-clock seconds)
+//   wait_run              until the current run has finished
+//   play | pause          playback
+//   speed X | loop on|off
+//   scrub T               move the play-head to T seconds
+//   camera NAME           a camera preset
+//   set PATH VALUE        change a scene value as the parameters panel does
+//                         (for example set springs.0.free_position 1.2)
+//   screenshot FILE.png   the whole window, read back from its framebuffer
+//   save_frame FILE.png   the 3D view, as the export panel saves it
+//   export DIR FROM TO FPS [VIDEO.mp4]   frames (and video) of a range
+//   wait_export           until the export has finished
+//   report FILE.json      the state: runs and their latch times, frame rate
+//   quit
+//
+// Blank lines and lines starting with # are skipped.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace unfurl::app {
+
+struct ScriptCommand {
+  int line = 0;
+  std::string name;
+  std::vector<std::string> args;
+};
+
+// Throws std::runtime_error naming the line of an unknown command or a
+// wrong number of arguments.
+std::vector<ScriptCommand> read_gui_script(const std::string& path);
+
+}  // namespace unfurl::app

@@ -1,0 +1,98 @@
+// What the GUI holds between frames (the UI thread's own state) and what
+// its panels ask for. Panels are functions of the state that draw with
+// Dear ImGui; they change UI-only state (play-head, camera) directly and
+// return requests for everything that involves the solver or files, which
+// the application applies between frames.
+#pragma once
+
+#include <chrono>
+#include <deque>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "camera.hpp"
+#include "render_options.hpp"
+#include "scene.hpp"
+#include "scene_yaml.hpp"
+#include "simulation_worker.hpp"
+#include "trajectory.hpp"
+
+namespace unfurl::app {
+
+struct ExportRequest {
+  std::string dir = "out/gui_export";
+  RenderOptions options;
+  bool frames = true;
+};
+
+struct Requests {
+  std::optional<Override> edit;         // a parameter: restart the run with it
+  bool reset_edits = false;             // back to the scene file's values
+  std::optional<std::string> open;      // another scene (path or built-in name)
+  bool reload = false;
+  std::optional<std::string> save_frame;       // PNG of the current view
+  std::optional<std::string> save_trajectory;  // CSV of the current run
+  std::optional<ExportRequest> export_range;   // frames / video of a time range
+};
+
+struct ExportProgress {
+  bool active = false;
+  std::size_t done = 0, total = 0;
+  std::string message;  // the last result or error
+};
+
+// The text fields and settings of the export panel.
+struct ExportForm {
+  char frame_path[256] = "out/gui_frame.png";
+  char csv_path[256] = "out/gui_trajectory.csv";
+  char dir[256] = "out/gui_export";
+  char video[256] = "out/gui_export/deployment.mp4";
+  float from = 0, to = 0, fps = 30;
+  int size[2] = {1280, 720};
+  bool with_video = true, frames = true;
+};
+
+struct GuiState {
+  char scene_path[512] = "";  // the toolbar's field
+  // The scene: its source, the edits made in the GUI, the loaded result.
+  std::string scene_name;                 // as given: a path or a built-in name
+  std::vector<Override> command_line_set;  // --set from the command line
+  std::vector<Override> edits;             // from the parameters panel
+  Scene scene;
+  std::string scene_error;                 // why the last load failed
+  std::optional<std::filesystem::file_time_type> scene_mtime;
+
+  // The runs: the current one as far as computed, and the previous one.
+  long generation = -1;
+  long requested_generation = 0;
+  Trajectory trajectory;
+  Trajectory ghost;
+  RunProgress progress;
+
+  // Playback.
+  double play_time = 0;
+  bool playing = false;
+  float speed = 1;
+  bool loop = true;
+
+  // View.
+  render::Camera camera;
+  bool camera_fitted = false;
+  int viewport_width = 0, viewport_height = 0;
+  int plots_width = 0, plots_height = 0;
+  int plot_tab = 0;  // one of the scene's plots, or the last tab: all of them
+
+  // Frame rate: recent frame durations, and the worst while a run computes.
+  std::deque<double> frame_seconds;
+  double fps = 0;
+  long frames_while_running = 0;
+  double seconds_while_running = 0, worst_frame_while_running = 0;
+
+  ExportForm export_form;
+  ExportProgress export_progress;
+  std::string notice;  // the last file saved, or error
+};
+
+}  // namespace unfurl::app

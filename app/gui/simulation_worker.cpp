@@ -1,0 +1,109 @@
+#include "simulation_worker.hpp"
+
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+
+#include <chrono>
+
+namespace unfurl::app {
+
+SimulationWorker::SimulationWorker() : thread_([this] { loop(); }) {}
+
+SimulationWorker::~SimulationWorker() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    quit_ = true;
+    cancel_ = true;
+  }
+  wake_.notify_one();
+  thread_.join();
+}
+
+long SimulationWorker::run(const Scene& scene) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  pending_ = scene;
+  cancel_ = true;
+  wake_.notify_one();
+  // The generation the request will run as: the worker takes requests in
+  // order and increments once per run it starts.
+  return progress_.generation + 1;
+}
+
+RunProgress SimulationWorker::sync(long& generation, Trajectory& copy, Trajectory& previous) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (generation != progress_.generation) {
+    generation = progress_.generation;
+    if (!copy.empty()) previous = std::move(copy);
+    copy = Trajectory{};
+  }
+  copy.layout = buffer_.layout;
+  copy.samples.insert(copy.samples.end(), buffer_.samples.begin() + static_cast<long>(copy.samples.size()),
+                      buffer_.samples.end());
+  copy.events.insert(copy.events.end(), buffer_.events.begin() + static_cast<long>(copy.events.size()),
+                     buffer_.events.end());
+  RunProgress p = progress_;
+  if (p.running) {
+    p.steps = steps_live_.load(std::memory_order_relaxed);
+    p.rhs_calls = rhs_live_.load(std::memory_order_relaxed);
+  }
+  return p;
+}
+
+void SimulationWorker::loop() {
+  // The solver yields to the UI thread: drawing stays smooth while it runs
+  // (Linux schedules threads individually, so this lowers only this one).
+  setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), 19);
+  for (;;) {
+    Scene scene;
+    {
+      std::unique_lock<std::mutex> lock(mutex_);
+      wake_.wait(lock, [this] { return quit_ || pending_.has_value(); });
+      if (quit_) return;
+      scene = std::move(*pending_);
+      pending_.reset();
+      cancel_ = false;
+      buffer_ = Trajectory{};
+      const long generation = progress_.generation + 1;
+      progress_ = RunProgress{};
+      progress_.generation = generation;
+      progress_.running = true;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    RunObserver observer;
+    observer.cancel = &cancel_;
+    observer.on_sample = [&](const Sample& s) {
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (buffer_.samples.empty()) buffer_.layout = StateLayout{static_cast<int>(s.dq.size()), 0};
+      buffer_.samples.push_back(s);
+      progress_.t_reached = s.t;
+      progress_.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
+    observer.on_progress = [&](const StepProgress& p) {
+      // Atomics rather than the lock: the status line reads them every frame.
+      steps_live_.store(p.steps, std::memory_order_relaxed);
+      rhs_live_.store(p.rhs_calls, std::memory_order_relaxed);
+    };
+    observer.on_event = [&](const LatchEvent& e) {
+      std::lock_guard<std::mutex> lock(mutex_);
+      buffer_.events.push_back(e);
+    };
+    RunResult result;
+    try {
+      result = simulate(scene, scene.run, observer);
+    } catch (const std::exception& e) {
+      result.status = RunStatus::failed;
+      result.failure = {0, 0, "setup", e.what()};
+    }
+    std::lock_guard<std::mutex> lock(mutex_);
+    buffer_.layout = result.trajectory.layout;
+    progress_.running = false;
+    progress_.status = result.status;
+    progress_.failure = result.status == RunStatus::failed ? describe(result.failure) : "";
+    progress_.steps = result.stats.steps;
+    progress_.rhs_calls = result.rhs_calls;
+    progress_.wall_time_s = result.wall_time_s;
+  }
+}
+
+}  // namespace unfurl::app

@@ -1,0 +1,66 @@
+// The GUI's simulation thread. It owns the solver: the UI posts a request
+// (a scene to run), the worker cancels the run in progress at its next step,
+// starts the new one and appends every sample to a shared buffer as it is
+// computed. The UI never waits on the solver: it copies what is new under a
+// short lock, once per frame.
+#pragma once
+
+#include <atomic>
+#include <condition_variable>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "scene.hpp"
+#include "simulation.hpp"
+
+namespace unfurl::app {
+
+// What the UI sees of the current run.
+struct RunProgress {
+  long generation = 0;         // increments with every new run
+  RunStatus status = RunStatus::finished;
+  bool running = false;
+  std::string failure;         // a solver failure, said where
+  double t_reached = 0;
+  double wall_time_s = 0;
+  long steps = 0;
+  long rhs_calls = 0;
+};
+
+class SimulationWorker {
+ public:
+  SimulationWorker();
+  ~SimulationWorker();  // cancels the run and joins the thread
+  SimulationWorker(const SimulationWorker&) = delete;
+  SimulationWorker& operator=(const SimulationWorker&) = delete;
+
+  // Cancels the run in progress (promptly: at its next step) and runs this
+  // scene instead. Returns the new run's generation.
+  long run(const Scene& scene);
+
+  // Copies the samples and events the UI has not seen yet into `copy`
+  // (which must hold the first copy.samples.size() samples of `generation`).
+  // When a new run has started, `copy` moves to `previous` and starts
+  // afresh. Returns the run's progress.
+  RunProgress sync(long& generation, Trajectory& copy, Trajectory& previous);
+
+ private:
+  void loop();
+
+  std::thread thread_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  std::optional<Scene> pending_;  // the next run, taken by the worker
+  bool quit_ = false;
+  std::atomic<bool> cancel_{false};
+  std::atomic<long> steps_live_{0}, rhs_live_{0};
+
+  // Shared with the UI under mutex_.
+  Trajectory buffer_;
+  RunProgress progress_;
+};
+
+}  // namespace unfurl::app

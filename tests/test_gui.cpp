@@ -1,0 +1,102 @@
+// The GUI under Xvfb, driven by a script: it plays, scrubs, changes a
+// spring's preload, waits for the new run and takes screenshots read back
+// from its framebuffer.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include "png_read.hpp"
+#include "support.hpp"
+#include "video_pipe.hpp"
+
+namespace unfurl {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Latch time of `joint` in the report's run `which` ("current"/"previous").
+double latch_time(const std::string& report, const std::string& which, const std::string& joint) {
+  const auto at = report.find("\"" + which + "\"");
+  std::smatch m;
+  const std::string rest = report.substr(at);
+  if (!std::regex_search(rest, m, std::regex("\"" + joint + "\": ([0-9.eE+-]+)"))) return NAN;
+  return std::stod(m[1]);
+}
+
+// Pixels of the solar cells' blue in a region of the screenshot.
+int cell_pixels(const render::Image& image, int x0, int y0, int x1, int y1) {
+  int count = 0;
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) {
+      const std::uint8_t* p = image.pixel(x, y);
+      if (p[2] > 70 && p[2] > p[0] + 40 && p[2] > p[1] + 25) ++count;
+    }
+  return count;
+}
+
+TEST(Gui, ScriptedSessionPlaysScrubsChangesAPreloadAndReruns) {
+  if (!app::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
+  const fs::path dir = fs::temp_directory_path() / ("unfurl_gui_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "session.txt") << "wait_run\n"
+                                        "play\n"
+                                        "wait 1\n"
+                                        "pause\n"
+                                        "scrub 6.5\n"
+                                        "wait 0.3\n"
+                                        "screenshot " << (dir / "first.png").string() << "\n"
+                                        "report " << (dir / "first.json").string() << "\n"
+                                        "set springs.0.free_position 1.3\n"
+                                        "wait 0.2\n"
+                                        "screenshot " << (dir / "rerunning.png").string() << "\n"
+                                        "wait_run\n"
+                                        "scrub 6.5\n"
+                                        "wait 0.3\n"
+                                        "screenshot " << (dir / "second.png").string() << "\n"
+                                        "save_frame " << (dir / "view.png").string() << "\n"
+                                        "report " << (dir / "second.json").string() << "\n"
+                                        "quit\n";
+  const std::string command = "timeout 300 xvfb-run -a -s '-screen 0 1280x800x24' " + std::string(UNFURL_BINARY) +
+                              " gui pantograph --script " + (dir / "session.txt").string() + " > " +
+                              (dir / "log.txt").string() + " 2>&1";
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << slurp(dir / "log.txt");
+
+  // Not blank, and the 3D view (top left) shows the array's cells.
+  const render::Image shot = test::read_png((dir / "second.png").string());
+  ASSERT_EQ(shot.width, 1280);
+  std::set<int> colours;
+  for (std::size_t k = 0; k < shot.rgb.size(); k += 3)
+    colours.insert(shot.rgb[k] << 16 | shot.rgb[k + 1] << 8 | shot.rgb[k + 2]);
+  EXPECT_GT(colours.size(), 500u);
+  EXPECT_GT(cell_pixels(shot, 0, 60, shot.width * 6 / 10, shot.height / 2), 2000);
+  const render::Image view = test::read_png((dir / "view.png").string());
+  EXPECT_GT(cell_pixels(view, 0, 0, view.width, view.height), 2000);
+
+  // The new run differs from the old: chain A's root latch moved.
+  const std::string report = slurp(dir / "second.json");
+  const double before = latch_time(report, "previous", "j1"), after = latch_time(report, "current", "j1");
+  ASSERT_FALSE(std::isnan(before)) << report;
+  ASSERT_FALSE(std::isnan(after)) << report;
+  EXPECT_GT(std::abs(after - before), 1e-3) << report;
+  EXPECT_NE(report.find("springs.0.free_position=1.3"), std::string::npos);
+  // The first run's report saw one run and no previous.
+  EXPECT_TRUE(std::isnan(latch_time(slurp(dir / "first.json"), "previous", "j1")));
+  std::printf("%s\n", report.c_str());
+}
+
+}  // namespace
+}  // namespace unfurl
