@@ -50,7 +50,6 @@ class SimulationWorker {
  private:
   void loop();
 
-  std::thread thread_;
   std::mutex mutex_;
   std::condition_variable wake_;
   std::optional<Scene> pending_;  // the next run, taken by the worker
@@ -61,6 +60,10 @@ class SimulationWorker {
   // Shared with the UI under mutex_.
   Trajectory buffer_;
   RunProgress progress_;
+
+  // Last: it starts running loop() at construction, so every member above
+  // must already exist.
+  std::thread thread_;
 };
 
 }  // namespace unfurl::app
