@@ -11,5 +11,6 @@ namespace unfurl::app {
 int command_simulate(const std::vector<std::string>& args);
 int command_render(const std::vector<std::string>& args);
 int command_gui(const std::vector<std::string>& args);
+int command_generate(const std::vector<std::string>& args);
 
 }  // namespace unfurl::app

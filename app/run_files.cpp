@@ -62,6 +62,7 @@ void write_summary_json(const Scene& scene, const RunResult& result, const RunSu
   json.value("steps", result.stats.steps).value("rhs_evals", result.rhs_calls);
   json.value("jacobian_evals", result.stats.jacobian_evals);
   json.value("linear_setups", result.stats.linear_setups);
+  json.value("linear_iterations", result.stats.linear_iterations);
   json.value("nonlinear_iterations", result.stats.nonlinear_iterations);
   json.value("nonlinear_failures", result.stats.nonlinear_failures);
   json.value("error_test_failures", result.stats.error_test_failures);

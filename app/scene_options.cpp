@@ -7,7 +7,7 @@
 namespace unfurl::app {
 
 const std::set<std::string>& scene_flags() {
-  static const std::set<std::string> flags{"--set",  "--t-end", "--integrator", "--rtol",
+  static const std::set<std::string> flags{"--set", "--t-end", "--integrator", "--linear-solver", "--rtol",
                                            "--atol", "--dt",    "--sample"};
   return flags;
 }
@@ -19,6 +19,9 @@ const char* scene_flags_help() {
          "                        list elements by index or by name/joint/body; repeatable\n"
          "  --t-end T             simulate from 0 to T seconds (run.t_end)\n"
          "  --integrator NAME     cvode-bdf (default), cvode-adams, arkode-erk, arkode-dirk, rk4\n"
+         "  --linear-solver NAME  Newton systems of cvode-bdf and arkode-dirk: dense (finite-difference\n"
+         "                        Jacobian, LU), krylov (GMRES, O(N) preconditioner), auto (dense up\n"
+         "                        to 100 states; run.linear_solver)\n"
          "  --rtol X              relative tolerance of the adaptive integrators (run.rtol)\n"
          "  --atol X              absolute tolerance of the joint angles (run.atol); momenta get\n"
          "                        100 X, loop residuals X/100, regulator states 1e4 X\n"
@@ -35,7 +38,7 @@ std::vector<Override> overrides_from(const Args& args) {
   for (const std::string& s : args.all("--set")) overrides.push_back(parse_override(s));
   // The run flags are overrides of the run section, validated like the file.
   const std::pair<const char*, const char*> run_flags[] = {
-      {"--t-end", "t_end"}, {"--integrator", "integrator"}, {"--rtol", "rtol"},
+      {"--t-end", "t_end"}, {"--integrator", "integrator"}, {"--linear-solver", "linear_solver"}, {"--rtol", "rtol"},
       {"--atol", "atol"},   {"--dt", "dt"},                 {"--sample", "sample"}};
   for (const auto& [flag, key] : run_flags)
     if (const auto value = args.get(flag)) overrides.push_back({std::string("run.") + key, *value});

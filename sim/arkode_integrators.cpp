@@ -39,8 +39,15 @@ ArkodeIntegrator::ArkodeIntegrator(IntegratorKind kind, Dynamics& dynamics, cons
     check(ARKStepSetErrHandlerFn(mem_, sundials::capture_error, &last_error_), "ARKStepSetErrHandlerFn");
     check(ARKStepSVtolerances(mem_, settings.rtol, atol_), "ARKStepSVtolerances");
     check(ARKStepSetMaxNumSteps(mem_, -1), "ARKStepSetMaxNumSteps");
-    dense_.emplace(dynamics.size(), y_, ctx_);
-    check(ARKStepSetLinearSolver(mem_, dense_->LS, dense_->A), "ARKStepSetLinearSolver");
+    if (uses_krylov(settings, dynamics.size())) {
+      krylov_.emplace(y_, ctx_);
+      check(ARKStepSetLinearSolver(mem_, krylov_->LS, nullptr), "ARKStepSetLinearSolver");
+      check(ARKStepSetPreconditioner(mem_, sundials::precondition_setup, sundials::precondition_solve),
+            "ARKStepSetPreconditioner");
+    } else {
+      dense_.emplace(dynamics.size(), y_, ctx_);
+      check(ARKStepSetLinearSolver(mem_, dense_->LS, dense_->A), "ARKStepSetLinearSolver");
+    }
     if (n_roots > 0) {
       check(ARKStepRootInit(mem_, n_roots, sundials::switching), "ARKStepRootInit");
       check(ARKStepSetRootDirection(mem_, falling.data()), "ARKStepSetRootDirection");
@@ -137,7 +144,8 @@ SolverStats ArkodeIntegrator::segment_stats() const {
     long jac = 0, setups = 0, iters = 0, fails = 0;
     ARKStepGetNumSteps(mem_, &steps);
     ARKStepGetNumErrTestFails(mem_, &etf);
-    ARKStepGetNumJacEvals(mem_, &jac);
+    if (dense_) ARKStepGetNumJacEvals(mem_, &jac);
+    if (krylov_) ARKStepGetNumLinIters(mem_, &s.linear_iterations);
     ARKStepGetNumLinSolvSetups(mem_, &setups);
     ARKStepGetNumNonlinSolvIters(mem_, &iters);
     ARKStepGetNumNonlinSolvConvFails(mem_, &fails);

@@ -34,6 +34,7 @@ class ArkodeIntegrator : public Integrator {
   sundials::Vector atol_;
   sundials::Vector scratch_;
   std::optional<sundials::DenseSolver> dense_;
+  std::optional<sundials::KrylovSolver> krylov_;
   void* mem_ = nullptr;
   double t_stop_set_ = -1;
   double min_step_;

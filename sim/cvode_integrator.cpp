@@ -25,7 +25,12 @@ CvodeIntegrator::CvodeIntegrator(IntegratorKind kind, Dynamics& dynamics, const 
   check(CVodeSetErrHandlerFn(mem_, sundials::capture_error, &last_error_), "CVodeSetErrHandlerFn");
   check(CVodeSVtolerances(mem_, settings.rtol, atol_), "CVodeSVtolerances");
   check(CVodeSetMaxNumSteps(mem_, -1), "CVodeSetMaxNumSteps");
-  if (bdf) {
+  if (bdf && uses_krylov(settings, dynamics.size())) {
+    krylov_.emplace(y_, ctx_);
+    check(CVodeSetLinearSolver(mem_, krylov_->LS, nullptr), "CVodeSetLinearSolver");
+    check(CVodeSetPreconditioner(mem_, sundials::precondition_setup, sundials::precondition_solve),
+          "CVodeSetPreconditioner");
+  } else if (bdf) {
     dense_.emplace(dynamics.size(), y_, ctx_);
     check(CVodeSetLinearSolver(mem_, dense_->LS, dense_->A), "CVodeSetLinearSolver");
   } else {
@@ -114,6 +119,7 @@ SolverStats CvodeIntegrator::segment_stats() const {
   CVodeGetNumNonlinSolvConvFails(mem_, &fails);
   CVodeGetNumErrTestFails(mem_, &etf);
   if (dense_) CVodeGetNumJacEvals(mem_, &jac);
+  if (krylov_) CVodeGetNumLinIters(mem_, &s.linear_iterations);
   s.steps = steps;
   s.jacobian_evals = jac;
   s.linear_setups = setups;

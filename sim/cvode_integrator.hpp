@@ -33,6 +33,7 @@ class CvodeIntegrator : public Integrator {
   sundials::Vector atol_;
   sundials::Vector scratch_;
   std::optional<sundials::DenseSolver> dense_;
+  std::optional<sundials::KrylovSolver> krylov_;
   SUNNonlinearSolver fixed_point_ = nullptr;
   void* mem_ = nullptr;
   double t_stop_set_ = -1;

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "newton_preconditioner.hpp"
+
 namespace unfurl {
 
 namespace {
@@ -31,9 +33,16 @@ Dynamics::Dynamics(const Scene& scene)
     layout_.m = static_cast<int>(components.size());
     regulator_.emplace(scene_.model, scene_.loops, std::move(components), scene_.regulator);
     sweep_.set_configuration(scene_.q0.data());
-    regulator_->freeze_diagonal_gains(sweep_);
+    regulator_->calibrate(sweep_);
     lambda_.resize(layout_.m);
   }
+}
+
+Dynamics::~Dynamics() = default;
+
+NewtonPreconditioner& Dynamics::preconditioner() {
+  if (!preconditioner_) preconditioner_ = std::make_unique<NewtonPreconditioner>(*this);
+  return *preconditioner_;
 }
 
 std::vector<double> Dynamics::initial_state() {
@@ -103,7 +112,7 @@ bool Dynamics::evaluate(double, const double* y, double* ydot) {
   if (regulator_) {
     double* g_dot = ydot + L.g();
     regulator_->residual_rate(v_, g_dot);
-    regulator_->control(sweep_, y + L.g(), y + L.u(), g_dot, lambda_.data(), ydot + L.u());
+    if (!regulator_->control(sweep_, y + L.g(), y + L.u(), g_dot, lambda_.data(), ydot + L.u())) return false;
     regulator_->apply(lambda_.data(), F_);
   }
   sweep_.generalized_forces(F_, Q_.data());

@@ -8,6 +8,7 @@
 // rhs() allocates nothing.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "latch.hpp"
@@ -16,6 +17,8 @@
 #include "sweep.hpp"
 
 namespace unfurl {
+
+class NewtonPreconditioner;
 
 // Where each kind of state sits in the state vector.
 struct StateLayout {
@@ -51,6 +54,7 @@ struct Observation {
 class Dynamics {
  public:
   explicit Dynamics(const Scene& scene);
+  ~Dynamics();
   Dynamics(const Dynamics&) = delete;
   Dynamics& operator=(const Dynamics&) = delete;
 
@@ -73,6 +77,9 @@ class Dynamics {
   int latch_count() const { return static_cast<int>(scene_.latches.size()); }
   void switching_functions(const double* y, double* values) const;
 
+  // The implicit integrators' Krylov preconditioner, made on first use.
+  NewtonPreconditioner& preconditioner();
+
   // Derived quantities at a state.
   void observe(double t, const double* y, Observation& out);
 
@@ -85,6 +92,7 @@ class Dynamics {
   Sweep sweep_;
   std::optional<Regulator> regulator_;
   LatchState latch_state_;
+  std::unique_ptr<NewtonPreconditioner> preconditioner_;
   bool loads_need_poses_ = false;
   long rhs_calls_ = 0;
 

@@ -12,6 +12,7 @@ SolverStats& SolverStats::operator+=(const SolverStats& segment) {
   steps += segment.steps;
   jacobian_evals += segment.jacobian_evals;
   linear_setups += segment.linear_setups;
+  linear_iterations += segment.linear_iterations;
   nonlinear_iterations += segment.nonlinear_iterations;
   nonlinear_failures += segment.nonlinear_failures;
   error_test_failures += segment.error_test_failures;
@@ -31,6 +32,11 @@ std::vector<double> absolute_tolerances(const StateLayout& layout, double atol) 
     tol[layout.u() + k] = 1e4 * atol;
   }
   return tol;
+}
+
+bool uses_krylov(const RunSettings& settings, int state_size) {
+  return settings.linear_solver == LinearSolverKind::krylov ||
+         (settings.linear_solver == LinearSolverKind::automatic && state_size > kDenseStatesUpTo);
 }
 
 std::unique_ptr<Integrator> make_integrator(IntegratorKind kind, Dynamics& dynamics,

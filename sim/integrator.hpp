@@ -18,6 +18,7 @@ struct SolverStats {
   long steps = 0;
   long jacobian_evals = 0;
   long linear_setups = 0;
+  long linear_iterations = 0;  // Krylov iterations (0 for a direct solver)
   long nonlinear_iterations = 0;
   long nonlinear_failures = 0;
   long error_test_failures = 0;
@@ -55,6 +56,9 @@ class Integrator {
 // Absolute tolerances per state: atol for q, looser for p and u, tighter for
 // the residual states g (they are the quantities the regulator keeps small).
 std::vector<double> absolute_tolerances(const StateLayout& layout, double atol);
+
+// Whether an implicit integrator uses GMRES for this state size.
+bool uses_krylov(const RunSettings& settings, int state_size);
 
 std::unique_ptr<Integrator> make_integrator(IntegratorKind kind, Dynamics& dynamics,
                                             const RunSettings& settings, double t0,

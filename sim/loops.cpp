@@ -43,6 +43,23 @@ std::vector<LoopComponent> active_loop_components(const Model& model, const std:
   return active;
 }
 
+void residual_rate(const std::vector<Loop>& loops, const std::vector<LoopComponent>& components,
+                   const std::vector<Vec6>& v, double* g_dot) {
+  for (std::size_t c = 0; c < components.size(); ++c) {
+    const LoopComponent& lc = components[c];
+    g_dot[c] = v[loops[lc.loop].body][lc.axis] - v[loops[lc.loop].image][lc.axis];
+  }
+}
+
+void add_loop_forces(const std::vector<Loop>& loops, const std::vector<LoopComponent>& components,
+                     const double* lambda, double scale, std::vector<Vec6>& F) {
+  for (std::size_t c = 0; c < components.size(); ++c) {
+    const LoopComponent& lc = components[c];
+    F[loops[lc.loop].body][lc.axis] += scale * lambda[c];
+    F[loops[lc.loop].image][lc.axis] -= scale * lambda[c];
+  }
+}
+
 ClosureError closure_error(const Pose& body, const Pose& image) {
   const Eigen::AngleAxisd relative(image.rotation * body.rotation.transpose());
   return {(body.position - image.position).norm(), std::abs(relative.angle())};

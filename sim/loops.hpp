@@ -27,6 +27,15 @@ struct LoopComponent {
   int axis = 0;
 };
 
+// eps v on the active components, from body velocities (9).
+void residual_rate(const std::vector<Loop>& loops, const std::vector<LoopComponent>& components,
+                   const std::vector<Vec6>& v, double* g_dot);
+
+// Adds eps^T lambda to the body forces, scaled: +scale lambda_c on the body's
+// component, -scale lambda_c on the image's.
+void add_loop_forces(const std::vector<Loop>& loops, const std::vector<LoopComponent>& components,
+                     const double* lambda, double scale, std::vector<Vec6>& F);
+
 // The rows of eps T A that are not identically zero, found from the rows at
 // the initial coordinates and at random ones (sweep: scratch, any state).
 std::vector<LoopComponent> active_loop_components(const Model& model, const std::vector<Loop>& loops,

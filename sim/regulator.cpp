@@ -1,139 +1,78 @@
 #include "regulator.hpp"
 
-#include <algorithm>
 #include <limits>
-#include <stdexcept>
-#include <string>
 
 namespace unfurl {
 
-Regulator::Regulator(const Model& model, const std::vector<Loop>& loops,
-                     std::vector<LoopComponent> components, const RegulatorSettings& settings)
-    : model_(model),
-      loops_(loops),
+Regulator::Regulator(const Model& model, const std::vector<Loop>& loops, std::vector<LoopComponent> components,
+                     const RegulatorSettings& settings)
+    : loops_(loops),
       components_(std::move(components)),
       settings_(settings),
+      mobility_(model, loops_, components_),
       diagonal_W0_(Eigen::VectorXd::Ones(size())),
-      F_(model.size()),
-      phi_(model.size()),
-      v_(model.size()),
-      x_(model.nq),
-      dq_(model.nq) {
-  if (settings_.gains != GainTuning::full) return;
-  if (size() > kMaxFullGainComponents)
-    throw std::invalid_argument("the full-matrix regulator gains handle at most " +
-                                std::to_string(kMaxFullGainComponents) + " loop components; this scene has " +
-                                std::to_string(size()));
-  W_.resize(size(), size());
-  for (LoopVector* v : {&inverse_gain_, &strong_, &a_, &b_, &c_}) v->resize(size());
-  for (auto* blocks : {&loads_, &phi_m_, &v_m_}) blocks->assign(model.size(), LoopSpatial::Zero(6, size()));
-  x_m_.resize(model.nq, size());
-  dq_m_.resize(model.nq, size());
+      a_(size()),
+      b_(size()) {
+  if (settings_.gains == GainTuning::full)
+    solver_ = make_closure_solver(settings_.solver, model, loops_, components_);
 }
 
-void Regulator::mobility_column(Sweep& sweep, int c, double* column) {
-  // The residual rates eps v caused by the momentum J^T e_c =
-  // A^T T^T eps^T e_c on a body system at rest.
-  const Vec6 at_rest = Vec6::Zero();
-  for (Vec6& f : F_) f.setZero();
-  const LoopComponent& lc = components_[c];
-  F_[loops_[lc.loop].body][lc.axis] = 1;
-  F_[loops_[lc.loop].image][lc.axis] = -1;
-  sweep.generalized_forces(F_, x_.data());
-  sweep.bias(x_.data(), phi_);
-  sweep.velocities(x_.data(), phi_, at_rest, dq_.data(), v_);
-  residual_rate(v_, column);
-}
-
-const LoopMatrix& Regulator::mobility(Sweep& sweep) {
-  for (LoopSpatial& f : loads_) f.setZero();
-  for (int c = 0; c < size(); ++c) {
-    const LoopComponent& lc = components_[c];
-    loads_[loops_[lc.loop].body](lc.axis, c) = 1;
-    loads_[loops_[lc.loop].image](lc.axis, c) = -1;
+void Regulator::calibrate(const Sweep& sweep) {
+  if (settings_.gains == GainTuning::full) {
+    delta_ = settings_.regularization * mobility_.largest_eigenvalue(sweep);
+    return;
   }
-  sweep.force_pass(loads_, x_m_);
-  sweep.bias_pass(x_m_, phi_m_);
-  sweep.velocity_pass(x_m_, phi_m_, Vec6::Zero(), dq_m_, v_m_);
-  for (int r = 0; r < size(); ++r) {
-    const LoopComponent& lc = components_[r];
-    W_.row(r) = v_m_[loops_[lc.loop].body].row(lc.axis) - v_m_[loops_[lc.loop].image].row(lc.axis);
-  }
-  return W_;
-}
-
-void Regulator::freeze_diagonal_gains(Sweep& sweep) {
-  if (settings_.gains != GainTuning::paper) return;
-  std::vector<double> column(size());
+  Eigen::VectorXd unit = Eigen::VectorXd::Zero(size()), column(size());
   for (int c = 0; c < size(); ++c) {
-    mobility_column(sweep, c, column.data());
+    unit[c] = 1;
+    mobility_.product(sweep, unit.data(), column.data());
     diagonal_W0_[c] = column[c];
+    unit[c] = 0;
   }
 }
 
 void Regulator::residual_rate(const std::vector<Vec6>& v, double* g_dot) const {
-  for (int c = 0; c < size(); ++c) {
-    const LoopComponent& lc = components_[c];
-    g_dot[c] = v[loops_[lc.loop].body][lc.axis] - v[loops_[lc.loop].image][lc.axis];
-  }
+  unfurl::residual_rate(loops_, components_, v, g_dot);
 }
 
-void Regulator::full_gains(Sweep& sweep) {
-  eigen_.compute(mobility(sweep));
-  const auto& w = eigen_.eigenvalues();
-  const double floor =
-      settings_.eigen_floor * std::max(w(size() - 1), std::numeric_limits<double>::min());
-  for (int k = 0; k < size(); ++k) {
-    inverse_gain_(k) = 1.0 / std::max(w(k), floor);
-    strong_(k) = w(k) >= floor ? 1.0 : 0.0;
-  }
-}
-
-void Regulator::control(Sweep& sweep, const double* g, const double* u, const double* g_dot,
-                        double* lambda, double* u_dot) {
+bool Regulator::control(const Sweep& sweep, const double* g, const double* u, const double* g_dot, double* lambda,
+                        double* u_dot) {
   const double v = settings_.v_max, p0 = settings_.p0, p1 = settings_.p1;
   const double k_pi = p0 * v, k_v = 2 * p0 * p1;  // (16)
   const int m = size();
   Eigen::Map<const Eigen::VectorXd> g_(g, m), u_(u, m), gd_(g_dot, m);
   Eigen::Map<Eigen::VectorXd> lambda_(lambda, m), ud_(u_dot, m);
+  a_ = (v * v) * (g_ + u_) + ((p0 + 2 * p1) * v) * gd_;
+  b_ = k_pi * g_ + k_v * gd_;
   if (settings_.gains == GainTuning::paper) {
-    // C_j = v^2 / W_jj, D_j = (p0 + 2 p1) v / W_jj (16)
-    lambda_ = ((v * v) * (g_ + u_) + ((p0 + 2 * p1) * v) * gd_).cwiseQuotient(diagonal_W0_);
-    ud_ = k_pi * g_ + k_v * gd_;  // (13)
-    return;
+    // C_j = v^2 / W_jj, D_j = (p0 + 2 p1) v / W_jj (16), u' of (13)
+    lambda_ = a_.cwiseQuotient(diagonal_W0_);
+    ud_ = b_;
+    return true;
   }
-  full_gains(sweep);
-  const auto& V = eigen_.eigenvectors();
-  // In W's eigenbasis: a = V^T g, b = V^T u, c = V^T g'.
-  a_.noalias() = V.transpose() * g_;
-  b_.noalias() = V.transpose() * u_;
-  c_.noalias() = V.transpose() * gd_;
-  // C = v^2 W^-1, D = (p0 + 2 p1) v W^-1 on the floored spectrum; u only
-  // acts on the modes that keep an integral state.
-  b_ = (v * v) * (a_ + strong_.cwiseProduct(b_)) + ((p0 + 2 * p1) * v) * c_;
-  lambda_.noalias() = V * inverse_gain_.cwiseProduct(b_);
-  a_ = strong_.cwiseProduct(k_pi * a_ + k_v * c_);
-  ud_.noalias() = V * a_;
+  if (!solver_->factorize(sweep, delta_)) {
+    lambda_.setConstant(std::numeric_limits<double>::quiet_NaN());
+    return false;
+  }
+  solver_->solve(a_.data(), lambda);  // lambda = R^-1 (v^2 (g + u) + (p0 + 2 p1) v g')
+  solver_->solve(b_.data(), u_dot);   // u' = W R^-1 b = b - delta R^-1 b
+  ud_ = b_ - delta_ * ud_;
+  return true;
 }
 
 void Regulator::apply(const double* lambda, std::vector<Vec6>& F) const {
-  for (int c = 0; c < size(); ++c) {
-    const LoopComponent& lc = components_[c];
-    F[loops_[lc.loop].body][lc.axis] -= lambda[c];
-    F[loops_[lc.loop].image][lc.axis] += lambda[c];
-  }
+  add_loop_forces(loops_, components_, lambda, -1.0, F);
 }
 
-double Regulator::energy(Sweep& sweep, const double* g, const double* u) {
+double Regulator::energy(const Sweep& sweep, const double* g, const double* u) {
   const int m = size();
   const double v2 = settings_.v_max * settings_.v_max;
   Eigen::Map<const Eigen::VectorXd> g_(g, m), u_(u, m);
-  if (settings_.gains == GainTuning::paper)
-    return 0.5 * v2 * (g_ + u_).cwiseAbs2().cwiseQuotient(diagonal_W0_).sum();
-  full_gains(sweep);
-  const auto& V = eigen_.eigenvectors();
-  const LoopVector s = V.transpose() * g_ + strong_.cwiseProduct(V.transpose() * u_);
-  return 0.5 * v2 * s.cwiseAbs2().cwiseProduct(inverse_gain_).sum();
+  a_ = g_ + u_;
+  if (settings_.gains == GainTuning::paper) return 0.5 * v2 * a_.cwiseAbs2().cwiseQuotient(diagonal_W0_).sum();
+  if (!solver_->factorize(sweep, delta_)) return std::numeric_limits<double>::quiet_NaN();
+  solver_->solve(a_.data(), b_.data());
+  return 0.5 * v2 * a_.dot(b_);
 }
 
 }  // namespace unfurl

@@ -16,6 +16,13 @@ namespace unfurl {
 
 enum class IntegratorKind { cvode_bdf, cvode_adams, arkode_erk, arkode_dirk, rk4 };
 
+// How the implicit integrators solve their Newton systems: a dense
+// finite-difference Jacobian and LU (O(n^3) per setup), or GMRES with an
+// O(N) preconditioner (newton_preconditioner.hpp). automatic: dense up to
+// kDenseStatesUpTo states.
+enum class LinearSolverKind { automatic, dense, krylov };
+inline constexpr int kDenseStatesUpTo = 100;
+
 const char* integrator_name(IntegratorKind kind);
 // Parses "cvode-bdf" etc.; nullopt for an unknown name.
 std::optional<IntegratorKind> parse_integrator(const std::string& name);
@@ -26,6 +33,7 @@ struct RunSettings {
   IntegratorKind integrator = IntegratorKind::cvode_bdf;
   double rtol = 1e-8;
   double atol = 1e-10;  // for q; see tolerances.hpp for the other states
+  LinearSolverKind linear_solver = LinearSolverKind::automatic;
   double dt = 1e-4;     // step of the fixed-step RK4
   double sample = 0.01; // output interval
   long max_steps = 50'000'000;

@@ -446,7 +446,7 @@ void SceneReader::read_loops(const YAML::Node& list, Scene& scene) {
 }
 
 void SceneReader::read_regulator(const YAML::Node& node, Scene& scene) const {
-  check_keys(node, {"gains", "v_max", "p0", "p1", "eigen_floor"}, "regulator");
+  check_keys(node, {"gains", "v_max", "p0", "p1", "regularization", "solver"}, "regulator");
   RegulatorSettings& r = scene.regulator;
   if (const YAML::Node gains = node["gains"]) {
     const std::string g = text(gains, "regulator.gains");
@@ -460,7 +460,18 @@ void SceneReader::read_regulator(const YAML::Node& node, Scene& scene) const {
   if (node["v_max"]) r.v_max = positive(node["v_max"], "regulator.v_max");
   if (node["p0"]) r.p0 = positive(node["p0"], "regulator.p0");
   if (node["p1"]) r.p1 = positive(node["p1"], "regulator.p1");
-  if (node["eigen_floor"]) r.eigen_floor = positive(node["eigen_floor"], "regulator.eigen_floor");
+  if (node["regularization"]) r.regularization = positive(node["regularization"], "regulator.regularization");
+  if (const YAML::Node solver = node["solver"]) {
+    const std::string name = text(solver, "regulator.solver");
+    if (name == "auto")
+      r.solver = ClosureSolverKind::automatic;
+    else if (name == "dense")
+      r.solver = ClosureSolverKind::dense;
+    else if (name == "sparse")
+      r.solver = ClosureSolverKind::sparse;
+    else
+      fail(solver, "regulator.solver", "expected 'auto', 'dense' or 'sparse', got '" + name + "'");
+  }
   if (r.p1 >= 1) fail(node["p1"], "regulator.p1", "must be below 1 (b1 = p1 v_max < v_max)");
 }
 
@@ -484,7 +495,8 @@ void SceneReader::read_initial(const YAML::Node& node, Scene& scene) const {
 }
 
 void SceneReader::read_run(const YAML::Node& node, RunSettings& run) const {
-  check_keys(node, {"t_end", "integrator", "rtol", "atol", "dt", "sample", "max_closure", "max_steps"}, "run");
+  check_keys(node, {"t_end", "integrator", "linear_solver", "rtol", "atol", "dt", "sample", "max_closure", "max_steps"},
+             "run");
   if (node["t_end"]) run.t_end = positive(node["t_end"], "run.t_end");
   if (const YAML::Node integrator = node["integrator"]) {
     const auto kind = parse_integrator(text(integrator, "run.integrator"));
@@ -493,6 +505,17 @@ void SceneReader::read_run(const YAML::Node& node, RunSettings& run) const {
            "unknown integrator '" + integrator.Scalar() +
                "' (expected cvode-bdf, cvode-adams, arkode-erk, arkode-dirk or rk4)");
     run.integrator = *kind;
+  }
+  if (const YAML::Node solver = node["linear_solver"]) {
+    const std::string name = text(solver, "run.linear_solver");
+    if (name == "auto")
+      run.linear_solver = LinearSolverKind::automatic;
+    else if (name == "dense")
+      run.linear_solver = LinearSolverKind::dense;
+    else if (name == "krylov")
+      run.linear_solver = LinearSolverKind::krylov;
+    else
+      fail(solver, "run.linear_solver", "expected 'auto', 'dense' or 'krylov', got '" + name + "'");
   }
   if (node["rtol"]) run.rtol = positive(node["rtol"], "run.rtol");
   if (node["atol"]) run.atol = positive(node["atol"], "run.atol");

@@ -1,9 +1,12 @@
 #include "sundials_support.hpp"
 
 #include <sunlinsol/sunlinsol_dense.h>
+#include <sunlinsol/sunlinsol_spgmr.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
 #include <stdexcept>
+
+#include "newton_preconditioner.hpp"
 
 namespace unfurl::sundials {
 
@@ -33,6 +36,24 @@ DenseSolver::DenseSolver(int n, N_Vector y, SUNContext ctx)
 DenseSolver::~DenseSolver() {
   SUNLinSolFree(LS);
   SUNMatDestroy(A);
+}
+
+KrylovSolver::KrylovSolver(N_Vector y, SUNContext ctx) : LS(SUNLinSol_SPGMR(y, SUN_PREC_LEFT, 0, ctx)) {
+  check_ptr(LS, "SUNLinSol_SPGMR");
+}
+KrylovSolver::~KrylovSolver() { SUNLinSolFree(LS); }
+
+int precondition_setup(double, N_Vector y, N_Vector, int, int* jcur, double gamma, void* dynamics) {
+  // The preconditioner is rebuilt from the current state each time: it
+  // costs one pass of the sweep.
+  static_cast<Dynamics*>(dynamics)->preconditioner().setup(N_VGetArrayPointer(y), gamma);
+  *jcur = 1;
+  return 0;
+}
+
+int precondition_solve(double, N_Vector, N_Vector, N_Vector r, N_Vector z, double, double, int, void* dynamics) {
+  static_cast<Dynamics*>(dynamics)->preconditioner().solve(N_VGetArrayPointer(r), N_VGetArrayPointer(z));
+  return 0;
 }
 
 int rhs(double t, N_Vector y, N_Vector ydot, void* dynamics) {

@@ -54,9 +54,21 @@ struct DenseSolver {
   SUNLinearSolver LS = nullptr;
 };
 
+// GMRES with left preconditioning by the Dynamics' NewtonPreconditioner.
+struct KrylovSolver {
+  KrylovSolver(N_Vector y, SUNContext ctx);
+  ~KrylovSolver();
+  KrylovSolver(const KrylovSolver&) = delete;
+  KrylovSolver& operator=(const KrylovSolver&) = delete;
+  SUNLinearSolver LS = nullptr;
+};
+
 // Callbacks, with the Dynamics as user data.
 int rhs(double t, N_Vector y, N_Vector ydot, void* dynamics);
 int switching(double t, N_Vector y, double* values, void* dynamics);
+int precondition_setup(double t, N_Vector y, N_Vector fy, int jok, int* jcur, double gamma, void* dynamics);
+int precondition_solve(double t, N_Vector y, N_Vector fy, N_Vector r, N_Vector z, double gamma, double delta, int lr,
+                       void* dynamics);
 
 // Keeps the library's last error message for the failure report instead of
 // letting it print.

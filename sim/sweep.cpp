@@ -16,7 +16,7 @@ Sweep::Sweep(const Model& model)
   }
 }
 
-void Sweep::set_configuration(const double* q) {
+void Sweep::set_configuration(const double* q, const double* joint_diagonal) {
   const int N = model_.size();
   for (int i = 0; i < N; ++i) {
     const int c = model_.coordinate[i];
@@ -25,9 +25,9 @@ void Sweep::set_configuration(const double* q) {
   }
   for (int i = N - 1; i >= 0; --i) {
     Mat6 HM = M_star_[i];  // H_i M*_i
-    if (model_.coordinate[i] >= 0) {
+    if (const int c = model_.coordinate[i]; c >= 0) {
       M_star_A_[i] = M_star_[i] * A_[i];
-      D_[i] = 1.0 / A_[i].dot(M_star_A_[i]);
+      D_[i] = 1.0 / (A_[i].dot(M_star_A_[i]) + (joint_diagonal ? joint_diagonal[c] : 0.0));
       HM.noalias() -= D_[i] * M_star_A_[i] * M_star_A_[i].transpose();
     }
     const int k = model_.parent[i];

@@ -20,7 +20,10 @@ class Sweep {
 
   // Joint placements X_i = (G_i, rho_i) and the articulated quantities
   // M*_i, D_i, M*_i A_i of the first backward pass (they depend on q only).
-  void set_configuration(const double* q);
+  // With joint_diagonal (one value per coordinate, k_c), the passes solve
+  // with Mtilde + diag(k) instead: D_i = (A_i^T M*_i A_i + k_i)^-1, as a
+  // joint's armature enters the articulated inertia.
+  void set_configuration(const double* q, const double* joint_diagonal = nullptr);
 
   // phi*_i of the first backward pass for momenta p (v*_i = 0).
   void bias(const double* p, std::vector<Vec6>& phi) const { bias_pass(coordinates(p), phi); }

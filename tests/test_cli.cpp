@@ -156,6 +156,21 @@ TEST(Cli, HelpDocumentsEveryFlag) {
     EXPECT_NE(o.output.find(flag), std::string::npos) << flag;
 }
 
+TEST(Cli, GenerateWritesASceneThatSimulates) {
+  const fs::path dir = temp_dir();
+  const fs::path file = dir / "pantograph_5.yaml";
+  ASSERT_EQ(run("generate pantograph --stages 5 -o " + file.string()).code, 0);
+  const Scene scene = load_scene_file(file.string());
+  EXPECT_EQ(scene.loops.size(), 5u);
+  EXPECT_EQ(scene.model.size(), 17);
+  const Outcome sim = run("simulate " + file.string() + " --t-end 0.2 --quiet --out " + (dir / "p5").string());
+  EXPECT_EQ(sim.code, 0) << sim.output;
+  EXPECT_TRUE(fs::exists(dir / "p5" / "summary.json"));
+  const Outcome bad = run("generate zfold --panels 0");
+  EXPECT_EQ(bad.code, 64);
+  EXPECT_NE(bad.output.find("--panels"), std::string::npos) << bad.output;
+}
+
 TEST(Cli, SolverFailureReportsWhereAndKeepsResults) {
   // RK4 with a step far beyond the regulator's stability limit diverges.
   const fs::path dir = temp_dir() / "fail";

@@ -78,6 +78,27 @@ TEST_F(Pantograph, LoopsStayClosedOverTheWholeRun) {
   EXPECT_LT(s.max_closure_rad, 1e-5);
 }
 
+// The same deployment by another way to the same equations: latch times
+// and the largest closure error agree to within the tolerances.
+void expect_same_deployment(const RunResult& a, const RunResult& b, const Scene& scene) {
+  ASSERT_EQ(b.status, RunStatus::finished) << describe(b.failure);
+  ASSERT_EQ(a.trajectory.events.size(), b.trajectory.events.size());
+  for (std::size_t k = 0; k < a.trajectory.events.size(); ++k)
+    EXPECT_NEAR(a.trajectory.events[k].t, b.trajectory.events[k].t, 1e-6);
+  EXPECT_LT(summarize(scene, b).max_closure_m, 1e-6);
+  EXPECT_LT(summarize(scene, b).max_loop_residual_before_latch, 1e-6);
+}
+
+TEST_F(Pantograph, SparseGainSolverGivesTheSameDeployment) {
+  const Scene sparse = test::scene_file("pantograph", {{"regulator.solver", "sparse"}});
+  expect_same_deployment(run(), simulate(sparse, sparse.run), sparse);
+}
+
+TEST_F(Pantograph, KrylovNewtonSolverGivesTheSameDeployment) {
+  const Scene krylov = test::scene_file("pantograph", {{"run.linear_solver", "krylov"}});
+  expect_same_deployment(run(), simulate(krylov, krylov.run), krylov);
+}
+
 // The one-degree-of-freedom reduction of SCENES.md, written from the
 // geometry alone: on the lazy-tongs path q_i = c_i a with
 // c = (-1, 2, -2, 2, 1, -2, 2, -2), each physical body turns by an absolute

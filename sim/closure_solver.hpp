@@ -1,0 +1,44 @@
+// Solves with R = W + delta I, W the loop components' mobility (mobility.hpp)
+// at the sweep's configuration: the one linear algebra the full-matrix
+// regulator gains need. Two ways to the same numbers:
+// - dense: W from m batched passes of the sweep, then a Cholesky of R.
+//   O(N m + m^3), allocation-free; the fastest for a few loops.
+// - sparse: R^-1 b read off the loop-closure system over the primary graph
+//   (body velocities, joint reactions, loop forces), factored by a sparse
+//   LDL^T. O(N) for mechanisms whose loops are chained (a ladder such as the
+//   pantograph), whatever the number of loops. Eigen's factorization
+//   allocates its work space on each call.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "loops.hpp"
+#include "sweep.hpp"
+
+namespace unfurl {
+
+enum class ClosureSolverKind { automatic, dense, sparse };
+
+class ClosureSolver {
+ public:
+  virtual ~ClosureSolver() = default;
+  // Factors R at the sweep's configuration. False if it could not.
+  virtual bool factorize(const Sweep& sweep, double delta) = 0;
+  // x = R^-1 b for the last factorization (x and b distinct).
+  virtual void solve(const double* b, double* x) = 0;
+};
+
+// The dense solver up to kMaxDenseComponents components (automatic: up to
+// kDenseUpTo), else the sparse one.
+inline constexpr int kDenseUpTo = 24;
+std::unique_ptr<ClosureSolver> make_closure_solver(ClosureSolverKind kind, const Model& model,
+                                                   const std::vector<Loop>& loops,
+                                                   const std::vector<LoopComponent>& components);
+
+std::unique_ptr<ClosureSolver> make_dense_closure_solver(const Model& model, const std::vector<Loop>& loops,
+                                                         const std::vector<LoopComponent>& components);
+std::unique_ptr<ClosureSolver> make_sparse_closure_solver(const Model& model, const std::vector<Loop>& loops,
+                                                          const std::vector<LoopComponent>& components);
+
+}  // namespace unfurl

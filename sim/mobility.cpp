@@ -1,0 +1,68 @@
+#include "mobility.hpp"
+
+#include <cmath>
+
+namespace unfurl {
+
+Mobility::Mobility(const Model& model, const std::vector<Loop>& loops, const std::vector<LoopComponent>& components)
+    : loops_(loops),
+      components_(components),
+      F_(model.size()),
+      phi_(model.size()),
+      v_(model.size()),
+      x_(model.nq),
+      dq_(model.nq) {
+  if (size() > kMaxDenseComponents) return;
+  W_.resize(size(), size());
+  for (auto* blocks : {&loads_, &phi_m_, &v_m_}) blocks->assign(model.size(), Spatial::Zero(6, size()));
+  x_m_.resize(model.nq, size());
+  dq_m_.resize(model.nq, size());
+}
+
+void Mobility::product(const Sweep& sweep, const double* x, double* Wx) {
+  // The momentum J^T x = A^T T^T eps^T x given to the system at rest, and
+  // the residual rates it causes.
+  for (Vec6& f : F_) f.setZero();
+  add_loop_forces(loops_, components_, x, 1.0, F_);
+  sweep.force_pass(F_, x_);
+  sweep.bias_pass(x_, phi_);
+  sweep.velocity_pass(x_, phi_, Vec6::Zero(), dq_, v_);
+  residual_rate(loops_, components_, v_, Wx);
+}
+
+const LoopMatrix& Mobility::matrix(const Sweep& sweep) {
+  for (Spatial& f : loads_) f.setZero();
+  for (int c = 0; c < size(); ++c) {
+    const LoopComponent& lc = components_[c];
+    loads_[loops_[lc.loop].body](lc.axis, c) = 1;
+    loads_[loops_[lc.loop].image](lc.axis, c) = -1;
+  }
+  sweep.force_pass(loads_, x_m_);
+  sweep.bias_pass(x_m_, phi_m_);
+  sweep.velocity_pass(x_m_, phi_m_, Vec6::Zero(), dq_m_, v_m_);
+  for (int r = 0; r < size(); ++r) {
+    const LoopComponent& lc = components_[r];
+    W_.row(r) = v_m_[loops_[lc.loop].body].row(lc.axis) - v_m_[loops_[lc.loop].image].row(lc.axis);
+  }
+  return W_;
+}
+
+double Mobility::largest_eigenvalue(const Sweep& sweep) {
+  // W is symmetric positive semidefinite: the Rayleigh quotient of the
+  // iterates rises to the largest eigenvalue. A fixed start keeps it
+  // deterministic; it only sets a scale, so a few digits suffice.
+  Eigen::VectorXd x = Eigen::VectorXd::Ones(size()).normalized(), Wx(size());
+  double lambda = 0;
+  for (int k = 0; k < 200; ++k) {
+    product(sweep, x.data(), Wx.data());
+    const double next = x.dot(Wx);
+    const double norm = Wx.norm();
+    if (norm == 0) return 0;
+    x = Wx / norm;
+    if (k > 10 && std::abs(next - lambda) <= 1e-6 * next) return next;
+    lambda = next;
+  }
+  return lambda;
+}
+
+}  // namespace unfurl

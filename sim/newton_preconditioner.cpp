@@ -1,0 +1,67 @@
+#include "newton_preconditioner.hpp"
+
+#include "dynamics.hpp"
+
+namespace unfurl {
+
+NewtonPreconditioner::NewtonPreconditioner(Dynamics& dynamics)
+    : dynamics_(dynamics),
+      sweep_(dynamics.model()),
+      stiffness_(dynamics.model().nq),
+      damping_(dynamics.model().nq),
+      diagonal_(dynamics.model().nq),
+      r_(dynamics.model().nq),
+      x_(dynamics.model().nq),
+      g_dot_(dynamics.layout().m),
+      phi_(dynamics.model().size()),
+      v_(dynamics.model().size()) {}
+
+void NewtonPreconditioner::setup(const double* y, double gamma) {
+  const Scene& scene = dynamics_.scene();
+  const Model& model = scene.model;
+  gamma_ = gamma;
+  std::fill(stiffness_.begin(), stiffness_.end(), 0.0);
+  std::fill(damping_.begin(), damping_.end(), 0.0);
+  for (const JointSpring& s : scene.springs) {
+    stiffness_[model.coordinate[s.joint]] += s.stiffness;
+    damping_[model.coordinate[s.joint]] += s.damping;
+  }
+  for (int l = 0; l < dynamics_.latch_count(); ++l) {
+    if (!dynamics_.latch_state().engaged(l)) continue;
+    const Latch& latch = scene.latches[l];
+    stiffness_[model.coordinate[latch.joint]] += latch.stiffness;
+    damping_[model.coordinate[latch.joint]] += latch.damping;
+  }
+  for (int c = 0; c < model.nq; ++c) diagonal_[c] = gamma * damping_[c] + gamma * gamma * stiffness_[c];
+  sweep_.set_configuration(y + dynamics_.layout().q(), diagonal_.data());
+}
+
+void NewtonPreconditioner::solve(const double* r, double* z) {
+  const StateLayout& L = dynamics_.layout();
+  const double gamma = gamma_;
+  const double* rq = r + L.q();
+  const double* rp = r + L.p();
+  double* zq = z + L.q();
+  double* zp = z + L.p();
+  // (Mtilde + gamma D + gamma^2 K) x = rp - gamma K rq, then back-substitute.
+  for (int c = 0; c < L.nq; ++c) r_[c] = rp[c] - gamma * stiffness_[c] * rq[c];
+  Eigen::Map<const Eigen::VectorXd> r_map(r_.data(), L.nq);
+  Eigen::Map<Eigen::VectorXd> x_map(x_.data(), L.nq);
+  sweep_.bias_pass(r_map, phi_);
+  sweep_.velocity_pass(r_map, phi_, Vec6::Zero(), x_map, v_);
+  for (int c = 0; c < L.nq; ++c) {
+    zq[c] = rq[c] + gamma * x_[c];
+    zp[c] = rp[c] - gamma * (stiffness_[c] * zq[c] + damping_[c] * x_[c]);
+  }
+  Regulator* regulator = dynamics_.regulator();
+  if (!regulator) return;
+  const RegulatorSettings& s = regulator->settings();
+  const double k_pi = s.p0 * s.v_max, k_v = 2 * s.p0 * s.p1;  // (16)
+  regulator->residual_rate(v_, g_dot_.data());
+  for (int c = 0; c < L.m; ++c) {
+    z[L.g() + c] = r[L.g() + c] + gamma * g_dot_[c];
+    z[L.u() + c] = r[L.u() + c] + gamma * (k_pi * z[L.g() + c] + k_v * g_dot_[c]);
+  }
+}
+
+}  // namespace unfurl

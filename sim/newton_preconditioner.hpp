@@ -1,0 +1,45 @@
+// An O(N) approximate inverse of the implicit integrators' Newton matrix
+// I - gamma df/dy, for their Krylov (GMRES) linear solver: with it a step
+// costs a few right-hand sides and sweeps instead of a dense Jacobian of
+// n right-hand sides and an O(n^3) factorization.
+//
+// It solves the linear model in which the joints' springs, dampers and
+// engaged latches are the stiff terms and the mass matrix is frozen:
+//   q' = x,  Mtilde x = p,  p' = -K q - D x,  g' = eps v(x),
+//   u' = k_pi g + k_v g'   (the full tuning's W R^-1 taken as I),
+// by one pass of the sweep with Mtilde + gamma D + gamma^2 K (the joint
+// terms enter the articulated inertia like armature). The loop forces are
+// left to the Krylov iterations: the full-matrix gains put every strong
+// residual mode on the same cubic, so they form a tight cluster GMRES
+// resolves in a few iterations.
+#pragma once
+
+#include <vector>
+
+#include "sweep.hpp"
+
+namespace unfurl {
+
+class Dynamics;
+
+class NewtonPreconditioner {
+ public:
+  explicit NewtonPreconditioner(Dynamics& dynamics);
+
+  // Linearizes at the state y (its q) for the Newton matrix I - gamma J.
+  void setup(const double* y, double gamma);
+  // z = P^-1 r with the last setup.
+  void solve(const double* r, double* z);
+
+ private:
+  Dynamics& dynamics_;
+  Sweep sweep_;
+  double gamma_ = 0;
+  std::vector<double> stiffness_, damping_, diagonal_;  // per coordinate
+
+  // Scratch, sized once.
+  std::vector<double> r_, x_, g_dot_;
+  std::vector<Vec6> phi_, v_;
+};
+
+}  // namespace unfurl
