@@ -19,6 +19,7 @@
 #include "scene_options.hpp"
 #include "simulation.hpp"
 #include "trajectory_csv.hpp"
+#include "plot_renderer.hpp"
 #include "trajectory_plots.hpp"
 #include "video_pipe.hpp"
 
@@ -129,12 +130,14 @@ int command_render(const std::vector<std::string>& argv) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   std::vector<std::string> plots;
-  if (args.has("--plots"))
+  if (args.has("--plots")) {
+    render::PlotRenderer plotter(options.width, options.height);
     for (const render::NamedPlot& p : render::trajectory_plots(scene, trajectory)) {
-      renderer.plot(p.spec, image);
+      plotter.draw(p.spec, image);
       write_png(image, dir + "/" + p.file, 6);
       plots.push_back(dir + "/" + p.file);
     }
+  }
 
   if (!quiet) {
     std::printf("scene        %s (%s)\n", scene.name.c_str(), scene.source.c_str());

@@ -34,17 +34,4 @@ void FrameRenderer::frame(const std::vector<Pose>& poses, double t, const Camera
   framebuffer_.read(out);
 }
 
-PlotFrame FrameRenderer::plot(const PlotSpec& spec, Image& out) {
-  framebuffer_.bind();
-  glClearColor(1, 1, 1, 1);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  imgui_.begin_frame(width(), height());
-  const PlotFrame frame = draw_plot(imgui_.draw_list(), ImVec2(0, 0),
-                                    ImVec2(static_cast<float>(width()), static_cast<float>(height())), spec, true);
-  imgui_.end_frame();
-  framebuffer_.resolve();
-  framebuffer_.read(out);
-  return frame;
-}
-
 }  // namespace unfurl::render

@@ -1,5 +1,5 @@
-// Pictures of a scene: 3D frames with the overlay (scene name, time) and
-// plots, drawn into an offscreen framebuffer and read back. One per GL
+// Pictures of a scene: 3D frames with the overlay (scene name, time), drawn
+// into an offscreen framebuffer and read back. One per GL
 // context; the context must be current.
 #pragma once
 
@@ -10,7 +10,6 @@
 #include "framebuffer.hpp"
 #include "imgui_layer.hpp"
 #include "mesh_library.hpp"
-#include "plot.hpp"
 #include "scene_view.hpp"
 
 namespace unfurl::render {
@@ -26,8 +25,6 @@ class FrameRenderer {
 
   // The scene at these poses, labelled with the scene name and time.
   void frame(const std::vector<Pose>& poses, double t, const Camera& camera, Image& out);
-  // A plot filling the whole picture, on white; returns where its axes are.
-  PlotFrame plot(const PlotSpec& spec, Image& out);
 
  private:
   std::string scene_name_;

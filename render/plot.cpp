@@ -32,8 +32,14 @@ std::string tick_label(double v, bool log_axis) {
   return buf;
 }
 
-double transform_y(double y, bool log_y) {
-  return log_y ? std::log10(std::max(y, std::numeric_limits<double>::min())) : y;
+// A value as placed on its axis: log10 on a log axis.
+double axis_value(double v, bool log_axis) {
+  return log_axis ? std::log10(std::max(v, std::numeric_limits<double>::min())) : v;
+}
+
+// A point the axes can show: finite, and positive on a log axis.
+bool plottable(double x, double y, bool log_x, bool log_y) {
+  return std::isfinite(x) && std::isfinite(y) && !(log_x && x <= 0) && !(log_y && y <= 0);
 }
 
 void dashed_line(ImDrawList* draw, ImVec2 a, ImVec2 b, ImU32 color, float thickness, float dash) {
@@ -47,7 +53,7 @@ void dashed_line(ImDrawList* draw, ImVec2 a, ImVec2 b, ImU32 color, float thickn
 
 // The series on screen, at most a minimum and a maximum per pixel column:
 // long runs draw as fast as short ones and keep their peaks.
-void screen_points(const PlotFrame& f, const Series& s, bool log_y, std::vector<ImVec2>& out) {
+void screen_points(const PlotFrame& f, const Series& s, std::vector<ImVec2>& out) {
   out.clear();
   int column = std::numeric_limits<int>::min();
   ImVec2 first, last, top, bottom;  // of the samples in the current column
@@ -66,7 +72,7 @@ void screen_points(const PlotFrame& f, const Series& s, bool log_y, std::vector<
     out.push_back(last);
   };
   for (std::size_t k = 0; k < s.x.size(); ++k) {
-    if (!std::isfinite(s.y[k]) || (log_y && s.y[k] <= 0)) continue;
+    if (!plottable(s.x[k], s.y[k], f.log_x, f.log_y)) continue;
     const ImVec2 p = f.to_screen(s.x[k], s.y[k]);
     const int c = static_cast<int>(std::floor(p.x));
     if (c != column) {
@@ -123,20 +129,22 @@ std::vector<double> decade_ticks(double lo_exp, double hi_exp, int target_count)
 }
 
 ImVec2 PlotFrame::to_screen(double x, double y) const {
-  const double ty = log_y ? std::log10(std::max(y, std::numeric_limits<double>::min())) : y;
-  const double fx = (x - x_min) / (x_max - x_min), fy = (ty - y_min) / (y_max - y_min);
+  const double fx = (axis_value(x, log_x) - x_min) / (x_max - x_min);
+  const double fy = (axis_value(y, log_y) - y_min) / (y_max - y_min);
   return ImVec2(plot_min.x + static_cast<float>(fx) * (plot_max.x - plot_min.x),
                 plot_max.y - static_cast<float>(fy) * (plot_max.y - plot_min.y));
 }
 
 double PlotFrame::x_at(float screen_x) const {
-  return x_min + (screen_x - plot_min.x) / (plot_max.x - plot_min.x) * (x_max - x_min);
+  const double x = x_min + (screen_x - plot_min.x) / (plot_max.x - plot_min.x) * (x_max - x_min);
+  return log_x ? std::pow(10.0, x) : x;
 }
 
 PlotFrame draw_plot(ImDrawList* draw, ImVec2 origin, ImVec2 size, const PlotSpec& spec, bool light) {
   const Theme th = theme(light);
   const float font = ImGui::GetFontSize();
   PlotFrame f;
+  f.log_x = spec.log_x;
   f.log_y = spec.log_y;
   f.plot_min = ImVec2(origin.x + 5.0f * font, origin.y + 2.2f * font);
   f.plot_max = ImVec2(origin.x + size.x - 1.2f * font, origin.y + size.y - 3.0f * font);
@@ -146,13 +154,18 @@ PlotFrame draw_plot(ImDrawList* draw, ImVec2 origin, ImVec2 size, const PlotSpec
   double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
   for (const Series& s : spec.series)
     for (std::size_t k = 0; k < s.x.size(); ++k) {
-      const double y = transform_y(s.y[k], spec.log_y);
-      if (!std::isfinite(y) || (spec.log_y && s.y[k] <= 0)) continue;
-      x0 = std::min(x0, s.x[k]), x1 = std::max(x1, s.x[k]);
+      if (!plottable(s.x[k], s.y[k], spec.log_x, spec.log_y)) continue;
+      const double x = axis_value(s.x[k], spec.log_x), y = axis_value(s.y[k], spec.log_y);
+      x0 = std::min(x0, x), x1 = std::max(x1, x);
       y0 = std::min(y0, y), y1 = std::max(y1, y);
     }
   if (!std::isfinite(x0)) x0 = 0, x1 = 1, y0 = 0, y1 = 1;
-  if (x1 <= x0) x1 = x0 + 1;
+  if (spec.log_x) {
+    x0 = std::floor(x0), x1 = std::ceil(x1);
+    if (x1 <= x0) x1 = x0 + 1;
+  } else if (x1 <= x0) {
+    x1 = x0 + 1;
+  }
   if (spec.log_y) {
     y0 = std::floor(y0), y1 = std::ceil(y1);
     if (y1 <= y0) y1 = y0 + 1;
@@ -166,12 +179,12 @@ PlotFrame draw_plot(ImDrawList* draw, ImVec2 origin, ImVec2 size, const PlotSpec
   // As many ticks as the axes have room for.
   const int x_room = std::max(2, static_cast<int>((f.plot_max.x - f.plot_min.x) / (6 * font)));
   const int y_room = std::max(2, static_cast<int>((f.plot_max.y - f.plot_min.y) / (2.5f * font)));
-  const std::vector<double> xt = nice_ticks(x0, x1, std::min(8, x_room));
+  const std::vector<double> xt = spec.log_x ? decade_ticks(x0, x1, x_room) : nice_ticks(x0, x1, std::min(8, x_room));
   const std::vector<double> yt = spec.log_y ? decade_ticks(y0, y1, y_room) : nice_ticks(y0, y1, std::min(6, y_room));
   for (double x : xt) {
-    const float sx = f.to_screen(x, spec.log_y ? 1 : y0).x;
+    const float sx = f.plot_min.x + static_cast<float>((x - x0) / (x1 - x0)) * (f.plot_max.x - f.plot_min.x);
     draw->AddLine(ImVec2(sx, f.plot_min.y), ImVec2(sx, f.plot_max.y), th.grid);
-    const std::string label = tick_label(x, false);
+    const std::string label = tick_label(x, spec.log_x);
     const ImVec2 ts = ImGui::CalcTextSize(label.c_str());
     draw->AddText(ImVec2(sx - ts.x / 2, f.plot_max.y + 0.3f * font), th.text, label.c_str());
   }
@@ -200,9 +213,12 @@ PlotFrame draw_plot(ImDrawList* draw, ImVec2 origin, ImVec2 size, const PlotSpec
   for (int ghost = 1; ghost >= 0; --ghost)
     for (const Series& s : spec.series) {
       if (s.ghost != (ghost == 1)) continue;
-      screen_points(f, s, spec.log_y, points);
-      if (points.size() < 2) continue;
+      screen_points(f, s, points);
       const ImU32 color = s.ghost ? (s.color & 0x00FFFFFF) | 0x60000000 : s.color;
+      if (s.markers)
+        for (std::size_t k = 0; k < s.x.size(); ++k)
+          if (plottable(s.x[k], s.y[k], f.log_x, f.log_y)) draw->AddCircleFilled(f.to_screen(s.x[k], s.y[k]), 0.3f * font, color);
+      if (points.size() < 2) continue;
       draw->AddPolyline(points.data(), static_cast<int>(points.size()), color, ImDrawFlags_None, s.ghost ? 1.5f : 2.0f);
     }
   if (spec.cursor) {

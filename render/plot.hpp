@@ -16,12 +16,13 @@ struct Series {
   std::vector<double> x, y;
   ImU32 color = IM_COL32(255, 255, 255, 255);
   bool ghost = false;  // a previous run, drawn faint and dashed, not in the legend
+  bool markers = false;  // a dot at every point (a few measured points, not a signal)
 };
 
 struct PlotSpec {
   std::string title, x_label, y_label;
   std::vector<Series> series;
-  bool log_y = false;
+  bool log_x = false, log_y = false;
   std::vector<double> events;    // x of vertical markers (latches)
   std::string event_label = "latch";
   std::optional<double> cursor;  // x of the play-head
@@ -30,8 +31,8 @@ struct PlotSpec {
 // Where the data went on screen: for hit tests (hover values) and tests.
 struct PlotFrame {
   ImVec2 plot_min, plot_max;  // the axes' box
-  double x_min = 0, x_max = 1, y_min = 0, y_max = 1;
-  bool log_y = false;
+  double x_min = 0, x_max = 1, y_min = 0, y_max = 1;  // log10 of the data on a log axis
+  bool log_x = false, log_y = false;
   ImVec2 to_screen(double x, double y) const;
   double x_at(float screen_x) const;
 };

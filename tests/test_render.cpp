@@ -10,6 +10,8 @@
 #include <sstream>
 
 #include "frame_renderer.hpp"
+#include "plot_renderer.hpp"
+#include "trajectory_plots.hpp"
 #include "gl_context.hpp"
 #include "mesh_generator.hpp"
 #include "render_options.hpp"
@@ -91,42 +93,74 @@ TEST_F(Render, SameFrameTwiceGivesIdenticalPixels) {
   EXPECT_EQ(a.rgb, b.rgb);
 }
 
-TEST_F(Render, PlotCurvesStayInsideTheAxes) {
-  const Scene scene = test::scene_file("zfold");
-  render::FrameRenderer renderer(scene, 640, 360, {render::builtin_mesh_directory()});
-  render::PlotSpec spec;
-  spec.title = "test";
-  render::Series s;
-  s.label = "sine";
-  s.color = IM_COL32(255, 0, 0, 255);
-  for (int k = 0; k <= 200; ++k) {
-    s.x.push_back(k * 0.05);
-    s.y.push_back(3 * std::sin(k * 0.05));
-  }
-  spec.series.push_back(s);
-  Image image;
-  const render::PlotFrame frame = renderer.plot(spec, image);
+// Pixels of one colour in a picture, inside and outside the axes' box.
+struct ColourCount {
   int inside = 0, outside = 0;
-  std::set<int> columns;
+  std::set<int> columns;  // that hold some of it inside
+};
+
+ColourCount count_colour(const Image& image, const render::PlotFrame& frame, ImU32 colour) {
+  const int r = colour & 0xFF, g = (colour >> 8) & 0xFF, b = (colour >> 16) & 0xFF;
+  ColourCount n;
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
       const std::uint8_t* p = image.pixel(x, y);
-      if (!(p[0] > 200 && p[1] < 80 && p[2] < 80)) continue;  // the curve's red
+      if (std::abs(p[0] - r) > 12 || std::abs(p[1] - g) > 12 || std::abs(p[2] - b) > 12) continue;
       const bool in = x >= frame.plot_min.x - 1 && x <= frame.plot_max.x + 1 && y >= frame.plot_min.y - 1 &&
                       y <= frame.plot_max.y + 1;
-      (in ? inside : outside)++;
-      columns.insert(x);
+      if (in) n.columns.insert(x);
+      (in ? n.inside : n.outside)++;
     }
-  // The legend's swatch is the only red outside the data, and it is inside
-  // the axes box too.
-  EXPECT_GT(inside, 300);
-  EXPECT_EQ(outside, 0);
-  // The whole curve is drawn, rising and falling parts alike: every pixel
-  // column of the axes holds some of it.
-  const int width = static_cast<int>(frame.plot_max.x - frame.plot_min.x);
-  EXPECT_GE(static_cast<int>(columns.size()), width - 2);
-  // The curve spans the box: its extremes touch the padded range.
-  EXPECT_NEAR(frame.y_max, 3 + 0.3, 0.05);
+  return n;
+}
+
+TEST_F(Render, AnglePlotOfARunKeepsItsCurvesInsideTheAxes) {
+  // The z-fold's joint-angle plot (the paper's figure 6) as `render --plots`
+  // draws it. j4's curve (palette colour 3) is drawn last, on top of the
+  // others where they meet at the deployed 0, so it shows along the whole run.
+  const Scene scene = test::scene_file("zfold", {{"run.t_end", "10"}});
+  const RunResult run = simulate(scene, scene.run);
+  const render::PlotSpec spec = render::trajectory_plot(render::PlotKind::angles, scene, run.trajectory);
+  render::PlotRenderer plotter(640, 360);
+  Image image;
+  const render::PlotFrame frame = plotter.draw(spec, image);
+  const ColourCount n = count_colour(image, frame, render::palette(3));
+  EXPECT_GT(n.inside, 300);
+  EXPECT_EQ(n.outside, 0);
+  // The whole run is drawn: the curve reaches across the axes.
+  EXPECT_GE(static_cast<int>(n.columns.size()), static_cast<int>(0.9 * (frame.plot_max.x - frame.plot_min.x)));
+  // The axes hold the data: from j3's -pi to j2's and j4's pi.
+  EXPECT_LE(frame.y_min, -M_PI / 2);
+  EXPECT_GE(frame.y_max, M_PI);
+  EXPECT_DOUBLE_EQ(frame.x_max, 10.0);
+}
+
+TEST_F(Render, LogLogPlotPlacesDecadesAndMarkers) {
+  render::PlotSpec spec;
+  spec.title = "error against run time";
+  spec.log_x = spec.log_y = true;
+  render::Series s;
+  s.label = "power law";
+  s.color = IM_COL32(220, 20, 20, 255);
+  s.markers = true;
+  for (double x : {1e-3, 1e-2, 1e-1, 1.0}) {
+    s.x.push_back(x);
+    s.y.push_back(1e-4 / (x * x));
+  }
+  spec.series.push_back(s);
+  render::PlotRenderer plotter(640, 360);
+  Image image;
+  const render::PlotFrame frame = plotter.draw(spec, image);
+  EXPECT_DOUBLE_EQ(frame.x_min, -3);
+  EXPECT_DOUBLE_EQ(frame.x_max, 0);
+  EXPECT_DOUBLE_EQ(frame.y_min, -4);
+  EXPECT_DOUBLE_EQ(frame.y_max, 2);
+  // A straight line in log-log: the middle points sit on the chord.
+  const ImVec2 a = frame.to_screen(1e-3, 1e2), b = frame.to_screen(1.0, 1e-4), m = frame.to_screen(1e-2, 1.0);
+  EXPECT_NEAR(m.y, a.y + (b.y - a.y) * (m.x - a.x) / (b.x - a.x), 0.5);
+  const ColourCount n = count_colour(image, frame, s.color);
+  EXPECT_EQ(n.outside, 0);
+  EXPECT_GT(n.inside, 200);
 }
 
 TEST(FrameTimes, RangeAndRate) {
