@@ -15,7 +15,7 @@ Progress::Progress(std::string label, double total)
 
 Progress::~Progress() { finish(); }
 
-void Progress::update(double done) {
+void Progress::update(double done, const std::string& detail) {
   if (!enabled_) return;
   const auto now = std::chrono::steady_clock::now();
   if (drawn_ && now - last_ < std::chrono::milliseconds(100)) return;
@@ -27,16 +27,17 @@ void Progress::update(double done) {
   std::string bar(filled, '#');
   bar.resize(width, '.');
   if (fraction > 0.001)
-    std::fprintf(stderr, "\r%s [%s] %5.1f%%  %.1f s, ETA %.1f s   ", label_.c_str(), bar.c_str(), 100 * fraction,
-                 elapsed, elapsed * (1 - fraction) / fraction);
+    std::fprintf(stderr, "\r%s [%s] %5.1f%%  %.1f s, ETA %.1f s  %-28.28s", label_.c_str(), bar.c_str(),
+                 100 * fraction, elapsed, elapsed * (1 - fraction) / fraction, detail.c_str());
   else
-    std::fprintf(stderr, "\r%s [%s] %5.1f%%  %.1f s   ", label_.c_str(), bar.c_str(), 100 * fraction, elapsed);
+    std::fprintf(stderr, "\r%s [%s] %5.1f%%  %.1f s  %-28.28s", label_.c_str(), bar.c_str(), 100 * fraction, elapsed,
+                 detail.c_str());
   std::fflush(stderr);
 }
 
 void Progress::finish() {
   if (!enabled_ || !drawn_) return;
-  std::fprintf(stderr, "\r%*s\r", 90, "");
+  std::fprintf(stderr, "\r%*s\r", 120, "");
   std::fflush(stderr);
   drawn_ = false;
 }

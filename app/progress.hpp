@@ -11,7 +11,8 @@ class Progress {
  public:
   Progress(std::string label, double total);
   ~Progress();
-  void update(double done);  // redraws at most ten times a second
+  // Redraws at most ten times a second; `detail` follows the ETA.
+  void update(double done, const std::string& detail = "");
   void finish();
 
  private:

@@ -1,0 +1,153 @@
+// unfurl report: error against run time for a scene (work-precision).
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "cli.hpp"
+#include "commands.hpp"
+#include "output_file.hpp"
+#include "progress.hpp"
+#include "scene_options.hpp"
+#include "work_precision_files.hpp"
+
+namespace unfurl::app {
+
+namespace {
+
+const char* kHelp =
+    "usage: unfurl report [SCENE] [--out DIR] [--integrators LIST] [--tolerances LIST]\n"
+    "                     [--steps LIST] [--repeats N] [--set KEY=VALUE ...] [--t-end T]\n"
+    "\n"
+    "Error against run time (work-precision): runs SCENE with each integrator over a range of\n"
+    "tolerances (rk4 over a range of fixed steps), compares every run with a reference (the\n"
+    "exact solution where the scene has one, else CVODE BDF at the tightest tolerance that\n"
+    "runs) and writes into DIR (default report/):\n"
+    "  work_precision.csv        every run: wall time (median of up to 3), steps, RHS calls,\n"
+    "                            Jacobians, linear iterations, errors, loop residual, latches\n"
+    "  work_precision.png        joint-angle error against wall time, one curve per integrator\n"
+    "  work_precision_latch.png  latch-time error against wall time (scenes with latches)\n"
+    "  work_precision_final.png  final-state error against wall time (scenes with latches)\n"
+    "  WORK_PRECISION.md         the reference, the cheapest integrator for each accuracy, all runs\n"
+    "\n"
+    "options:\n"
+    "  --out DIR             output directory (default report)\n"
+    "  --integrators LIST    comma-separated (default: cvode-bdf,cvode-adams,arkode-erk,arkode-dirk,rk4)\n"
+    "  --tolerances LIST     rtol values of the adaptive integrators, atol = rtol / 100\n"
+    "                        (default 1e-3,1e-4,...,1e-10)\n"
+    "  --steps LIST          fixed steps of rk4 in seconds (default 1e-2,5e-3,...,5e-5)\n"
+    "  --repeats N           runs per setting for the median wall time (default 3)\n"
+    "%s"
+    "  --quiet               print nothing but errors\n"
+    "\n"
+    "Exit status: 0 done, 1 no reference could be computed, 2 bad scene, 64 bad usage.\n";
+
+std::vector<double> number_list(const std::string& flag, const std::string& text) {
+  std::vector<double> out;
+  std::stringstream s(text);
+  std::string item;
+  while (std::getline(s, item, ',')) {
+    std::size_t used = 0;
+    double x = 0;
+    try {
+      x = std::stod(item, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != item.size() || !(x > 0) || !std::isfinite(x))
+      throw UsageError(flag + " expects positive numbers separated by commas, got '" + item + "'");
+    out.push_back(x);
+  }
+  if (out.empty()) throw UsageError(flag + " needs at least one value");
+  return out;
+}
+
+std::vector<IntegratorKind> integrator_list(const std::string& text) {
+  std::vector<IntegratorKind> out;
+  std::stringstream s(text);
+  std::string item;
+  while (std::getline(s, item, ',')) {
+    const auto kind = parse_integrator(item);
+    if (!kind) throw UsageError("unknown integrator '" + item + "' (cvode-bdf, cvode-adams, arkode-erk, arkode-dirk, rk4)");
+    out.push_back(*kind);
+  }
+  if (out.empty()) throw UsageError("--integrators needs at least one integrator");
+  return out;
+}
+
+std::string command_line(const std::vector<std::string>& argv) {
+  std::string s = "unfurl report";
+  for (const std::string& a : argv) s += " " + a;
+  return s;
+}
+
+int work_precision_report(const std::vector<std::string>& argv, const Args& args) {
+  if (args.positionals().size() > 1) throw UsageError("report takes one SCENE (see --help)");
+  const std::optional<std::string> scene_arg =
+      args.positionals().empty() ? std::nullopt : std::optional(args.positionals()[0]);
+  const Scene scene = load_scene(scene_arg, args);
+  WorkPrecisionSettings settings;
+  if (const auto v = args.get("--integrators")) settings.integrators = integrator_list(*v);
+  if (const auto v = args.get("--tolerances")) settings.tolerances = number_list("--tolerances", *v);
+  if (const auto v = args.get("--steps")) settings.rk4_steps = number_list("--steps", *v);
+  if (const auto v = args.get("--repeats")) {
+    const double n = number_list("--repeats", *v).front();
+    if (n != std::floor(n) || n > 100) throw UsageError("--repeats expects a whole number from 1 to 100");
+    settings.repeats = static_cast<int>(n);
+  }
+  const std::string dir = args.get("--out").value_or("report");
+  make_directory(dir);
+  const bool quiet = args.has("--quiet");
+
+  Progress progress("report " + scene.name, 1);
+  const ReportProgress on_progress = [&](const std::string& what, int done, int total) {
+    if (!quiet) progress.update(static_cast<double>(done) / total, what);
+  };
+  const WorkPrecision report = measure_work_precision(scene, settings, on_progress);
+  progress.finish();
+
+  write_work_precision_csv(report, dir + "/work_precision.csv");
+  const std::vector<std::string> pictures = write_work_precision_plots(scene, report, dir);
+  write_work_precision_markdown(scene, report, pictures, command_line(argv), dir + "/WORK_PRECISION.md");
+  if (quiet) return 0;
+  std::printf("scene        %s (%s)\n", scene.name.c_str(), scene.source.c_str());
+  std::printf("reference    %s\n", report.reference.c_str());
+  std::printf("runs         %zu\n", report.points.size());
+  std::printf("cheapest     angle error   integrator    setting        wall time\n");
+  for (const CheapestRun& c : cheapest_by_accuracy(report)) {
+    if (!c.point) continue;
+    char setting[32];
+    if (c.point->integrator == IntegratorKind::rk4)
+      std::snprintf(setting, sizeof setting, "dt %g", c.point->dt);
+    else
+      std::snprintf(setting, sizeof setting, "rtol %g", c.point->rtol);
+    std::printf("             <= %-10.0e %-13s %-14s %.4g s\n", c.accuracy, integrator_name(c.point->integrator), setting,
+                c.point->wall_time_s);
+  }
+  std::printf("files        %s/work_precision.csv, %s/WORK_PRECISION.md", dir.c_str(), dir.c_str());
+  for (const std::string& p : pictures) std::printf(", %s/%s", dir.c_str(), p.c_str());
+  std::printf("\n");
+  return 0;
+}
+
+}  // namespace
+
+int command_report(const std::vector<std::string>& argv) {
+  const Args args(argv, {"--out", "--integrators", "--tolerances", "--steps", "--repeats", "--set", "--t-end", "--sample"},
+                  {"--help", "-h", "--quiet"});
+  if (args.has("--help") || args.has("-h")) {
+    std::printf(kHelp,
+                "  --set KEY=VALUE       override a value of the scene (repeatable)\n"
+                "  --t-end T             simulate from 0 to T seconds\n"
+                "  --sample DT           compare every DT seconds (default: the scene's sample)\n");
+    return 0;
+  }
+  try {
+    return work_precision_report(argv, args);
+  } catch (const std::runtime_error& e) {
+    if (dynamic_cast<const UsageError*>(&e) || dynamic_cast<const SceneError*>(&e)) throw;
+    std::fprintf(stderr, "unfurl report: %s\n", e.what());
+    return 1;
+  }
+}
+
+}  // namespace unfurl::app
