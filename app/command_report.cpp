@@ -1,4 +1,6 @@
-// unfurl report: error against run time for a scene (work-precision).
+// unfurl report: error against run time for a scene (work-precision), and
+// the stability suite of stiff and extreme cases.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -7,6 +9,7 @@
 #include "commands.hpp"
 #include "output_file.hpp"
 #include "progress.hpp"
+#include "stability_files.hpp"
 #include "scene_options.hpp"
 #include "work_precision_files.hpp"
 
@@ -17,6 +20,7 @@ namespace {
 const char* kHelp =
     "usage: unfurl report [SCENE] [--out DIR] [--integrators LIST] [--tolerances LIST]\n"
     "                     [--steps LIST] [--repeats N] [--set KEY=VALUE ...] [--t-end T]\n"
+    "       unfurl report --suite stiff [--out DIR] [--quick] [--budget S]\n"
     "\n"
     "Error against run time (work-precision): runs SCENE with each integrator over a range of\n"
     "tolerances (rk4 over a range of fixed steps), compares every run with a reference (the\n"
@@ -39,7 +43,17 @@ const char* kHelp =
     "%s"
     "  --quiet               print nothing but errors\n"
     "\n"
-    "Exit status: 0 done, 1 no reference could be computed, 2 bad scene, 64 bad usage.\n";
+    "\n"
+    "--suite stiff: the stability suite. Latch stiffness 1e3 .. 1e7 per integrator, regulator\n"
+    "v_max 10 .. 1e5 and the paper's tuning against the full-matrix gains, mass ratios 1e-3 .. 1e3\n"
+    "between neighbours, the exact stowed and deployed states and an open start, a four-bar\n"
+    "without damping for 1e4 s, and generated arrays of 3 .. 1000 stages or panels. Writes\n"
+    "STABILITY.md, stability.csv and plots into DIR (default stability/).\n"
+    "  --quick               only the small cases (those the test suite runs)\n"
+    "  --budget S            wall-time budget of each run in seconds (default 120)\n"
+    "\n"
+    "Exit status: 0 done (for the suite: every case ended as expected), 1 no reference could be\n"
+    "computed or a case did not end as expected, 2 bad scene, 64 bad usage.\n";
 
 std::vector<double> number_list(const std::string& flag, const std::string& text) {
   std::vector<double> out;
@@ -129,11 +143,52 @@ int work_precision_report(const std::vector<std::string>& argv, const Args& args
   return 0;
 }
 
+int stability_report(const std::vector<std::string>& argv, const Args& args) {
+  if (args.get("--suite") != "stiff") throw UsageError("unknown suite '" + *args.get("--suite") + "' (stiff)");
+  if (!args.positionals().empty()) throw UsageError("--suite runs its own scenes: give no SCENE");
+  StabilityReport report;
+  report.command = command_line(argv);
+  report.budget_s = args.has("--budget") ? number_list("--budget", *args.get("--budget")).front() : 120;
+  const bool quick = args.has("--quick"), quiet = args.has("--quiet");
+  const std::string dir = args.get("--out").value_or("stability");
+  make_directory(dir);
+  std::vector<StabilityCase> cases = stability_cases(report.budget_s);
+  if (quick) cases.erase(std::remove_if(cases.begin(), cases.end(), [](const StabilityCase& c) { return !c.small; }),
+                         cases.end());
+  Progress progress("stability suite", static_cast<double>(cases.size() + 1));
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    if (!quiet) progress.update(static_cast<double>(k), cases[k].label);
+    report.results.push_back(run_stability_case(cases[k]));
+  }
+  if (!quick) {
+    if (!quiet) progress.update(static_cast<double>(cases.size()), "regulator tunings");
+    report.gains = compare_gain_tunings(report.budget_s);
+    report.has_gains = true;
+  }
+  progress.finish();
+  write_stability_csv(report, dir + "/stability.csv");
+  const std::vector<std::string> pictures = write_stability_plots(report, dir);
+  write_stability_markdown(report, pictures, dir + "/STABILITY.md");
+  int unexpected = 0;
+  for (const StabilityResult& r : report.results) {
+    if (r.as_expected()) continue;
+    ++unexpected;
+    std::fprintf(stderr, "unfurl report: %s / %s did not end as expected: %s\n", r.spec.group.c_str(),
+                 r.spec.label.c_str(), r.status == RunStatus::finished ? "it finished" : r.failure.c_str());
+  }
+  if (!quiet)
+    std::printf("stability    %zu cases, %zu ended as expected\nfiles        %s/STABILITY.md, %s/stability.csv and %zu plots\n",
+                report.results.size(), report.results.size() - unexpected, dir.c_str(), dir.c_str(), pictures.size());
+  return unexpected == 0 ? 0 : 1;
+}
+
 }  // namespace
 
 int command_report(const std::vector<std::string>& argv) {
-  const Args args(argv, {"--out", "--integrators", "--tolerances", "--steps", "--repeats", "--set", "--t-end", "--sample"},
-                  {"--help", "-h", "--quiet"});
+  const Args args(argv,
+                  {"--out", "--integrators", "--tolerances", "--steps", "--repeats", "--set", "--t-end", "--sample",
+                   "--suite", "--budget"},
+                  {"--help", "-h", "--quiet", "--quick"});
   if (args.has("--help") || args.has("-h")) {
     std::printf(kHelp,
                 "  --set KEY=VALUE       override a value of the scene (repeatable)\n"
@@ -142,7 +197,7 @@ int command_report(const std::vector<std::string>& argv) {
     return 0;
   }
   try {
-    return work_precision_report(argv, args);
+    return args.has("--suite") ? stability_report(argv, args) : work_precision_report(argv, args);
   } catch (const std::runtime_error& e) {
     if (dynamic_cast<const UsageError*>(&e) || dynamic_cast<const SceneError*>(&e)) throw;
     std::fprintf(stderr, "unfurl report: %s\n", e.what());

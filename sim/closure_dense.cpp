@@ -29,8 +29,9 @@ class DenseClosureSolver : public ClosureSolver {
     return llt_.info() == Eigen::Success;
   }
 
-  void solve(const double* b, double* x) override {
-    Eigen::Map<Eigen::VectorXd>(x, m_) = llt_.solve(Eigen::Map<const Eigen::VectorXd>(b, m_));
+  void solve(const double* B, double* X, int columns) override {
+    for (int c = 0; c < columns; ++c)
+      Eigen::Map<Eigen::VectorXd>(X + c * m_, m_) = llt_.solve(Eigen::Map<const Eigen::VectorXd>(B + c * m_, m_));
   }
 
  private:

@@ -25,8 +25,9 @@ class ClosureSolver {
   virtual ~ClosureSolver() = default;
   // Factors R at the sweep's configuration. False if it could not.
   virtual bool factorize(const Sweep& sweep, double delta) = 0;
-  // x = R^-1 b for the last factorization (x and b distinct).
-  virtual void solve(const double* b, double* x) = 0;
+  // X = R^-1 B for the last factorization, B and X m x columns,
+  // column-major (distinct arrays).
+  virtual void solve(const double* B, double* X, int columns = 1) = 0;
 };
 
 // The dense solver up to kMaxDenseComponents components (automatic: up to

@@ -11,8 +11,8 @@ Regulator::Regulator(const Model& model, const std::vector<Loop>& loops, std::ve
       settings_(settings),
       mobility_(model, loops_, components_),
       diagonal_W0_(Eigen::VectorXd::Ones(size())),
-      a_(size()),
-      b_(size()) {
+      rhs_(size(), 2),
+      solved_(size(), 2) {
   if (settings_.gains == GainTuning::full)
     solver_ = make_closure_solver(settings_.solver, model, loops_, components_);
 }
@@ -42,21 +42,22 @@ bool Regulator::control(const Sweep& sweep, const double* g, const double* u, co
   const int m = size();
   Eigen::Map<const Eigen::VectorXd> g_(g, m), u_(u, m), gd_(g_dot, m);
   Eigen::Map<Eigen::VectorXd> lambda_(lambda, m), ud_(u_dot, m);
-  a_ = (v * v) * (g_ + u_) + ((p0 + 2 * p1) * v) * gd_;
-  b_ = k_pi * g_ + k_v * gd_;
+  auto a = rhs_.col(0), b = rhs_.col(1);
+  a = (v * v) * (g_ + u_) + ((p0 + 2 * p1) * v) * gd_;
+  b = k_pi * g_ + k_v * gd_;
   if (settings_.gains == GainTuning::paper) {
     // C_j = v^2 / W_jj, D_j = (p0 + 2 p1) v / W_jj (16), u' of (13)
-    lambda_ = a_.cwiseQuotient(diagonal_W0_);
-    ud_ = b_;
+    lambda_ = a.cwiseQuotient(diagonal_W0_);
+    ud_ = b;
     return true;
   }
   if (!solver_->factorize(sweep, delta_)) {
     lambda_.setConstant(std::numeric_limits<double>::quiet_NaN());
     return false;
   }
-  solver_->solve(a_.data(), lambda);  // lambda = R^-1 (v^2 (g + u) + (p0 + 2 p1) v g')
-  solver_->solve(b_.data(), u_dot);   // u' = W R^-1 b = b - delta R^-1 b
-  ud_ = b_ - delta_ * ud_;
+  solver_->solve(rhs_.data(), solved_.data(), 2);
+  lambda_ = solved_.col(0);               // R^-1 (v^2 (g + u) + (p0 + 2 p1) v g')
+  ud_ = b - delta_ * solved_.col(1);      // W R^-1 b = b - delta R^-1 b
   return true;
 }
 
@@ -68,11 +69,12 @@ double Regulator::energy(const Sweep& sweep, const double* g, const double* u) {
   const int m = size();
   const double v2 = settings_.v_max * settings_.v_max;
   Eigen::Map<const Eigen::VectorXd> g_(g, m), u_(u, m);
-  a_ = g_ + u_;
-  if (settings_.gains == GainTuning::paper) return 0.5 * v2 * a_.cwiseAbs2().cwiseQuotient(diagonal_W0_).sum();
+  auto s = rhs_.col(0);
+  s = g_ + u_;
+  if (settings_.gains == GainTuning::paper) return 0.5 * v2 * s.cwiseAbs2().cwiseQuotient(diagonal_W0_).sum();
   if (!solver_->factorize(sweep, delta_)) return std::numeric_limits<double>::quiet_NaN();
-  solver_->solve(a_.data(), b_.data());
-  return 0.5 * v2 * a_.dot(b_);
+  solver_->solve(rhs_.data(), solved_.data(), 1);
+  return 0.5 * v2 * s.dot(solved_.col(0));
 }
 
 }  // namespace unfurl

@@ -89,8 +89,9 @@ class Regulator {
   double delta_ = 0;
   Eigen::VectorXd diagonal_W0_;  // paper tuning: diag W(0)
 
-  // Scratch, sized once.
-  Eigen::VectorXd a_, b_;
+  // Scratch, sized once: the right-hand sides of (12) and (13) side by
+  // side, and R^-1 applied to them.
+  Eigen::Matrix<double, Eigen::Dynamic, 2> rhs_, solved_;
 };
 
 }  // namespace unfurl

@@ -37,6 +37,9 @@ struct RunSettings {
   double dt = 1e-4;     // step of the fixed-step RK4
   double sample = 0.01; // output interval
   long max_steps = 50'000'000;
+  // The run fails ("time budget") when it has taken longer than this, in
+  // seconds of wall time; 0: no limit.
+  double max_wall_time = 0;
   // The run fails when a loop's residual |eps pi| or geometric closure
   // exceeds this (m or rad): the regulator has lost the loop.
   double max_closure = 0.1;

@@ -71,6 +71,13 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
   Recorder recorder(dynamics, observer, trajectory);
   const double t0 = 0.0;
   recorder.record(t0, y);
+  // A joint that starts exactly at its latch angle is caught from the start.
+  for (int l = 0; l < dynamics.latch_count(); ++l) {
+    if (!dynamics.latch_state().engaged(l)) continue;
+    const LatchEvent event{t0, l, scene.latches[l].joint};
+    trajectory.events.push_back(event);
+    if (observer.on_event) observer.on_event(event);
+  }
 
   auto fail = [&](double t, double step, std::string check, std::string reason) {
     result.status = RunStatus::failed;
@@ -125,6 +132,14 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
         if (observer.on_event) observer.on_event(event);
       }
       integrator->restart(t, y.data());
+    }
+    if (settings.max_wall_time > 0 &&
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count() > settings.max_wall_time) {
+      std::ostringstream why;
+      why << "over the time budget of " << settings.max_wall_time << " s of wall time (" << integrator->stats().steps
+          << " steps)";
+      fail(t, integrator->current_step(), "time budget", why.str());
+      break;
     }
     if (integrator->stats().steps > settings.max_steps) {
       fail(t, integrator->current_step(), "steps", "more than " + std::to_string(settings.max_steps) + " steps");

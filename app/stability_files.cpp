@@ -1,0 +1,253 @@
+#include "stability_files.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+#include "gl_context.hpp"
+#include "output_file.hpp"
+#include "plot_renderer.hpp"
+#include "png_file.hpp"
+
+namespace unfurl::app {
+
+namespace {
+
+std::string sci(double x) {
+  if (!std::isfinite(x)) return "-";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2e", x);
+  return buf;
+}
+
+std::string fixed(double x, const char* format) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, format, x);
+  return buf;
+}
+
+std::string outcome(const StabilityResult& r) {
+  std::string s = r.status == RunStatus::finished ? "finished" : r.failure;
+  if (r.status == RunStatus::failed) s = "failed: " + s;
+  if (!r.spec.expected_check.empty()) s += r.as_expected() ? " (expected)" : " (**expected the " + r.spec.expected_check + " check to fail**)";
+  else if (!r.as_expected()) s += " (**expected to finish**)";
+  return s;
+}
+
+render::Series series(const std::string& label, int color, std::vector<double> x, std::vector<double> y) {
+  render::Series s;
+  s.label = label;
+  s.color = render::palette(color);
+  s.x = std::move(x);
+  s.y = std::move(y);
+  return s;
+}
+
+render::PlotSpec gains_residual_plot(const GainComparison& g) {
+  render::PlotSpec spec;
+  spec.title = "pantograph: loop residual, paper's diagonal gains (16) against full-matrix gains";
+  spec.y_label = "max over loops |eps pi|, m and rad";
+  spec.x_label = "time, s";
+  spec.log_y = true;
+  spec.series.push_back(series("paper (16), diagonal of W(0)", 3, g.t_paper, g.residual_paper));
+  spec.series.push_back(series("full, from the current W", 0, g.t_full, g.residual_full));
+  for (auto& s : spec.series)
+    for (double& y : s.y) y = std::max(y, 1e-17);
+  return spec;
+}
+
+render::PlotSpec gains_eigen_plot(const GainComparison& g) {
+  render::PlotSpec spec;
+  spec.title = "pantograph: smallest eigenvalue a of W diag(W)^-1 along the run";
+  spec.y_label = "a (the paper's tuning is stable only above the Routh bound)";
+  spec.x_label = "time, s";
+  spec.log_y = true;
+  spec.series.push_back(series("smallest a", 0, g.t_eigen, g.smallest_eigen));
+  for (double& y : spec.series[0].y) y = std::max(y, 1e-12);
+  if (!g.t_eigen.empty())
+    spec.series.push_back(series("Routh bound p0/((p0+2p1)(1+2p0p1))", 3, {g.t_eigen.front(), g.t_eigen.back()},
+                                 {g.routh_bound, g.routh_bound}));
+  return spec;
+}
+
+render::PlotSpec long_run_plot(const StabilityResult& r) {
+  render::PlotSpec spec;
+  spec.title = r.spec.label + ": energy drift and loop closure";
+  spec.y_label = "|E - E0| / |E0|, closure m and rad";
+  spec.x_label = "time, s";
+  spec.log_y = true;
+  std::vector<double> t, drift, closure_m, closure_rad;
+  const double E0 = r.trajectory.samples.front().energy.total();
+  for (const Sample& s : r.trajectory.samples) {
+    t.push_back(s.t);
+    drift.push_back(std::max(std::abs(s.energy.total() - E0) / std::abs(E0), 1e-17));
+    double m = 0, rad = 0;
+    for (const ClosureError& c : s.closure) m = std::max(m, c.distance), rad = std::max(rad, c.angle);
+    closure_m.push_back(std::max(m, 1e-17));
+    closure_rad.push_back(std::max(rad, 1e-17));
+  }
+  spec.series.push_back(series("energy drift", 0, t, drift));
+  spec.series.push_back(series("closure, m", 1, t, closure_m));
+  spec.series.push_back(series("closure, rad", 2, t, closure_rad));
+  return spec;
+}
+
+// Wall time against a case parameter, one curve per key (integrator, kind).
+render::PlotSpec wall_time_plot(const std::string& title, const std::string& x_label,
+                                const std::map<std::string, std::pair<std::vector<double>, std::vector<double>>>& curves) {
+  render::PlotSpec spec;
+  spec.title = title;
+  spec.y_label = "wall time, s (finished runs)";
+  spec.x_label = x_label;
+  spec.log_x = spec.log_y = true;
+  int color = 0;
+  for (const auto& [label, xy] : curves) {
+    render::Series s = series(label, color++, xy.first, xy.second);
+    s.markers = true;
+    spec.series.push_back(s);
+  }
+  return spec;
+}
+
+double first_number(const std::string& text, const std::string& after) {
+  const auto at = text.find(after);
+  return at == std::string::npos ? NAN : std::atof(text.c_str() + at + after.size());
+}
+
+}  // namespace
+
+std::vector<std::string> write_stability_plots(const StabilityReport& report, const std::string& dir) {
+  std::vector<std::pair<render::PlotSpec, std::string>> plots;
+  if (report.has_gains) {
+    plots.emplace_back(gains_residual_plot(report.gains), "gains_residuals.png");
+    plots.emplace_back(gains_eigen_plot(report.gains), "gains_eigenvalue.png");
+  }
+  std::map<std::string, std::pair<std::vector<double>, std::vector<double>>> stiffness, arrays;
+  for (const StabilityResult& r : report.results) {
+    if (r.spec.conservative && !r.trajectory.empty() && r.spec.label.find("1e4") != std::string::npos)
+      plots.emplace_back(long_run_plot(r), "long_run.png");
+    if (r.status != RunStatus::finished) continue;
+    if (r.spec.group == "latch stiffness") {
+      auto& c = stiffness[r.spec.label.substr(r.spec.label.find(", ") + 2)];
+      c.first.push_back(first_number(r.spec.label, "k_L = "));
+      c.second.push_back(r.wall_time_s);
+    } else if (r.spec.group == "large array") {
+      auto& c = arrays[r.spec.scene.substr(0, r.spec.scene.find(':')) + ", 1 s"];
+      c.first.push_back(r.bodies);
+      c.second.push_back(r.wall_time_s);
+    }
+  }
+  if (!stiffness.empty())
+    plots.emplace_back(wall_time_plot("pantograph: wall time against latch stiffness", "k_L, N m/rad", stiffness),
+                       "latch_stiffness.png");
+  if (!arrays.empty())
+    plots.emplace_back(wall_time_plot("large arrays: wall time of the first second", "bodies", arrays), "large_arrays.png");
+  auto context = render::make_offscreen_context();
+  render::PlotRenderer plotter(1280, 720);
+  render::Image image;
+  std::vector<std::string> files;
+  for (const auto& [spec, name] : plots) {
+    plotter.draw(spec, image);
+    write_png(image, dir + "/" + name, 6);
+    files.push_back(name);
+  }
+  return files;
+}
+
+void write_stability_csv(const StabilityReport& report, const std::string& path) {
+  OutputFile file(path);
+  std::ostream& out = file.stream();
+  out << "group,case,scene,status,as_expected,failed_check,t_reached,wall_time_s,steps,rhs_calls,min_step,bodies,"
+         "loop_components,energy_initial,energy_final,energy_drift,max_closure_m,max_closure_rad,max_loop_residual,"
+         "latches_engaged,latches_total\n";
+  for (const StabilityResult& r : report.results)
+    out << r.spec.group << ',' << '"' << r.spec.label << '"' << ',' << r.spec.scene << ',' << run_status_name(r.status)
+        << ',' << (r.as_expected() ? "yes" : "no") << ',' << r.failed_check << ',' << format_number(r.t_reached) << ','
+        << format_number(r.wall_time_s) << ',' << r.steps << ',' << r.rhs_calls << ',' << format_number(r.min_step)
+        << ',' << r.bodies << ',' << r.loop_components << ',' << format_number(r.energy_initial) << ','
+        << format_number(r.energy_final) << ',' << format_number(r.energy_drift) << ','
+        << format_number(r.max_closure_m) << ',' << format_number(r.max_closure_rad) << ','
+        << format_number(r.max_loop_residual) << ',' << r.latches_engaged << ',' << r.latches_total << '\n';
+  file.commit();
+}
+
+void write_stability_markdown(const StabilityReport& report, const std::vector<std::string>& pictures,
+                              const std::string& path) {
+  OutputFile file(path);
+  std::ostream& out = file.stream();
+  int expected = 0;
+  for (const StabilityResult& r : report.results) expected += r.as_expected() ? 1 : 0;
+  out << "# Stability: stiff and extreme cases\n\n";
+  out << "Made by `" << report.command << "`. Each case is a scene pushed to an extreme and run to its end or to a "
+      << "clear failure (which check, at what time and step); every run has a budget of " << report.budget_s
+      << " s of wall time. " << expected << " of " << report.results.size()
+      << " cases ended as expected. The command under each table reproduces a case.\n\n";
+
+  // The largest latch stiffness per integrator.
+  std::map<std::string, std::pair<const StabilityResult*, const StabilityResult*>> limits;  // last ok, first failure
+  for (const StabilityResult& r : report.results) {
+    if (r.spec.group != "latch stiffness") continue;
+    auto& l = limits[r.spec.label.substr(r.spec.label.find(", ") + 2)];
+    if (r.status == RunStatus::finished && !l.second) l.first = &r;
+    if (r.status != RunStatus::finished && !l.second) l.second = &r;
+  }
+  if (!limits.empty()) {
+    out << "## The largest latch stiffness each integrator handles\n\n"
+        << "The pantograph with all eight latches at k_L = 1e3 ... 1e9 N m/rad (adaptive methods at rtol 1e-8, RK4 at "
+           "dt = 2e-4 s), within the time budget.\n\n"
+        << "| integrator | largest k_L that finished | its wall time, s | beyond it |\n|---|---|---|---|\n";
+    for (const auto& [name, l] : limits)
+      out << "| " << name << " | " << (l.first ? l.first->spec.label.substr(6, l.first->spec.label.find(',') - 6) : "none")
+          << " | " << (l.first ? fixed(l.first->wall_time_s, "%.3g") : "-") << " | "
+          << (l.second ? l.second->spec.label.substr(0, l.second->spec.label.find(',')) + ": " + l.second->failure
+                       : "finished up to 1e9")
+          << " |\n";
+    out << "\n";
+  }
+  if (report.has_gains) {
+    const GainComparison& g = report.gains;
+    out << "## The regulator's tuning on the pantograph\n\n"
+        << "The paper's diagonal gains (16), from the diagonal of W at t = 0, against the full-matrix gains from the "
+           "current W. The paper's run is let go past the closure check (up to loops open by 1e3) to show where it "
+           "goes: "
+        << (g.paper_status == RunStatus::finished ? "it ran to the end" : g.paper_failure) << ", with "
+        << g.paper_latches << " of 8 latches (full gains: " << g.full_latches
+        << "). With diagonal gains a residual mode along an eigenvector of K = W diag(W)^-1 is stable only if its "
+           "eigenvalue a exceeds the Routh bound "
+        << g.routh_bound << "; along the run the smallest a stays between ";
+    double lo = INFINITY, hi = 0;
+    for (double a : g.smallest_eigen) lo = std::min(lo, a), hi = std::max(hi, a);
+    out << sci(lo) << " and " << sci(hi) << ".\n\n";
+    for (const std::string& p : pictures)
+      if (p.rfind("gains_", 0) == 0) out << "![" << p << "](" << p << ")\n\n";
+  }
+  std::string group;
+  for (const StabilityResult& r : report.results) {
+    if (r.spec.group != group) {
+      group = r.spec.group;
+      out << "## " << group << "\n\n";
+      for (const std::string& p : pictures)
+        if ((group == "latch stiffness" && p == "latch_stiffness.png") || (group == "long run" && p == "long_run.png") ||
+            (group == "large array" && p == "large_arrays.png"))
+          out << "![" << p << "](" << p << ")\n\n";
+      out << "| case | result | t reached, s | steps | wall time, s | min step, s | energy E0 -> E_end, J | energy "
+             "drift | max closure, m / rad | latches |\n|---|---|---|---|---|---|---|---|---|---|\n";
+    }
+    out << "| " << r.spec.label << " | " << outcome(r) << " | " << fixed(r.t_reached, "%g") << " | " << r.steps
+        << " | " << fixed(r.wall_time_s, "%.3g") << " | " << sci(r.min_step) << " | " << fixed(r.energy_initial, "%.6g")
+        << " -> " << fixed(r.energy_final, "%.6g") << " | " << sci(r.energy_drift) << " | "
+        << (r.loop_components ? sci(r.max_closure_m) + " / " + sci(r.max_closure_rad) : "no loops") << " | "
+        << r.latches_engaged << " of " << r.latches_total << " |\n";
+    for (const std::string& note : r.notes) out << "|  | " << note << " | | | | | | | | |\n";
+    const bool last_of_group = &r == &report.results.back() || (&r + 1)->spec.group != group;
+    if (last_of_group) {
+      out << "\nReproduce:\n\n";
+      for (const StabilityResult& x : report.results)
+        if (x.spec.group == group) out << "    " << reproduce_command(x.spec) << "\n";
+      out << "\n";
+    }
+  }
+  file.commit();
+}
+
+}  // namespace unfurl::app
