@@ -9,6 +9,7 @@
 #include "commands.hpp"
 #include "output_file.hpp"
 #include "progress.hpp"
+#include "scaling_files.hpp"
 #include "stability_files.hpp"
 #include "scene_options.hpp"
 #include "work_precision_files.hpp"
@@ -21,6 +22,7 @@ const char* kHelp =
     "usage: unfurl report [SCENE] [--out DIR] [--integrators LIST] [--tolerances LIST]\n"
     "                     [--steps LIST] [--repeats N] [--set KEY=VALUE ...] [--t-end T]\n"
     "       unfurl report --suite stiff [--out DIR] [--quick] [--budget S]\n"
+    "       unfurl report --suite scaling [--out DIR] [--quick] [--budget S]\n"
     "\n"
     "Error against run time (work-precision): runs SCENE with each integrator over a range of\n"
     "tolerances (rk4 over a range of fixed steps), compares every run with a reference (the\n"
@@ -49,8 +51,13 @@ const char* kHelp =
     "between neighbours, the exact stowed and deployed states and an open start, a four-bar\n"
     "without damping for 1e4 s, and generated arrays of 3 .. 1000 stages or panels. Writes\n"
     "STABILITY.md, stability.csv and plots into DIR (default stability/).\n"
-    "  --quick               only the small cases (those the test suite runs)\n"
-    "  --budget S            wall-time budget of each run in seconds (default 120)\n"
+    "\n"
+    "--suite scaling: the right-hand side's time per body for chains, z-folds and pantographs of\n"
+    "10 to 10,000 bodies, and the wall time of 1 s runs against size with CVODE BDF (dense and\n"
+    "GMRES Newton solvers) and ARKODE ERK. Writes SCALING.md, rhs_scaling.csv, run_scaling.csv\n"
+    "and plots into DIR (default scaling/).\n"
+    "  --quick               the small cases only\n"
+    "  --budget S            wall-time budget of each run in seconds (default 120; scaling 300)\n"
     "\n"
     "Exit status: 0 done (for the suite: every case ended as expected), 1 no reference could be\n"
     "computed or a case did not end as expected, 2 bad scene, 64 bad usage.\n";
@@ -143,8 +150,71 @@ int work_precision_report(const std::vector<std::string>& argv, const Args& args
   return 0;
 }
 
+// Sizes (links, panels, stages) of each family, about 10 .. 10,000 bodies.
+const std::vector<std::pair<std::string, std::vector<int>>>& rhs_sizes() {
+  static const std::vector<std::pair<std::string, std::vector<int>>> sizes{
+      {"chain", {10, 30, 100, 300, 1000, 3000, 10000}},
+      {"zfold", {9, 29, 99, 299, 999, 2999, 9999}},
+      {"pantograph", {3, 10, 33, 100, 333, 1000, 3333}}};
+  return sizes;
+}
+
+int scaling_report(const std::vector<std::string>& argv, const Args& args) {
+  ScalingReport report;
+  report.command = command_line(argv);
+  report.budget_s = args.has("--budget") ? number_list("--budget", *args.get("--budget")).front() : 300;
+  const bool quick = args.has("--quick"), quiet = args.has("--quiet");
+  const int largest = quick ? 300 : 1'000'000;
+  const std::string dir = args.get("--out").value_or("scaling");
+  make_directory(dir);
+
+  std::vector<ScalingScene> rhs_scenes;
+  for (const auto& [family, sizes] : rhs_sizes())
+    for (int n : sizes)
+      if (n <= largest) rhs_scenes.push_back({family, n, "", {}});
+  for (int n : {3, 5, 8, 12, 16}) rhs_scenes.push_back({"pantograph", n, "dense gains", {{"regulator.solver", "dense"}}});
+  struct RunPlan {
+    ScalingScene scene;
+    IntegratorKind integrator;
+    LinearSolverKind solver;
+  };
+  std::vector<RunPlan> plans;
+  const std::pair<const char*, std::vector<int>> run_sizes[] = {{"pantograph", {3, 10, 30, 100, 300, 1000}},
+                                                                {"zfold", {3, 10, 100, 1000, 3000}}};
+  for (const auto& [family, sizes] : run_sizes)
+    for (const auto& [integrator, solver] :
+         {std::pair{IntegratorKind::cvode_bdf, LinearSolverKind::dense}, std::pair{IntegratorKind::cvode_bdf, LinearSolverKind::krylov},
+          std::pair{IntegratorKind::arkode_erk, LinearSolverKind::automatic}})
+      for (int n : sizes)
+        if (n <= (quick ? 10 : largest)) plans.push_back({{family, n, "", {}}, integrator, solver});
+
+  Progress progress("scaling suite", static_cast<double>(rhs_scenes.size() + plans.size()));
+  double done = 0;
+  for (const ScalingScene& s : rhs_scenes) {
+    if (!quiet) progress.update(done++, "rhs " + s.family + " " + std::to_string(s.size));
+    report.rhs.push_back(time_right_hand_side(s, quick ? 0.2 : 1.0));
+  }
+  std::string gave_up;  // family and method that ran out of budget: larger sizes are skipped
+  for (const RunPlan& p : plans) {
+    if (!quiet) progress.update(done++, "run " + p.scene.family + " " + std::to_string(p.scene.size));
+    const std::string key = p.scene.family + integrator_name(p.integrator) + std::to_string(static_cast<int>(p.solver));
+    if (key == gave_up) continue;
+    report.runs.push_back(time_whole_run(p.scene, p.integrator, p.solver, report.run_t_end, report.budget_s));
+    if (report.runs.back().status != RunStatus::finished) gave_up = key;
+  }
+  progress.finish();
+  write_scaling_csv(report, dir);
+  const std::vector<std::string> pictures = write_scaling_plots(report, dir);
+  write_scaling_markdown(report, pictures, dir + "/SCALING.md");
+  if (!quiet)
+    std::printf("scaling      %zu right-hand sides, %zu runs\nfiles        %s/SCALING.md, %s/rhs_scaling.csv, %s/run_scaling.csv and %zu plots\n",
+                report.rhs.size(), report.runs.size(), dir.c_str(), dir.c_str(), dir.c_str(), pictures.size());
+  return 0;
+}
+
 int stability_report(const std::vector<std::string>& argv, const Args& args) {
-  if (args.get("--suite") != "stiff") throw UsageError("unknown suite '" + *args.get("--suite") + "' (stiff)");
+  if (args.get("--suite") == "scaling") return scaling_report(argv, args);
+  if (args.get("--suite") != "stiff") throw UsageError("unknown suite '" + *args.get("--suite") + "' (stiff, scaling)");
   if (!args.positionals().empty()) throw UsageError("--suite runs its own scenes: give no SCENE");
   StabilityReport report;
   report.command = command_line(argv);

@@ -1,6 +1,7 @@
 // Cost of one right-hand side (the O(N) sweep plus forces and, with loops,
-// the regulator's m extra passes and its gains) for the pantograph and for
-// chains of 10 to 1000 bodies. Reported per call and per body.
+// the regulator's gains from the current W) for the pantograph, and for
+// chains, z-folds and pantographs of about 10 to 10,000 bodies. Reported
+// per call and per body: flat per body is O(N).
 #include <benchmark/benchmark.h>
 
 #include "dynamics.hpp"
@@ -42,7 +43,19 @@ BENCHMARK(BM_RhsZfold)->Unit(benchmark::kMicrosecond);
 void BM_RhsChain(benchmark::State& state) {
   run_rhs(state, load_scene_text(generate_chain(static_cast<int>(state.range(0))), "chain"));
 }
-BENCHMARK(BM_RhsChain)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_RhsChain)->Arg(10)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+
+void BM_RhsZfoldPanels(benchmark::State& state) {
+  run_rhs(state, load_scene_text(generate_zfold(static_cast<int>(state.range(0))), "zfold"));
+}
+BENCHMARK(BM_RhsZfoldPanels)->Arg(9)->Arg(99)->Arg(999)->Arg(9999)->Unit(benchmark::kMicrosecond);
+
+// Stages 3 .. 3333: 11 .. 10,001 bodies, 9 .. 9999 loop components (dense
+// gains up to 48 components, sparse beyond).
+void BM_RhsPantographStages(benchmark::State& state) {
+  run_rhs(state, load_scene_text(generate_pantograph(static_cast<int>(state.range(0))), "pantograph"));
+}
+BENCHMARK(BM_RhsPantographStages)->Arg(3)->Arg(10)->Arg(33)->Arg(333)->Arg(3333)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace unfurl

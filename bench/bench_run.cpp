@@ -4,6 +4,7 @@
 #include <benchmark/benchmark.h>
 
 #include "simulation.hpp"
+#include "scene_generators.hpp"
 #include "scene_yaml.hpp"
 #include "summary.hpp"
 
@@ -32,6 +33,25 @@ BENCHMARK(BM_PantographRun)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1)
     ->ArgName("integrator");
+
+// The first second of large pantographs by CVODE BDF with GMRES and the
+// sweep preconditioner (sparse gains): whole-run cost against size.
+void BM_LargePantographFirstSecond(benchmark::State& state) {
+  const Scene scene =
+      load_scene_text(generate_pantograph(static_cast<int>(state.range(0))), "pantograph", {{"run.t_end", "1"}});
+  RunSettings settings = scene.run;
+  settings.rtol = 1e-8;
+  settings.atol = 1e-10;
+  settings.linear_solver = LinearSolverKind::krylov;
+  RunResult result;
+  for (auto _ : state) result = simulate(scene, settings);
+  state.SetLabel(result.status == RunStatus::finished ? "" : "FAILED");
+  state.counters["bodies"] = scene.model.size();
+  state.counters["steps"] = static_cast<double>(result.stats.steps);
+  state.counters["rhs_calls"] = static_cast<double>(result.rhs_calls);
+  state.counters["gmres_iterations"] = static_cast<double>(result.stats.linear_iterations);
+}
+BENCHMARK(BM_LargePantographFirstSecond)->Arg(10)->Arg(100)->Arg(300)->Unit(benchmark::kSecond)->Iterations(1);
 
 }  // namespace
 }  // namespace unfurl

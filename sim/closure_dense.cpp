@@ -52,7 +52,8 @@ std::unique_ptr<ClosureSolver> make_closure_solver(ClosureSolverKind kind, const
                                                    const std::vector<Loop>& loops,
                                                    const std::vector<LoopComponent>& components) {
   const int m = static_cast<int>(components.size());
-  const bool dense = kind == ClosureSolverKind::dense || (kind == ClosureSolverKind::automatic && m <= kDenseUpTo);
+  const bool dense =
+      kind == ClosureSolverKind::dense || (kind == ClosureSolverKind::automatic && m <= kMaxDenseComponents);
   return dense ? make_dense_closure_solver(model, loops, components)
                : make_sparse_closure_solver(model, loops, components);
 }

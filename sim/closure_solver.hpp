@@ -30,9 +30,9 @@ class ClosureSolver {
   virtual void solve(const double* B, double* X, int columns = 1) = 0;
 };
 
-// The dense solver up to kMaxDenseComponents components (automatic: up to
-// kDenseUpTo), else the sparse one.
-inline constexpr int kDenseUpTo = 24;
+// automatic: the dense solver while it can (it is the faster up to its
+// kMaxDenseComponents: 1.8 us per body at 48 components, the sparse one
+// about 3.7 us per body at any size; docs/scaling), else the sparse one.
 std::unique_ptr<ClosureSolver> make_closure_solver(ClosureSolverKind kind, const Model& model,
                                                    const std::vector<Loop>& loops,
                                                    const std::vector<LoopComponent>& components);

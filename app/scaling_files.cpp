@@ -1,0 +1,148 @@
+#include "scaling_files.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+#include "gl_context.hpp"
+#include "output_file.hpp"
+#include "plot_renderer.hpp"
+#include "png_file.hpp"
+
+namespace unfurl::app {
+
+namespace {
+
+std::string family_label(const ScalingScene& s) {
+  return s.family + (s.variant.empty() ? "" : " (" + s.variant + ")");
+}
+
+render::PlotSpec rhs_plot(const ScalingReport& report) {
+  render::PlotSpec spec;
+  spec.title = "right-hand side: time per body";
+  spec.y_label = "ns per body per call (median)";
+  spec.x_label = "bodies";
+  spec.log_x = spec.log_y = true;
+  std::map<std::string, render::Series> curves;
+  for (const RhsTiming& t : report.rhs) {
+    render::Series& s = curves[family_label(t.scene)];
+    s.x.push_back(t.bodies);
+    s.y.push_back(t.ns_per_body);
+  }
+  int color = 0;
+  for (auto& [label, s] : curves) {
+    s.label = label;
+    s.color = render::palette(color++);
+    s.markers = true;
+    spec.series.push_back(s);
+  }
+  return spec;
+}
+
+render::PlotSpec run_plot(const ScalingReport& report) {
+  render::PlotSpec spec;
+  char title[128];
+  std::snprintf(title, sizeof title, "whole runs of %g s: wall time against size", report.run_t_end);
+  spec.title = title;
+  spec.y_label = "wall time, s (finished runs; rtol 1e-8)";
+  spec.x_label = "bodies";
+  spec.log_x = spec.log_y = true;
+  std::map<std::string, render::Series> curves;
+  for (const RunTiming& t : report.runs) {
+    if (t.status != RunStatus::finished) continue;
+    render::Series& s = curves[t.scene.family + ", " + t.method];
+    s.x.push_back(t.bodies);
+    s.y.push_back(t.wall_time_s);
+  }
+  int color = 0;
+  for (auto& [label, s] : curves) {
+    s.label = label;
+    s.color = render::palette(color++);
+    s.markers = true;
+    spec.series.push_back(s);
+  }
+  return spec;
+}
+
+}  // namespace
+
+std::vector<std::string> write_scaling_plots(const ScalingReport& report, const std::string& dir) {
+  auto context = render::make_offscreen_context();
+  render::PlotRenderer plotter(1280, 720);
+  render::Image image;
+  std::vector<std::string> files;
+  if (!report.rhs.empty()) {
+    plotter.draw(rhs_plot(report), image);
+    write_png(image, dir + "/rhs_per_body.png", 6);
+    files.push_back("rhs_per_body.png");
+  }
+  if (!report.runs.empty()) {
+    plotter.draw(run_plot(report), image);
+    write_png(image, dir + "/run_wall_time.png", 6);
+    files.push_back("run_wall_time.png");
+  }
+  return files;
+}
+
+void write_scaling_csv(const ScalingReport& report, const std::string& dir) {
+  OutputFile rhs(dir + "/rhs_scaling.csv");
+  rhs.stream() << "family,variant,size,bodies,loop_components,states,seconds_per_call,ns_per_body\n";
+  for (const RhsTiming& t : report.rhs)
+    rhs.stream() << t.scene.family << ',' << t.scene.variant << ',' << t.scene.size << ',' << t.bodies << ','
+                 << t.loop_components << ',' << t.states << ',' << format_number(t.seconds_per_call) << ','
+                 << format_number(t.ns_per_body) << '\n';
+  rhs.commit();
+  OutputFile runs(dir + "/run_scaling.csv");
+  runs.stream() << "family,size,bodies,states,method,status,t_reached,wall_time_s,steps,rhs_calls,jacobians,"
+                   "linear_iterations,max_closure_m\n";
+  for (const RunTiming& t : report.runs)
+    runs.stream() << t.scene.family << ',' << t.scene.size << ',' << t.bodies << ',' << t.states << ",\"" << t.method
+                  << "\"," << run_status_name(t.status) << ',' << format_number(t.t_reached) << ','
+                  << format_number(t.wall_time_s) << ',' << t.steps << ',' << t.rhs_calls << ',' << t.jacobians << ','
+                  << t.linear_iterations << ',' << format_number(t.max_closure_m) << '\n';
+  runs.commit();
+}
+
+void write_scaling_markdown(const ScalingReport& report, const std::vector<std::string>& pictures,
+                            const std::string& path) {
+  OutputFile file(path);
+  std::ostream& out = file.stream();
+  char buf[512];
+  out << "# Scaling: cost against the size of the mechanism\n\n";
+  out << "Made by `" << report.command << "` on this machine (one core per run).\n\n";
+  out << "## The right-hand side\n\n"
+      << "One call of y' = f(y) at a moving state with the loops slightly open: the O(N) sweep, the forces and, "
+         "with loops, the regulator's gains from the current W. Chains hang under gravity; z-folds and pantographs "
+         "are the generated scenes of `unfurl generate`. The pantograph's gains use the dense solver up to 24 loop "
+         "components and the sparse one beyond; \"dense gains\" forces the dense one (forming W costs O(N m), its "
+         "Cholesky O(m^3)).\n\n";
+  for (const std::string& p : pictures)
+    if (p == "rhs_per_body.png") out << "![" << p << "](" << p << ")\n\n";
+  out << "| mechanism | size | bodies | loop components | states | time per call | per body |\n|---|---|---|---|---|---|---|\n";
+  for (const RhsTiming& t : report.rhs) {
+    std::snprintf(buf, sizeof buf, "| %s | %d | %d | %d | %d | %.3g us | %.0f ns |\n", family_label(t.scene).c_str(),
+                  t.scene.size, t.bodies, t.loop_components, t.states, 1e6 * t.seconds_per_call, t.ns_per_body);
+    out << buf;
+  }
+  std::snprintf(buf, sizeof buf, "%g", report.run_t_end);
+  out << "\n## Whole runs\n\n"
+      << "The first " << buf << " s of each mechanism at rtol 1e-8, atol 1e-10: CVODE BDF with a dense "
+      << "finite-difference Jacobian and LU (n right-hand sides and O(n^3) per setup), CVODE BDF with GMRES "
+         "(Jacobian-vector products by difference quotients) preconditioned by one pass of the sweep, and the "
+         "explicit ARKODE ERK. Each run has a budget of "
+      << report.budget_s << " s of wall time; the dense solver is not tried beyond the size where it ran out.\n\n";
+  for (const std::string& p : pictures)
+    if (p == "run_wall_time.png") out << "![" << p << "](" << p << ")\n\n";
+  out << "| mechanism | bodies | states | method | result | wall time, s | steps | RHS calls | Jacobians | GMRES "
+         "iterations | max closure, m |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const RunTiming& t : report.runs) {
+    const std::string result = t.status == RunStatus::finished ? "finished" : t.failure;
+    std::snprintf(buf, sizeof buf, "| %s %d | %d | %d | %s | %s | %.3g | %ld | %ld | %ld | %ld | %.2e |\n",
+                  t.scene.family.c_str(), t.scene.size, t.bodies, t.states, t.method.c_str(), result.c_str(),
+                  t.wall_time_s, t.steps, t.rhs_calls, t.jacobians, t.linear_iterations, t.max_closure_m);
+    out << buf;
+  }
+  file.commit();
+}
+
+}  // namespace unfurl::app

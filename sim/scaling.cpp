@@ -1,0 +1,89 @@
+#include "scaling.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+#include "dynamics.hpp"
+#include "scene_generators.hpp"
+#include "scene_yaml.hpp"
+#include "summary.hpp"
+
+namespace unfurl {
+
+Scene load_scaling_scene(const ScalingScene& s) {
+  std::vector<Override> overrides;
+  for (const auto& [path, value] : s.overrides) overrides.push_back({path, value});
+  std::string text;
+  if (s.family == "chain")
+    text = generate_chain(s.size);
+  else if (s.family == "zfold")
+    text = generate_zfold(s.size);
+  else
+    text = generate_pantograph(s.size);
+  return load_scene_text(text, "generated:" + s.family + ":" + std::to_string(s.size), overrides);
+}
+
+RhsTiming time_right_hand_side(const ScalingScene& s, double seconds) {
+  using Clock = std::chrono::steady_clock;
+  const Scene scene = load_scaling_scene(s);
+  Dynamics dynamics(scene);
+  std::vector<double> y = dynamics.initial_state(), ydot(y.size());
+  for (double& x : y) x += 1e-3;  // moving, loops slightly open: the general case
+  RhsTiming t;
+  t.scene = s;
+  t.bodies = scene.model.size();
+  t.loop_components = dynamics.layout().m;
+  t.states = dynamics.size();
+  // Batches of calls lasting about seconds / 5 each; the median batch.
+  long calls = 1;
+  for (;;) {
+    const auto start = Clock::now();
+    for (long k = 0; k < calls; ++k) dynamics.rhs(0, y.data(), ydot.data());
+    if (std::chrono::duration<double>(Clock::now() - start).count() > seconds / 20) break;
+    calls *= 2;
+  }
+  calls = std::max(1L, calls * 4);
+  std::vector<double> per_call;
+  for (int batch = 0; batch < 5; ++batch) {
+    const auto start = Clock::now();
+    for (long k = 0; k < calls; ++k) dynamics.rhs(0, y.data(), ydot.data());
+    per_call.push_back(std::chrono::duration<double>(Clock::now() - start).count() / calls);
+  }
+  std::sort(per_call.begin(), per_call.end());
+  t.seconds_per_call = per_call[2];
+  t.ns_per_body = 1e9 * t.seconds_per_call / t.bodies;
+  return t;
+}
+
+RunTiming time_whole_run(const ScalingScene& s, IntegratorKind integrator, LinearSolverKind linear_solver,
+                         double t_end, double budget_s) {
+  const Scene scene = load_scaling_scene(s);
+  RunSettings run = scene.run;
+  run.integrator = integrator;
+  run.linear_solver = linear_solver;
+  run.t_end = t_end;
+  run.sample = t_end / 10;
+  run.rtol = 1e-8;
+  run.atol = 1e-10;
+  run.max_wall_time = budget_s;
+  const RunResult result = simulate(scene, run);
+  RunTiming t;
+  t.scene = s;
+  t.method = integrator_name(integrator);
+  if (integrator == IntegratorKind::cvode_bdf || integrator == IntegratorKind::arkode_dirk)
+    t.method += linear_solver == LinearSolverKind::krylov ? ", GMRES + sweep preconditioner" : ", dense Newton";
+  t.bodies = scene.model.size();
+  t.states = result.trajectory.layout.size();
+  t.status = result.status;
+  if (result.status == RunStatus::failed) t.failure = describe(result.failure);
+  t.t_reached = result.trajectory.empty() ? 0 : result.trajectory.t_end();
+  t.wall_time_s = result.wall_time_s;
+  t.steps = result.stats.steps;
+  t.rhs_calls = result.rhs_calls;
+  t.jacobians = result.stats.jacobian_evals;
+  t.linear_iterations = result.stats.linear_iterations;
+  t.max_closure_m = summarize(scene, result).max_closure_m;
+  return t;
+}
+
+}  // namespace unfurl
