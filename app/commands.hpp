@@ -13,5 +13,6 @@ int command_render(const std::vector<std::string>& args);
 int command_gui(const std::vector<std::string>& args);
 int command_generate(const std::vector<std::string>& args);
 int command_report(const std::vector<std::string>& args);
+int command_export(const std::vector<std::string>& args);
 
 }  // namespace unfurl::app

@@ -19,6 +19,7 @@ const char* kUsage =
     "  render [SCENE]     draw frames, video and plots of a run, headless\n"
     "  gui [SCENE]        the interactive workbench (needs a display)\n"
     "  report [SCENE]     error against run time per integrator (work-precision)\n"
+    "  export mjcf [SCENE]  write the scene as a MuJoCo model\n"
     "  generate KIND      write a scene of any size (pantograph, zfold, chain)\n"
     "  scenes             list the built-in scenes\n"
     "\n"
@@ -45,6 +46,7 @@ int main(int argc, char** argv) {
     if (command == "render") return unfurl::app::command_render(args);
     if (command == "gui") return unfurl::app::command_gui(args);
     if (command == "report") return unfurl::app::command_report(args);
+    if (command == "export") return unfurl::app::command_export(args);
     if (command == "generate") return unfurl::app::command_generate(args);
     if (command == "scenes") return list_scenes();
     std::fprintf(stderr, "unfurl: unknown command '%s'\n\n%s", command.c_str(), kUsage);

@@ -72,7 +72,7 @@ void write_work_precision_markdown(const Scene& scene, const WorkPrecision& repo
   out << "- Reference: " << report.reference << ".\n";
   std::snprintf(buf, sizeof buf, "%g", report.compared_until);
   out << "- Angle error: the largest |q - q_ref| over the joints and the samples with t <= " << buf << " s";
-  if (!scene.latches.empty())
+  if (!scene.latches.empty() && !scene.loops.empty())
     out << " (the reference's first latch: after it the deployed state can be a branch point where exact runs "
            "part, so the final state and the latch times are compared instead)";
   out << ". Adaptive integrators run at rtol as given and atol = rtol / 100 (joint angles; momenta 100x, loop "

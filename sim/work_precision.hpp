@@ -4,10 +4,10 @@
 //
 // The reference is the exact solution where the scene has one (a compound
 // pendulum, exact_pendulum.hpp), else the same scene by CVODE BDF at the
-// tightest tolerance that still runs. Where a scene latches, the joint
-// angles are compared up to the reference's first latch: the deployed state
-// can be a branch point where two exact runs part (METHOD.md), so after it
-// the final state and the latch times are the measures.
+// tightest tolerance that still runs. Where a scene with loops latches, the
+// joint angles are compared up to the reference's first latch: the deployed
+// state can be a branch point where two exact runs part (METHOD.md), so after
+// it the final state and the latch times are the measures.
 #pragma once
 
 #include <functional>

@@ -1,0 +1,224 @@
+#include "mjcf_export.hpp"
+
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include "dynamics.hpp"
+#include "kinematics.hpp"
+
+namespace unfurl::app {
+
+namespace {
+
+std::string num(double x) {
+  std::ostringstream s;
+  s.precision(17);
+  s << x;
+  return s.str();
+}
+
+std::string vec(const Vec3& v) { return num(v.x()) + " " + num(v.y()) + " " + num(v.z()); }
+
+// Text safe inside an XML comment.
+std::string comment_text(std::string s) {
+  for (std::size_t at = s.find("--"); at != std::string::npos; at = s.find("--")) s.replace(at, 2, "- -");
+  return s;
+}
+
+struct MassProperties {
+  double mass = 0;
+  Vec3 com = Vec3::Zero();
+  Mat3 inertia = Mat3::Zero();  // about com, body axes
+};
+
+// A body's mass properties with another body's added, that one placed in
+// this one's frame by (R, p): x_this = R x_other + p.
+MassProperties merged(const Body& a, const Body& b, const Mat3& R, const Vec3& p) {
+  MassProperties out;
+  out.mass = a.mass + b.mass;
+  const Vec3 cb = R * b.com + p;
+  out.com = (a.mass * a.com + b.mass * cb) / out.mass;
+  auto shifted = [](double m, const Vec3& d) { return m * (d.squaredNorm() * Mat3::Identity() - d * d.transpose()); };
+  out.inertia = a.inertia_com + shifted(a.mass, a.com - out.com) + R * b.inertia_com * R.transpose() +
+                shifted(b.mass, cb - out.com);
+  // The round-off of bringing a coinciding image over, not physics.
+  const double scale = out.inertia.norm(), length = std::sqrt(scale / out.mass);
+  out.inertia = out.inertia.unaryExpr([&](double x) { return std::abs(x) < 1e-12 * scale ? 0.0 : x; });
+  out.com = out.com.unaryExpr([&](double x) { return std::abs(x) < 1e-12 * length ? 0.0 : x; });
+  return out;
+}
+
+class Writer {
+ public:
+  explicit Writer(const Scene& scene) : scene_(scene), model_(scene.model) {
+    body_poses(model_, scene.q0.data(), poses_);
+    for (const Loop& loop : scene.loops) {
+      image_of_[loop.image] = &loop;
+      body_of_[loop.body] = &loop;
+      for (int i = 0; i < model_.size(); ++i)
+        if (model_.parent[i] == loop.image)
+          throw std::runtime_error("cannot export to MJCF: the image '" + model_.bodies[loop.image].name +
+                                   "' of loop '" + loop.name + "' carries bodies of its own");
+    }
+    Dynamics dynamics(scene);
+    const std::vector<double> y = dynamics.initial_state();
+    Observation o;
+    dynamics.observe(0, y.data(), o);
+    qvel0_ = o.dq;
+  }
+
+  MjcfModel write() {
+    MjcfModel out;
+    header();
+    out_ << "  <worldbody>\n";
+    for (int i = 0; i < model_.size(); ++i)
+      if (model_.parent[i] == kBase && !image_of_.count(i)) body(i, 2);
+    out_ << "  </worldbody>\n";
+    equalities();
+    latches();
+    keyframe();
+    out_ << "</mujoco>\n";
+    out.xml = out_.str();
+    out.not_exported = not_exported_;
+    return out;
+  }
+
+ private:
+  void header() {
+    const Model& m = model_;
+    out_ << "<!-- " << comment_text(scene_.name) << ": exported by `unfurl export mjcf` from " << comment_text(scene_.source)
+         << ".\n     Bodies sit at the scene's initial coordinates and each joint's ref is that\n"
+         << "     coordinate, so MuJoCo's qpos is unfurl's q. Closed loops are merged back into\n"
+         << "     one body and closed by equality/connect at the split pivot. -->\n";
+    out_ << "<mujoco model=\"" << scene_.name << "\">\n";
+    out_ << "  <compiler angle=\"radian\" inertiafromgeom=\"false\"/>\n";
+    out_ << "  <option timestep=\"1e-4\" integrator=\"RK4\" gravity=\"" << vec(m.gravity) << "\">\n";
+    out_ << "    <flag contact=\"disable\" energy=\"enable\"/>\n  </option>\n";
+    if (!m.base_velocity.isZero(0))
+      unsupported("the base moves (velocity " + vec(m.base_velocity.head<3>()) + ", " +
+                  vec(m.base_velocity.tail<3>()) + "): the model's base is fixed");
+    for (const BodyLoad& load : scene_.loads)
+      unsupported("a constant load on '" + m.bodies[load.body].name + "' (MJCF has no constant body force)");
+  }
+
+  void body(int i, int depth) {
+    const Model& m = model_;
+    const std::string pad(2 * depth, ' ');
+    const Joint& joint = m.joints[i];
+    const int c = m.coordinate[i];
+    const Placement X = joint.placement(c >= 0 ? scene_.q0[c] : 0.0);
+    const Eigen::Quaterniond quat(X.G.transpose());
+    out_ << pad << "<body name=\"" << m.bodies[i].name << "\" pos=\"" << vec(X.rho) << "\" quat=\"" << num(quat.w())
+         << " " << num(quat.x()) << " " << num(quat.y()) << " " << num(quat.z()) << "\">\n";
+    inertial(i, pad + "  ");
+    if (joint.type != JointType::fixed) {
+      this->joint(i, pad + "  ");
+      written_.push_back(i);
+    }
+    for (int child = 0; child < m.size(); ++child)
+      if (m.parent[child] == i && !image_of_.count(child)) body(child, depth + 1);
+    out_ << pad << "</body>\n";
+  }
+
+  void inertial(int i, const std::string& pad) {
+    const Body& b = model_.bodies[i];
+    MassProperties mp{b.mass, b.com, b.inertia_com};
+    if (const auto loop = body_of_.find(i); loop != body_of_.end()) {
+      // The image, seen from the split body at the initial state.
+      const Pose &P = poses_[i], &Q = poses_[loop->second->image];
+      mp = merged(b, model_.bodies[loop->second->image], P.rotation * Q.rotation.transpose(),
+                  P.rotation * (Q.position - P.position));
+      out_ << pad << "<!-- with its image '" << model_.bodies[loop->second->image].name << "' merged back -->\n";
+    }
+    const Mat3& J = mp.inertia;
+    out_ << pad << "<inertial pos=\"" << vec(mp.com) << "\" mass=\"" << num(mp.mass) << "\" fullinertia=\""
+         << num(J(0, 0)) << " " << num(J(1, 1)) << " " << num(J(2, 2)) << " " << num(J(0, 1)) << " " << num(J(0, 2))
+         << " " << num(J(1, 2)) << "\"/>\n";
+  }
+
+  void joint(int i, const std::string& pad) {
+    const Joint& j = model_.joints[i];
+    const int c = model_.coordinate[i];
+    // Springs on one joint add up to one: stiffness sum k, rest at the
+    // stiffness-weighted free position (the same torque for every q).
+    double k = 0, k_free = 0, damping = 0;
+    for (const JointSpring& s : scene_.springs)
+      if (s.joint == i) k += s.stiffness, k_free += s.stiffness * s.free_position, damping += s.damping;
+    out_ << pad << "<joint name=\"" << j.name << "\" type=\"" << (j.type == JointType::revolute ? "hinge" : "slide")
+         << "\" axis=\"" << vec(j.axis) << "\" pos=\"" << vec(j.type == JointType::revolute ? j.child_point : Vec3::Zero())
+         << "\" ref=\"" << num(scene_.q0[c]) << "\"";
+    if (k > 0) out_ << " stiffness=\"" << num(k) << "\" springref=\"" << num(k_free / k) << "\"";
+    if (damping > 0) out_ << " damping=\"" << num(damping) << "\"";
+    out_ << "/>\n";
+  }
+
+  void equalities() {
+    if (scene_.loops.empty()) return;
+    out_ << "  <!-- The loops: each image's joint becomes a point constraint at its pivot,\n"
+         << "       as stiff as MuJoCo allows: it raises the time constant to twice the\n"
+         << "       timestep (refsafe); impedance 0.9999. -->\n  <equality>\n";
+    for (const Loop& loop : scene_.loops) {
+      const Joint& pivot = model_.joints[loop.image];
+      // The pivot in the split body's frame: the image's hinge point.
+      const Pose &P = poses_[loop.body], &Q = poses_[loop.image];
+      const Vec3 anchor = P.rotation * (Q.to_base(pivot.child_point) - P.position);
+      out_ << "    <connect name=\"" << loop.name << "\" body1=\"" << model_.bodies[loop.body].name << "\" body2=\""
+           << model_.bodies[model_.parent[loop.image]].name << "\" anchor=\"" << vec(anchor)
+           << "\" solref=\"1e-9 1\" solimp=\"0.9999 0.9999 0.001 0.5 2\"/>\n";
+      for (const JointSpring& s : scene_.springs)
+        if (s.joint == loop.image)
+          unsupported("a spring or damper on the loop joint '" + pivot.name + "' (it became a connect constraint)");
+    }
+    out_ << "  </equality>\n";
+  }
+
+  void latches() {
+    if (scene_.latches.empty()) return;
+    out_ << "  <!-- Not in MJCF: latches. Joint JOINT latches the first time it reaches its\n"
+         << "       position and from then on feels -stiffness (q - position) - damping dq.\n"
+         << "       latch:JOINT = position, stiffness, damping, side (sign of q0 - position;\n"
+         << "       0: engaged from the start); apply them through mjcb_passive. -->\n  <custom>\n";
+    for (const Latch& l : scene_.latches) {
+      const double offset = scene_.q0[model_.coordinate[l.joint]] - l.position;
+      const double side = offset > 0 ? 1 : offset < 0 ? -1 : 0;
+      out_ << "    <numeric name=\"latch:" << model_.joints[l.joint].name << "\" data=\"" << num(l.position) << " "
+           << num(l.stiffness) << " " << num(l.damping) << " " << num(side) << "\"/>\n";
+      unsupported("the latch of '" + model_.joints[l.joint].name + "' (kept as custom numeric latch:" +
+                  model_.joints[l.joint].name + ")");
+    }
+    out_ << "  </custom>\n";
+  }
+
+  void keyframe() {
+    // In the order the joints were written: MuJoCo's qpos order.
+    std::string qpos, qvel;
+    for (int i : written_) {
+      const int c = model_.coordinate[i];
+      qpos += (qpos.empty() ? "" : " ") + num(scene_.q0[c]);
+      qvel += (qvel.empty() ? "" : " ") + num(qvel0_[c]);
+    }
+    out_ << "  <keyframe>\n    <key name=\"initial\" qpos=\"" << qpos << "\" qvel=\"" << qvel << "\"/>\n  </keyframe>\n";
+  }
+
+  void unsupported(const std::string& what) {
+    not_exported_.push_back(what);
+    out_ << "  <!-- Not exported: " << comment_text(what) << " -->\n";
+  }
+
+  const Scene& scene_;
+  const Model& model_;
+  std::vector<Pose> poses_;
+  std::vector<double> qvel0_;
+  std::vector<int> written_;  // bodies whose joints are in the file, in file order
+  std::map<int, const Loop*> image_of_, body_of_;
+  std::vector<std::string> not_exported_;
+  std::ostringstream out_;
+};
+
+}  // namespace
+
+MjcfModel export_mjcf(const Scene& scene) { return Writer(scene).write(); }
+
+}  // namespace unfurl::app

@@ -1,0 +1,32 @@
+// A scene as a MuJoCo model (MJCF), for running the same mechanism in an
+// engine a user already trusts.
+//
+// The bodies are placed at the scene's initial coordinates q0 and every
+// joint's `ref` is q0, so MuJoCo's joint positions are unfurl's q. Each
+// closed loop is merged back: the split body takes its image's mass and
+// inertia, and the joint that carried the image becomes an `equality/connect`
+// at its pivot (a point constraint: the rest of the mechanism fixes the
+// relative rotation of a planar loop). Springs and dampers become the
+// joints' stiffness, springref and damping. What MJCF cannot say is written
+// as a comment and listed: the latches (also kept as custom numeric data,
+// latch:JOINT = [position, stiffness, damping, side], side = sign of
+// q0 - position or 0 when it starts engaged), body loads and a moving base.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "scene.hpp"
+
+namespace unfurl::app {
+
+struct MjcfModel {
+  std::string xml;
+  std::vector<std::string> not_exported;  // what the model leaves out
+};
+
+// Throws std::runtime_error for a mechanism MJCF cannot hold (an image
+// with children of its own).
+MjcfModel export_mjcf(const Scene& scene);
+
+}  // namespace unfurl::app

@@ -1,0 +1,288 @@
+// Peer tests against MuJoCo: each scene exported by `unfurl export mjcf`,
+// run by MuJoCo (RK4 at a small fixed step, the latches applied through its
+// passive-force callback by tests/peer/mujoco_peer.cpp) and by unfurl at a
+// tight tolerance, compared sample by sample. A failure says where the two
+// first part.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "gl_context.hpp"
+#include "plot_renderer.hpp"
+#include "png_file.hpp"
+#include "summary.hpp"
+#include "support.hpp"
+
+namespace unfurl {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int code = -1;
+  std::string output;
+};
+
+Outcome run(const std::string& command) {
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  Outcome o;
+  char buf[4096];
+  while (std::size_t n = std::fread(buf, 1, sizeof buf, pipe)) o.output.append(buf, n);
+  const int status = pclose(pipe);
+  o.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return o;
+}
+
+fs::path work_dir() {
+  const fs::path dir = fs::temp_directory_path() / ("unfurl_peer_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return dir;
+}
+
+// A CSV of numbers with a header row.
+struct Table {
+  std::vector<std::string> columns;
+  std::vector<std::vector<double>> rows;
+  int column(const std::string& name) const {
+    for (std::size_t c = 0; c < columns.size(); ++c)
+      if (columns[c] == name) return static_cast<int>(c);
+    return -1;
+  }
+};
+
+Table read_csv(const fs::path& path) {
+  Table t;
+  std::ifstream in(path);
+  std::string line, cell;
+  std::getline(in, line);
+  for (std::stringstream s(line); std::getline(s, cell, ',');) t.columns.push_back(cell);
+  while (std::getline(in, line)) {
+    std::vector<double> row;
+    for (std::stringstream s(line); std::getline(s, cell, ',');) row.push_back(std::atof(cell.c_str()));
+    t.rows.push_back(row);
+  }
+  return t;
+}
+
+struct Peer {
+  Table angles;                         // t, q.JOINT..., energy
+  std::map<std::string, double> latch;  // joint -> time
+};
+
+// The scene exported and run by MuJoCo with RK4 at dt.
+Peer run_mujoco(const std::string& scene, const std::vector<Override>& overrides, double t_end, double dt,
+                double sample) {
+  const fs::path dir = work_dir();
+  const fs::path xml = dir / (scene + ".xml"), prefix = dir / scene;
+  std::string command = std::string(UNFURL_BINARY) + " export mjcf " + scene + " -o " + xml.string();
+  for (const Override& o : overrides) command += " --set " + o.path + "=" + o.value;
+  const Outcome exported = run(command);
+  EXPECT_EQ(exported.code, 0) << exported.output;
+  char args[256];
+  std::snprintf(args, sizeof args, " %.17g %.17g %.17g ", t_end, dt, sample);
+  const Outcome peer = run(std::string(UNFURL_MUJOCO_PEER) + " " + xml.string() + args + prefix.string());
+  EXPECT_EQ(peer.code, 0) << peer.output;
+  Peer p;
+  p.angles = read_csv(prefix.string() + ".csv");
+  std::ifstream events(prefix.string() + "_events.csv");
+  std::string line;
+  std::getline(events, line);
+  while (std::getline(events, line)) {
+    const auto comma = line.find(',');
+    p.latch[line.substr(comma + 1)] = std::atof(line.substr(0, comma).c_str());
+  }
+  return p;
+}
+
+RunResult run_unfurl(const std::string& scene_name, std::vector<Override> overrides, double t_end, double sample) {
+  overrides.push_back({"run.t_end", std::to_string(t_end)});
+  overrides.push_back({"run.sample", std::to_string(sample)});
+  // ERK at a tight tolerance: more accurate than BDF on these smooth runs.
+  overrides.push_back({"run.integrator", "arkode-erk"});
+  overrides.push_back({"run.rtol", "1e-12"});
+  overrides.push_back({"run.atol", "1e-14"});
+  const Scene scene = load_builtin_scene(scene_name, overrides);
+  return simulate(scene, scene.run);
+}
+
+// The largest angle difference over the samples with t <= until, and where
+// the two first differ by more than `bound`.
+struct Comparison {
+  double largest = 0;
+  std::string first_parting;  // empty if they never part by more than the bound
+};
+
+Comparison compare_angles(const Scene& scene, const RunResult& ours, const Peer& peer, double until, double bound) {
+  Comparison c;
+  const Table& theirs = peer.angles;
+  const std::size_t n = std::min(ours.trajectory.samples.size(), theirs.rows.size());
+  for (std::size_t k = 0; k < n; ++k) {
+    const Sample& s = ours.trajectory.samples[k];
+    if (s.t > until + 1e-9) break;
+    EXPECT_NEAR(theirs.rows[k][0], s.t, 1e-9) << "sample times differ";
+    for (std::size_t col = 1; col + 1 < theirs.columns.size(); ++col) {
+      const std::string joint = theirs.columns[col].substr(2);
+      const double a = test::q_of(scene, s, joint), b = theirs.rows[k][col];
+      const double d = std::abs(a - b);
+      c.largest = std::max(c.largest, d);
+      if (d > bound && c.first_parting.empty()) {
+        std::ostringstream where;
+        where.precision(10);
+        where << "at t = " << s.t << " s joint " << joint << ": unfurl " << a << ", MuJoCo " << b << " rad";
+        c.first_parting = where.str();
+      }
+    }
+  }
+  return c;
+}
+
+double latch_time_difference(const Scene& scene, const RunResult& ours, const Peer& peer) {
+  double worst = 0;
+  for (const LatchEvent& e : ours.trajectory.events) {
+    const std::string& joint = scene.model.joints[e.joint].name;
+    const auto theirs = peer.latch.find(joint);
+    if (theirs == peer.latch.end()) {
+      ADD_FAILURE() << "MuJoCo never latched " << joint;
+      continue;
+    }
+    worst = std::max(worst, std::abs(e.t - theirs->second));
+  }
+  EXPECT_EQ(ours.trajectory.events.size(), peer.latch.size());
+  return worst;
+}
+
+double first_latch(const RunResult& run) {
+  double t = INFINITY;
+  for (const LatchEvent& e : run.trajectory.events) t = std::min(t, e.t);
+  return t;
+}
+
+// Runs a scene in both engines and checks the angles (up to the first latch
+// and over the whole run) and the latch times against the stated bounds.
+struct Bounds {
+  double until_first_latch = 0, whole_run = 0, latch_time = 0;
+};
+
+void expect_agreement(const std::string& name, const std::vector<Override>& overrides, double t_end, double dt,
+                      const Bounds& bounds) {
+  const Peer peer = run_mujoco(name, overrides, t_end, dt, 0.01);
+  const Scene scene = load_builtin_scene(name, overrides);
+  const RunResult ours = run_unfurl(name, overrides, t_end, 0.01);
+  ASSERT_EQ(ours.status, RunStatus::finished) << describe(ours.failure);
+  ASSERT_EQ(peer.angles.rows.size(), ours.trajectory.samples.size());
+  const double first = std::min(first_latch(ours), t_end);
+  const Comparison before = compare_angles(scene, ours, peer, first, bounds.until_first_latch);
+  const Comparison whole = compare_angles(scene, ours, peer, t_end, bounds.whole_run);
+  std::printf("%s: largest angle difference %.3g rad up to t = %g s, %.3g rad over the whole run\n", name.c_str(),
+              before.largest, first, whole.largest);
+  EXPECT_LT(before.largest, bounds.until_first_latch) << "the two part " << before.first_parting;
+  EXPECT_LT(whole.largest, bounds.whole_run) << "the two part " << whole.first_parting;
+  if (!scene.latches.empty()) {
+    const double latch = latch_time_difference(scene, ours, peer);
+    std::printf("%s: latch times differ by at most %.3g s\n", name.c_str(), latch);
+    EXPECT_LT(latch, bounds.latch_time);
+  }
+}
+
+TEST(Peer, PendulumAgreesToRoundOff) { expect_agreement("pendulum", {}, 10, 1e-4, {1e-9, 1e-9, 0}); }
+
+TEST(Peer, DoublePendulumAgreesOverItsFirstSecond) {
+  // A chaotic system: only its first second is compared.
+  expect_agreement("double_pendulum", {}, 1, 1e-4, {1e-9, 1e-9, 0});
+}
+
+TEST(Peer, ZfoldAgreesThroughEveryLatch) { expect_agreement("zfold", {}, 20, 1e-4, {1e-8, 1e-8, 1e-8}); }
+
+TEST(Peer, PantographAgreesWithinTheRegulatorsDesignedError) {
+  // unfurl closes the loops with the regulator at v_max = 2000, whose error
+  // before the latches is designed to stay below 1e-6 rad (SCENES.md);
+  // MuJoCo with stiff point constraints. After the latches the array sits at
+  // the deployed branch point, where exact runs can part (METHOD.md).
+  expect_agreement("pantograph", {}, 20, 1e-5, {1e-6, 1e-3, 1e-6});
+}
+
+TEST(Peer, PantographAgreementTightensWithTheRegulatorFrequency) {
+  // At v_max = 1e4 the regulator's error falls by the designed factor.
+  expect_agreement("pantograph", {{"regulator.v_max", "10000"}}, 8, 1e-5, {2e-8, 1e-5, 5e-8});
+}
+
+TEST(Export, EveryBuiltInSceneLoadsAndRunsInMujocoWithoutWarnings) {
+  for (const std::string& name : builtin_scene_names()) {
+    const Peer peer = run_mujoco(name, {}, 0.05, 1e-4, 0.01);
+    EXPECT_EQ(peer.angles.rows.size(), 6u) << name;
+  }
+}
+
+TEST(Export, ListsWhatMjcfCannotSay) {
+  const Outcome o = run(std::string(UNFURL_BINARY) + " export mjcf pantograph -o " + (work_dir() / "p.xml").string());
+  EXPECT_EQ(o.code, 0);
+  EXPECT_NE(o.output.find("not in the MJCF model: the latch of 'j1'"), std::string::npos) << o.output;
+  std::ifstream xml(work_dir() / "p.xml");
+  const std::string text((std::istreambuf_iterator<char>(xml)), {});
+  EXPECT_NE(text.find("<numeric name=\"latch:j8\""), std::string::npos);
+  EXPECT_NE(text.find("<connect name=\"A3\""), std::string::npos);
+  EXPECT_EQ(text.find("image_A1\" pos"), std::string::npos) << "images are merged, not bodies of their own";
+}
+
+TEST(Peer, ZfoldEnergyOfBothEnginesOnOnePlot) {
+  // Written where UNFURL_PEER_OUT says (scripts/reports: docs/peer).
+  const Peer peer = run_mujoco("zfold", {}, 20, 1e-4, 0.01);
+  const RunResult ours = run_unfurl("zfold", {}, 20, 0.01);
+  render::PlotSpec spec;
+  spec.title = "zfold: energy, unfurl and MuJoCo";
+  spec.y_label = "kinetic + springs + latches, J";
+  spec.x_label = "time, s";
+  render::Series a, b;
+  a.label = "unfurl";
+  a.color = render::palette(0);
+  b.label = "MuJoCo (RK4, dt = 1e-4 s), under unfurl's curve";
+  b.color = render::palette(3);
+  b.ghost = false;
+  double largest = 0;
+  const int energy = peer.angles.column("energy");
+  for (std::size_t k = 0; k < ours.trajectory.samples.size(); ++k) {
+    const Sample& s = ours.trajectory.samples[k];
+    a.x.push_back(s.t);
+    a.y.push_back(s.energy.total());
+    b.x.push_back(peer.angles.rows[k][0]);
+    b.y.push_back(peer.angles.rows[k][energy]);
+    largest = std::max(largest, std::abs(a.y.back() - b.y.back()));
+  }
+  spec.series = {b, a};
+  for (const LatchEvent& e : ours.trajectory.events) spec.events.push_back(e.t);
+  EXPECT_LT(largest, 1e-6) << "the two engines' energies differ";
+  const char* out = std::getenv("UNFURL_PEER_OUT");
+  const fs::path dir = out ? fs::path(out) : work_dir();
+  fs::create_directories(dir);
+  auto context = render::make_offscreen_context();
+  render::PlotRenderer plotter(1280, 720);
+  render::Image image;
+  plotter.draw(spec, image);
+  app::write_png(image, (dir / "zfold_energy.png").string(), 6);
+  render::PlotSpec difference;
+  difference.title = "zfold: energy difference between unfurl and MuJoCo";
+  difference.y_label = "|E_unfurl - E_MuJoCo|, J";
+  difference.x_label = "time, s";
+  difference.log_y = true;
+  difference.events = spec.events;
+  render::Series d;
+  d.label = "difference";
+  d.color = render::palette(0);
+  for (std::size_t k = 0; k < a.x.size(); ++k) {
+    d.x.push_back(a.x[k]);
+    d.y.push_back(std::max(std::abs(a.y[k] - b.y[k]), 1e-17));
+  }
+  difference.series = {d};
+  plotter.draw(difference, image);
+  app::write_png(image, (dir / "zfold_energy_difference.png").string(), 6);
+  std::printf("zfold: energies differ by at most %.3g J; plot %s\n", largest, (dir / "zfold_energy.png").c_str());
+}
+
+}  // namespace
+}  // namespace unfurl
