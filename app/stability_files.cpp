@@ -29,6 +29,7 @@ std::string fixed(double x, const char* format) {
 std::string outcome(const StabilityResult& r) {
   std::string s = r.status == RunStatus::finished ? "finished" : r.failure;
   if (r.status == RunStatus::failed) s = "failed: " + s;
+  if (r.spec.probe) return s;
   if (!r.spec.expected_check.empty()) s += r.as_expected() ? " (expected)" : " (**expected the " + r.spec.expected_check + " check to fail**)";
   else if (!r.as_expected()) s += " (**expected to finish**)";
   return s;

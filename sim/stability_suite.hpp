@@ -22,6 +22,7 @@ struct StabilityCase {
   std::vector<Override> overrides;
   bool small = false;           // cheap: part of the test suite
   std::string expected_check;   // "" = finishes; else the check it fails ("closure", ...)
+  bool probe = false;           // looking for a limit: finishing and failing a check are both fine
   bool conservative = false;    // report the energy drift
   bool branches = false;        // report which way each loop went
   bool closing_time = false;    // report how fast an open start closes
