@@ -1,6 +1,7 @@
 // unfurl generate: scene files of any size (the pantograph with N panel
 // pairs, the z-fold with N panels, a hanging chain of N links), written as
 // scene text so they load, validate and edit like hand-written ones.
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <string>
@@ -30,18 +31,11 @@ const char* kHelp =
     "  -o, --output FILE                   where to write (default: standard output)\n";
 
 int size_argument(const Args& args, const std::string& flag) {
-  const auto text = args.get(flag);
-  if (!text) throw UsageError("missing " + flag + " N");
-  std::size_t used = 0;
-  long n = 0;
-  try {
-    n = std::stol(*text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != text->size() || n < 1 || n > 1'000'000)
-    throw UsageError(flag + " expects a whole number from 1 to 1000000, got '" + *text + "'");
-  return static_cast<int>(n);
+  const auto n = args.number(flag);
+  if (!n) throw UsageError("missing " + flag + " N");
+  if (*n != std::floor(*n) || *n < 1 || *n > 1'000'000)
+    throw UsageError(flag + " expects a whole number from 1 to 1000000, got '" + *args.get(flag) + "'");
+  return static_cast<int>(*n);
 }
 
 }  // namespace

@@ -46,7 +46,8 @@ const char* kHelp =
     "  --quiet               print nothing but errors\n"
     "\n"
     "\n"
-    "--suite stiff: the stability suite. Latch stiffness 1e3 .. 1e7 per integrator, regulator\n"
+    "--suite stiff: the stability suite. Latch stiffness 1e3 .. 1e7 per integrator (and on to\n"
+    "1e9 to find each integrator's limit), regulator\n"
     "v_max 10 .. 1e5 and the paper's tuning against the full-matrix gains, mass ratios 1e-3 .. 1e3\n"
     "between neighbours, the exact stowed and deployed states and an open start, a four-bar\n"
     "without damping for 1e4 s, and generated arrays of 3 .. 1000 stages or panels. Writes\n"
@@ -95,6 +96,12 @@ std::vector<IntegratorKind> integrator_list(const std::string& text) {
   return out;
 }
 
+double budget(const Args& args, double fallback) {
+  const double s = args.number("--budget", fallback);
+  if (!(s > 0)) throw UsageError("--budget expects a positive number of seconds");
+  return s;
+}
+
 std::string command_line(const std::vector<std::string>& argv) {
   std::string s = "unfurl report";
   for (const std::string& a : argv) s += " " + a;
@@ -110,10 +117,9 @@ int work_precision_report(const std::vector<std::string>& argv, const Args& args
   if (const auto v = args.get("--integrators")) settings.integrators = integrator_list(*v);
   if (const auto v = args.get("--tolerances")) settings.tolerances = number_list("--tolerances", *v);
   if (const auto v = args.get("--steps")) settings.rk4_steps = number_list("--steps", *v);
-  if (const auto v = args.get("--repeats")) {
-    const double n = number_list("--repeats", *v).front();
-    if (n != std::floor(n) || n > 100) throw UsageError("--repeats expects a whole number from 1 to 100");
-    settings.repeats = static_cast<int>(n);
+  if (const auto n = args.number("--repeats")) {
+    if (*n != std::floor(*n) || *n < 1 || *n > 100) throw UsageError("--repeats expects a whole number from 1 to 100");
+    settings.repeats = static_cast<int>(*n);
   }
   const std::string dir = args.get("--out").value_or("report");
   make_directory(dir);
@@ -162,7 +168,7 @@ const std::vector<std::pair<std::string, std::vector<int>>>& rhs_sizes() {
 int scaling_report(const std::vector<std::string>& argv, const Args& args) {
   ScalingReport report;
   report.command = command_line(argv);
-  report.budget_s = args.has("--budget") ? number_list("--budget", *args.get("--budget")).front() : 300;
+  report.budget_s = budget(args, 300);
   const bool quick = args.has("--quick"), quiet = args.has("--quiet");
   const int largest = quick ? 300 : 1'000'000;
   const std::string dir = args.get("--out").value_or("scaling");
@@ -218,7 +224,7 @@ int stability_report(const std::vector<std::string>& argv, const Args& args) {
   if (!args.positionals().empty()) throw UsageError("--suite runs its own scenes: give no SCENE");
   StabilityReport report;
   report.command = command_line(argv);
-  report.budget_s = args.has("--budget") ? number_list("--budget", *args.get("--budget")).front() : 120;
+  report.budget_s = budget(args, 120);
   const bool quick = args.has("--quick"), quiet = args.has("--quiet");
   const std::string dir = args.get("--out").value_or("stability");
   make_directory(dir);

@@ -7,17 +7,13 @@
 
 #include "dynamics.hpp"
 #include "kinematics.hpp"
+#include "output_file.hpp"
 
 namespace unfurl::app {
 
 namespace {
 
-std::string num(double x) {
-  std::ostringstream s;
-  s.precision(17);
-  s << x;
-  return s.str();
-}
+std::string num(double x) { return format_number(x); }
 
 std::string vec(const Vec3& v) { return num(v.x()) + " " + num(v.y()) + " " + num(v.z()); }
 
@@ -57,6 +53,10 @@ class Writer {
     for (const Loop& loop : scene.loops) {
       image_of_[loop.image] = &loop;
       body_of_[loop.body] = &loop;
+      if (model_.joints[loop.image].type != JointType::revolute)
+        throw std::runtime_error("cannot export to MJCF: loop '" + loop.name + "' is closed at a " +
+                                 joint_type_name(model_.joints[loop.image].type) +
+                                 " joint, and a point constraint stands only for a hinge");
       for (int i = 0; i < model_.size(); ++i)
         if (model_.parent[i] == loop.image)
           throw std::runtime_error("cannot export to MJCF: the image '" + model_.bodies[loop.image].name +
@@ -164,8 +164,9 @@ class Writer {
       // The pivot in the split body's frame: the image's hinge point.
       const Pose &P = poses_[loop.body], &Q = poses_[loop.image];
       const Vec3 anchor = P.rotation * (Q.to_base(pivot.child_point) - P.position);
+      const int parent = model_.parent[loop.image];
       out_ << "    <connect name=\"" << loop.name << "\" body1=\"" << model_.bodies[loop.body].name << "\" body2=\""
-           << model_.bodies[model_.parent[loop.image]].name << "\" anchor=\"" << vec(anchor)
+           << (parent == kBase ? std::string("world") : model_.bodies[parent].name) << "\" anchor=\"" << vec(anchor)
            << "\" solref=\"1e-9 1\" solimp=\"0.9999 0.9999 0.001 0.5 2\"/>\n";
       for (const JointSpring& s : scene_.springs)
         if (s.joint == loop.image)

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "gl_context.hpp"
+#include "markdown.hpp"
 #include "output_file.hpp"
 #include "plot_renderer.hpp"
 #include "png_file.hpp"
@@ -15,6 +16,19 @@ namespace {
 
 std::string family_label(const ScalingScene& s) {
   return s.family + (s.variant.empty() ? "" : " (" + s.variant + ")");
+}
+
+// One series per label, with markers, in the palette's order.
+std::vector<render::Series> series_of(std::map<std::string, render::Series> curves) {
+  std::vector<render::Series> out;
+  int color = 0;
+  for (auto& [label, s] : curves) {
+    s.label = label;
+    s.color = render::palette(color++);
+    s.markers = true;
+    out.push_back(std::move(s));
+  }
+  return out;
 }
 
 render::PlotSpec rhs_plot(const ScalingReport& report) {
@@ -29,13 +43,7 @@ render::PlotSpec rhs_plot(const ScalingReport& report) {
     s.x.push_back(t.bodies);
     s.y.push_back(t.ns_per_body);
   }
-  int color = 0;
-  for (auto& [label, s] : curves) {
-    s.label = label;
-    s.color = render::palette(color++);
-    s.markers = true;
-    spec.series.push_back(s);
-  }
+  spec.series = series_of(std::move(curves));
   return spec;
 }
 
@@ -54,13 +62,7 @@ render::PlotSpec run_plot(const ScalingReport& report) {
     s.x.push_back(t.bodies);
     s.y.push_back(t.wall_time_s);
   }
-  int color = 0;
-  for (auto& [label, s] : curves) {
-    s.label = label;
-    s.color = render::palette(color++);
-    s.markers = true;
-    spec.series.push_back(s);
-  }
+  spec.series = series_of(std::move(curves));
   return spec;
 }
 
@@ -113,7 +115,7 @@ void write_scaling_markdown(const ScalingReport& report, const std::vector<std::
   out << "## The right-hand side\n\n"
       << "One call of y' = f(y) at a moving state with the loops slightly open: the O(N) sweep, the forces and, "
          "with loops, the regulator's gains from the current W. Chains hang under gravity; z-folds and pantographs "
-         "are the generated scenes of `unfurl generate`. The pantograph's gains use the dense solver up to 24 loop "
+         "are the generated scenes of `unfurl generate`. The pantograph's gains use the dense solver up to 48 loop "
          "components and the sparse one beyond; \"dense gains\" forces the dense one (forming W costs O(N m), its "
          "Cholesky O(m^3)).\n\n";
   for (const std::string& p : pictures)
@@ -137,10 +139,10 @@ void write_scaling_markdown(const ScalingReport& report, const std::vector<std::
          "iterations | max closure, m |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const RunTiming& t : report.runs) {
     const std::string result = t.status == RunStatus::finished ? "finished" : t.failure;
-    std::snprintf(buf, sizeof buf, "| %s %d | %d | %d | %s | %s | %.3g | %ld | %ld | %ld | %ld | %.2e |\n",
-                  t.scene.family.c_str(), t.scene.size, t.bodies, t.states, t.method.c_str(), result.c_str(),
-                  t.wall_time_s, t.steps, t.rhs_calls, t.jacobians, t.linear_iterations, t.max_closure_m);
-    out << buf;
+    std::snprintf(buf, sizeof buf, "| %.3g | %ld | %ld | %ld | %ld | %.2e |\n", t.wall_time_s, t.steps, t.rhs_calls,
+                  t.jacobians, t.linear_iterations, t.max_closure_m);
+    out << "| " << t.scene.family << ' ' << t.scene.size << " | " << t.bodies << " | " << t.states << " | " << t.method
+        << " | " << table_cell(result) << ' ' << buf;
   }
   file.commit();
 }

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "gl_context.hpp"
+#include "markdown.hpp"
 #include "output_file.hpp"
 #include "plot_renderer.hpp"
 #include "png_file.hpp"
@@ -29,6 +30,7 @@ std::string fixed(double x, const char* format) {
 std::string outcome(const StabilityResult& r) {
   std::string s = r.status == RunStatus::finished ? "finished" : r.failure;
   if (r.status == RunStatus::failed) s = "failed: " + s;
+  s = table_cell(s);
   if (r.spec.probe) return s;
   if (!r.spec.expected_check.empty()) s += r.as_expected() ? " (expected)" : " (**expected the " + r.spec.expected_check + " check to fail**)";
   else if (!r.as_expected()) s += " (**expected to finish**)";
@@ -200,7 +202,7 @@ void write_stability_markdown(const StabilityReport& report, const std::vector<s
     for (const auto& [name, l] : limits)
       out << "| " << name << " | " << (l.first ? l.first->spec.label.substr(6, l.first->spec.label.find(',') - 6) : "none")
           << " | " << (l.first ? fixed(l.first->wall_time_s, "%.3g") : "-") << " | "
-          << (l.second ? l.second->spec.label.substr(0, l.second->spec.label.find(',')) + ": " + l.second->failure
+          << (l.second ? l.second->spec.label.substr(0, l.second->spec.label.find(',')) + ": " + table_cell(l.second->failure)
                        : "finished up to 1e9")
           << " |\n";
     out << "\n";
@@ -239,7 +241,7 @@ void write_stability_markdown(const StabilityReport& report, const std::vector<s
         << " -> " << fixed(r.energy_final, "%.6g") << " | " << sci(r.energy_drift) << " | "
         << (r.loop_components ? sci(r.max_closure_m) + " / " + sci(r.max_closure_rad) : "no loops") << " | "
         << r.latches_engaged << " of " << r.latches_total << " |\n";
-    for (const std::string& note : r.notes) out << "|  | " << note << " | | | | | | | | |\n";
+    for (const std::string& note : r.notes) out << "|  | " << table_cell(note) << " | | | | | | | | |\n";
     const bool last_of_group = &r == &report.results.back() || (&r + 1)->spec.group != group;
     if (last_of_group) {
       out << "\nReproduce:\n\n";

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "gl_context.hpp"
+#include "markdown.hpp"
 #include "output_file.hpp"
 #include "plot_renderer.hpp"
 #include "png_file.hpp"
@@ -84,9 +85,9 @@ void write_work_precision_markdown(const Scene& scene, const WorkPrecision& repo
   out << "| angle error at most | integrator | setting | wall time, s | RHS calls |\n|---|---|---|---|---|\n";
   for (const CheapestRun& c : cheapest_by_accuracy(report)) {
     if (!c.point) continue;
-    std::snprintf(buf, sizeof buf, "| %.0e rad | %s | %s | %.4g | %ld |\n", c.accuracy, integrator_name(c.point->integrator),
-                  setting(*c.point).c_str(), c.point->wall_time_s, c.point->rhs_calls);
-    out << buf;
+    std::snprintf(buf, sizeof buf, "%.0e", c.accuracy);
+    out << "| " << buf << " rad | " << integrator_name(c.point->integrator) << " | " << setting(*c.point) << " | "
+        << c.point->wall_time_s << " | " << c.point->rhs_calls << " |\n";
   }
   out << "\n## Every run\n\n";
   out << "| integrator | setting | status | wall time, s | steps | RHS calls | Jacobians | linear iterations | angle "
@@ -95,12 +96,11 @@ void write_work_precision_markdown(const Scene& scene, const WorkPrecision& repo
   if (!scene.loops.empty()) out << " max loop residual |";
   out << "\n|---|---|---|---|---|---|---|---|---|---|" << (scene.latches.empty() ? "" : "---|")
       << (scene.loops.empty() ? "" : "---|") << "\n";
+  out.precision(4);
   for (const PrecisionPoint& p : report.points) {
-    std::snprintf(buf, sizeof buf, "| %s | %s | %s | %.4g | %ld | %ld | %ld | %ld | %s | %s |",
-                  integrator_name(p.integrator), setting(p).c_str(), status_text(p).c_str(), p.wall_time_s,
-                  p.stats.steps, p.rhs_calls, p.stats.jacobian_evals, p.stats.linear_iterations,
-                  sci(p.angle_error).c_str(), sci(p.final_error).c_str());
-    out << buf;
+    out << "| " << integrator_name(p.integrator) << " | " << setting(p) << " | " << table_cell(status_text(p)) << " | "
+        << p.wall_time_s << " | " << p.stats.steps << " | " << p.rhs_calls << " | " << p.stats.jacobian_evals << " | "
+        << p.stats.linear_iterations << " | " << sci(p.angle_error) << " | " << sci(p.final_error) << " |";
     if (!scene.latches.empty()) out << ' ' << sci(p.latch_time_error) << " |";
     if (!scene.loops.empty()) out << ' ' << sci(p.max_loop_residual) << " |";
     out << '\n';

@@ -117,9 +117,9 @@ class SparseClosureSolver : public ClosureSolver {
     rhs_.bottomRows(m_) = Eigen::Map<const Eigen::MatrixXd>(B, m_, columns);
     solution_ = ldlt_.solve(rhs_);
     // Near a branch point R is as ill-conditioned as lambda_max / delta;
-    // three passes reach 1e-12 of the right-hand side there.
+    // a few passes reach 1e-12 of the right-hand side there.
     const double target = 1e-12 * rhs_.norm();
-    for (int pass = 0; pass < 3; ++pass) {
+    for (int pass = 0; pass < 5; ++pass) {
       // The residual of the unregularized matrix: K_0 = K + eps on the joint rows.
       residual_.noalias() = rhs_ - K_.selfadjointView<Eigen::Lower>() * solution_;
       residual_.middleRows(v_rows, joint_rows) -= eps_ * solution_.middleRows(v_rows, joint_rows);

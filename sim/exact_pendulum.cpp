@@ -54,6 +54,7 @@ std::optional<ExactPendulum> exact_pendulum(const Scene& scene) {
   p.omega = std::sqrt(body.mass * rho / I_axis);
   p.phi0 = std::remainder(scene.q0[0] - p.q_eq, 2 * M_PI);
   if (std::abs(p.phi0) >= M_PI - 1e-9) return {};  // released upside down: no oscillation
+  p.q_eq = scene.q0[0] - p.phi0;  // the equilibrium of the turn the pendulum starts in
   return p;
 }
 

@@ -1,6 +1,8 @@
 #include "mobility.hpp"
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace unfurl {
 
@@ -31,6 +33,9 @@ void Mobility::product(const Sweep& sweep, const double* x, double* Wx) {
 }
 
 const LoopMatrix& Mobility::matrix(const Sweep& sweep) {
+  if (size() > kMaxDenseComponents)
+    throw std::invalid_argument("W as a matrix holds at most " + std::to_string(kMaxDenseComponents) +
+                                " loop components; this scene has " + std::to_string(size()));
   for (Spatial& f : loads_) f.setZero();
   for (int c = 0; c < size(); ++c) {
     const LoopComponent& lc = components_[c];
@@ -51,7 +56,8 @@ double Mobility::largest_eigenvalue(const Sweep& sweep) {
   // W is symmetric positive semidefinite: the Rayleigh quotient of the
   // iterates rises to the largest eigenvalue. A fixed start keeps it
   // deterministic; it only sets a scale, so a few digits suffice.
-  Eigen::VectorXd x = Eigen::VectorXd::Ones(size()).normalized(), Wx(size());
+  // 1, 2, ..., m: not orthogonal to the top eigenvector of a symmetric mechanism.
+  Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(size(), 1, size()).normalized(), Wx(size());
   double lambda = 0;
   for (int k = 0; k < 200; ++k) {
     product(sweep, x.data(), Wx.data());

@@ -27,7 +27,8 @@ class Mobility {
   // Wx = W x at the sweep's configuration: one load case through the passes.
   void product(const Sweep& sweep, const double* x, double* Wx);
 
-  // All of W: the passes on the m unit loads at once (m <= kMaxDenseComponents).
+  // All of W: the passes on the m unit loads at once. Throws
+  // std::invalid_argument beyond kMaxDenseComponents.
   const LoopMatrix& matrix(const Sweep& sweep);
 
   // The largest eigenvalue of W, by power iteration on products (the scale

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
 
 #include "dynamics.hpp"
 #include "scene_generators.hpp"
@@ -29,6 +30,8 @@ RhsTiming time_right_hand_side(const ScalingScene& s, double seconds) {
   Dynamics dynamics(scene);
   std::vector<double> y = dynamics.initial_state(), ydot(y.size());
   for (double& x : y) x += 1e-3;  // moving, loops slightly open: the general case
+  if (!dynamics.rhs(0, y.data(), ydot.data()))
+    throw std::runtime_error(scene.name + ": the right-hand side is not finite at the timing state");
   RhsTiming t;
   t.scene = s;
   t.bodies = scene.model.size();

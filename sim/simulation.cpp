@@ -133,7 +133,7 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
       }
       integrator->restart(t, y.data());
     }
-    if (settings.max_wall_time > 0 &&
+    if (t < settings.t_end && settings.max_wall_time > 0 &&
         std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count() > settings.max_wall_time) {
       std::ostringstream why;
       why << "over the time budget of " << settings.max_wall_time << " s of wall time (" << integrator->stats().steps

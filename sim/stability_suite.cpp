@@ -13,9 +13,18 @@ namespace unfurl {
 
 namespace {
 
+// The shortest text that reads back as the same double.
 std::string num(double x) {
   std::ostringstream s;
+  s.precision(17);
   s << x;
+  const double back = std::stod(s.str());
+  for (int digits = 1; digits < 17; ++digits) {
+    std::ostringstream shorter;
+    shorter.precision(digits);
+    shorter << x;
+    if (std::stod(shorter.str()) == back) return shorter.str();
+  }
   return s.str();
 }
 
@@ -220,7 +229,7 @@ StabilityResult run_stability_case(const StabilityCase& c) {
     r.energy_drift = drift / std::abs(s.energy_initial);
   }
   if (c.branches) r.notes = describe_branches(scene, run.trajectory);
-  if (!c.conservative && s.energy_final > 1.01 * s.energy_initial + 1e-9) {
+  if (!c.conservative && s.energy_final - s.energy_initial > 0.01 * std::abs(s.energy_initial) + 1e-9) {
     std::ostringstream note;
     note << "energy rose from " << s.energy_initial << " to " << s.energy_final
          << " J: a passive mechanism cannot gain energy, so this run is not physical";
@@ -288,18 +297,19 @@ GainComparison compare_gain_tunings(double budget_s) {
   g.paper_latches = static_cast<int>(run_paper.trajectory.events.size());
   g.full_latches = static_cast<int>(run_full.trajectory.events.size());
 
-  // a = eigenvalues of K = W diag(W)^-1, similar to the symmetric
-  // diag(W)^-1/2 W diag(W)^-1/2.
+  // a = eigenvalues of K = W diag(W(0))^-1 (the paper's gains come from W
+  // at t = 0), similar to the symmetric diag(W(0))^-1/2 W diag(W(0))^-1/2.
   Dynamics dynamics(full);
   Regulator& regulator = *dynamics.regulator();
   Sweep sweep(full.model);
   const RegulatorSettings& r = full.regulator;
   g.routh_bound = r.p0 / ((r.p0 + 2 * r.p1) * (1 + 2 * r.p0 * r.p1));
+  sweep.set_configuration(full.q0.data());
+  const Eigen::VectorXd scale = regulator.mobility(sweep).diagonal().cwiseSqrt().cwiseInverse();
   for (std::size_t k = 0; k < run_full.trajectory.samples.size(); k += 5) {
     const Sample& s = run_full.trajectory.samples[k];
     sweep.set_configuration(s.y.data());
     const Eigen::MatrixXd W = regulator.mobility(sweep);
-    const Eigen::VectorXd scale = W.diagonal().cwiseMax(1e-300).cwiseSqrt().cwiseInverse();
     const Eigen::MatrixXd K = scale.asDiagonal() * W * scale.asDiagonal();
     g.t_eigen.push_back(s.t);
     g.smallest_eigen.push_back(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(K, Eigen::EigenvaluesOnly).eigenvalues()(0));

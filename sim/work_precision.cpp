@@ -33,8 +33,9 @@ Reference from_trajectory(const Trajectory& trajectory, int latches) {
     r.q.emplace_back(s.y.begin(), s.y.begin() + trajectory.layout.nq);
   }
   r.latch_time = latch_times(trajectory, latches);
+  // A latch engaged from the start ends no smooth stretch.
   for (double t : r.latch_time)
-    if (std::isfinite(t)) r.first_latch = std::min(r.first_latch, t);
+    if (std::isfinite(t) && t > 0) r.first_latch = std::min(r.first_latch, t);
   return r;
 }
 
@@ -194,11 +195,12 @@ WorkPrecision measure_work_precision(const Scene& scene, const WorkPrecisionSett
 }
 
 std::vector<CheapestRun> cheapest_by_accuracy(const WorkPrecision& report) {
+  // Errors below 1e-16 rad are round-off: they count as 1e-16.
   double best = std::numeric_limits<double>::infinity(), worst = 0;
   for (const PrecisionPoint& p : report.points)
     if (std::isfinite(p.angle_error)) {
-      best = std::min(best, std::max(p.angle_error, 1e-300));
-      worst = std::max(worst, p.angle_error);
+      best = std::min(best, std::max(p.angle_error, 1e-16));
+      worst = std::max(worst, std::max(p.angle_error, 1e-16));
     }
   std::vector<CheapestRun> out;
   if (!std::isfinite(best)) return out;

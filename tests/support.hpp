@@ -1,6 +1,9 @@
 // Helpers shared by the tests.
 #pragma once
 
+#include <sys/wait.h>
+
+#include <cstdio>
 #include <string>
 
 #include "scene_yaml.hpp"
@@ -14,6 +17,22 @@ inline std::string asset(const std::string& relative) {
 
 inline Scene scene_file(const std::string& name, const std::vector<Override>& overrides = {}) {
   return load_scene_file(asset("scenes/" + name + ".yaml"), overrides);
+}
+
+struct CommandOutcome {
+  int code = -1;       // exit status, -1 when it did not exit normally
+  std::string output;  // standard output and error together
+};
+
+// Runs a shell command to its end.
+inline CommandOutcome run_command(const std::string& command) {
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  CommandOutcome o;
+  char buf[4096];
+  while (std::size_t n = std::fread(buf, 1, sizeof buf, pipe)) o.output.append(buf, n);
+  const int status = pclose(pipe);
+  o.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return o;
 }
 
 // Value of coordinate c of the joint named `joint` in a sample.

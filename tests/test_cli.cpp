@@ -16,21 +16,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Outcome {
-  int code = -1;
-  std::string output;
-};
+using Outcome = test::CommandOutcome;
 
-Outcome run(const std::string& arguments) {
-  const std::string command = std::string(UNFURL_BINARY) + " " + arguments + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  Outcome o;
-  char buf[4096];
-  while (std::size_t n = std::fread(buf, 1, sizeof buf, pipe)) o.output.append(buf, n);
-  const int status = pclose(pipe);
-  o.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return o;
-}
+// unfurl with these arguments.
+Outcome run(const std::string& arguments) { return test::run_command(std::string(UNFURL_BINARY) + " " + arguments); }
 
 fs::path temp_dir() {
   const fs::path dir = fs::temp_directory_path() / ("unfurl_cli_" + std::to_string(::getpid()));

@@ -24,20 +24,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Outcome {
-  int code = -1;
-  std::string output;
-};
-
-Outcome run(const std::string& command) {
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  Outcome o;
-  char buf[4096];
-  while (std::size_t n = std::fread(buf, 1, sizeof buf, pipe)) o.output.append(buf, n);
-  const int status = pclose(pipe);
-  o.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return o;
-}
+using Outcome = test::CommandOutcome;
+const auto run = test::run_command;
 
 fs::path work_dir() {
   const fs::path dir = fs::temp_directory_path() / ("unfurl_peer_" + std::to_string(::getpid()));
@@ -246,6 +234,8 @@ TEST(Peer, ZfoldEnergyOfBothEnginesOnOnePlot) {
   b.ghost = false;
   double largest = 0;
   const int energy = peer.angles.column("energy");
+  ASSERT_GE(energy, 0);
+  ASSERT_EQ(peer.angles.rows.size(), ours.trajectory.samples.size());
   for (std::size_t k = 0; k < ours.trajectory.samples.size(); ++k) {
     const Sample& s = ours.trajectory.samples[k];
     a.x.push_back(s.t);

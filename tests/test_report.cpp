@@ -41,6 +41,16 @@ TEST(ExactPendulum, AgreesWithATightRun) {
   EXPECT_LT(worst, 1e-9);
 }
 
+TEST(ExactPendulum, ReleasedOneTurnOnIsTheSameMotionOneTurnOn) {
+  const Scene scene = test::scene_file("pendulum");
+  const auto plain = exact_pendulum(scene);
+  char q0[32];
+  std::snprintf(q0, sizeof q0, "%.17g", 2.5 + 2 * M_PI);
+  const auto turned = exact_pendulum(test::scene_file("pendulum", {{"initial.q.hinge", q0}}));
+  ASSERT_TRUE(plain && turned);
+  for (double t : {0.0, 0.7, 3.1, 9.9}) EXPECT_NEAR(turned->angle(t), plain->angle(t) + 2 * M_PI, 1e-9) << t;
+}
+
 TEST(ExactPendulum, OnlyForAPendulum) {
   EXPECT_FALSE(exact_pendulum(test::scene_file("double_pendulum")));
   EXPECT_FALSE(exact_pendulum(test::scene_file("zfold")));
@@ -110,6 +120,19 @@ TEST(WorkPrecision, CheapestRunMeetsEachAccuracyAtTheLeastWallTime) {
   EXPECT_EQ(cheapest[3].point, &report.points[1]);  // 1e-4
   EXPECT_EQ(cheapest[4].point, &report.points[1]);  // 1e-5
   EXPECT_EQ(cheapest[5].point, &report.points[3]);  // 1e-6: erk at 3 s
+}
+
+TEST(WorkPrecision, ExactRunsCountAsRoundOff) {
+  WorkPrecision report;
+  PrecisionPoint exact;
+  exact.angle_error = 0;
+  exact.wall_time_s = 1;
+  report.points = {exact};
+  // One row: the worst run already reaches round-off.
+  const auto cheapest = cheapest_by_accuracy(report);
+  ASSERT_EQ(cheapest.size(), 1u);
+  EXPECT_DOUBLE_EQ(cheapest[0].accuracy, 1e-16);
+  EXPECT_EQ(cheapest[0].point, &report.points[0]);
 }
 
 TEST(WorkPrecision, ReportCommandWritesTheTableThePlotAndTheSummary) {

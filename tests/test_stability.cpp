@@ -97,7 +97,7 @@ TEST(TimeBudget, StopsARunCleanlyAndKeepsWhatItComputed) {
   const RunResult run = simulate(scene, scene.run);
   ASSERT_EQ(run.status, RunStatus::failed);
   EXPECT_EQ(run.failure.check, "time budget");
-  EXPECT_GT(run.trajectory.samples.size(), 1u);
+  EXPECT_GE(run.trajectory.samples.size(), 1u);
   EXPECT_LT(run.trajectory.t_end(), scene.run.t_end);
 }
 

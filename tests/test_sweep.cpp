@@ -309,12 +309,16 @@ void expect_closure_solve_matches_dense(const Scene& scene, ClosureSolverKind ki
   Sweep sweep(scene.model);
   sweep.set_configuration(q.data());
   ASSERT_TRUE(solver->factorize(sweep, delta));
-  const VectorXd b = VectorXd::LinSpaced(m, -1, 1) + VectorXd::Constant(m, 0.25);
-  VectorXd x(m);
-  solver->solve(b.data(), x.data());
+  // Two right-hand sides at once, as the regulator solves them.
+  MatrixXd B(m, 2);
+  B.col(0) = VectorXd::LinSpaced(m, -1, 1) + VectorXd::Constant(m, 0.25);
+  B.col(1) = VectorXd::LinSpaced(m, 2, -0.5);
+  MatrixXd X(m, 2);
+  solver->solve(B.data(), X.data(), 2);
   MatrixXd R = dense_mobility(scene, components, q);
   R.diagonal().array() += delta;
-  EXPECT_LT(relative_error(x, R.ldlt().solve(b)), 1e-9) << m << " components, delta " << delta;
+  for (int c = 0; c < 2; ++c)
+    EXPECT_LT(relative_error(X.col(c), R.ldlt().solve(B.col(c))), 1e-9) << m << " components, delta " << delta;
 }
 
 TEST(ClosureSolver, DenseAndSparseSolveWithWPlusDelta) {
