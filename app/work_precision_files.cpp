@@ -30,6 +30,12 @@ std::string sci(double x) {
   return buf;
 }
 
+std::string seconds(double s) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", s);
+  return buf;
+}
+
 std::string status_text(const PrecisionPoint& p) {
   if (p.status == RunStatus::finished) return p.latches_missing ? std::to_string(p.latches_missing) + " latch(es) differ" : "ok";
   return std::string(run_status_name(p.status)) + (p.failure.empty() ? "" : ": " + p.failure);
@@ -87,7 +93,7 @@ void write_work_precision_markdown(const Scene& scene, const WorkPrecision& repo
     if (!c.point) continue;
     std::snprintf(buf, sizeof buf, "%.0e", c.accuracy);
     out << "| " << buf << " rad | " << integrator_name(c.point->integrator) << " | " << setting(*c.point) << " | "
-        << c.point->wall_time_s << " | " << c.point->rhs_calls << " |\n";
+        << seconds(c.point->wall_time_s) << " | " << c.point->rhs_calls << " |\n";
   }
   out << "\n## Every run\n\n";
   out << "| integrator | setting | status | wall time, s | steps | RHS calls | Jacobians | linear iterations | angle "
@@ -96,10 +102,9 @@ void write_work_precision_markdown(const Scene& scene, const WorkPrecision& repo
   if (!scene.loops.empty()) out << " max loop residual |";
   out << "\n|---|---|---|---|---|---|---|---|---|---|" << (scene.latches.empty() ? "" : "---|")
       << (scene.loops.empty() ? "" : "---|") << "\n";
-  out.precision(4);
   for (const PrecisionPoint& p : report.points) {
     out << "| " << integrator_name(p.integrator) << " | " << setting(p) << " | " << table_cell(status_text(p)) << " | "
-        << p.wall_time_s << " | " << p.stats.steps << " | " << p.rhs_calls << " | " << p.stats.jacobian_evals << " | "
+        << seconds(p.wall_time_s) << " | " << p.stats.steps << " | " << p.rhs_calls << " | " << p.stats.jacobian_evals << " | "
         << p.stats.linear_iterations << " | " << sci(p.angle_error) << " | " << sci(p.final_error) << " |";
     if (!scene.latches.empty()) out << ' ' << sci(p.latch_time_error) << " |";
     if (!scene.loops.empty()) out << ' ' << sci(p.max_loop_residual) << " |";

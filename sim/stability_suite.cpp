@@ -229,7 +229,8 @@ StabilityResult run_stability_case(const StabilityCase& c) {
     r.energy_drift = drift / std::abs(s.energy_initial);
   }
   if (c.branches) r.notes = describe_branches(scene, run.trajectory);
-  if (!c.conservative && s.energy_final - s.energy_initial > 0.01 * std::abs(s.energy_initial) + 1e-9) {
+  r.energy_rose = !c.conservative && s.energy_final - s.energy_initial > 0.01 * std::abs(s.energy_initial) + 1e-9;
+  if (r.energy_rose) {
     std::ostringstream note;
     note << "energy rose from " << s.energy_initial << " to " << s.energy_final
          << " J: a passive mechanism cannot gain energy, so this run is not physical";

@@ -39,6 +39,7 @@ struct StabilityResult {
   double energy_drift = std::numeric_limits<double>::quiet_NaN();  // max |E - E0| / |E0| (conservative cases)
   double max_closure_m = 0, max_closure_rad = 0, max_loop_residual = 0;
   int latches_engaged = 0, latches_total = 0;
+  bool energy_rose = false;        // a passive, non-conservative run that gained energy: not physical
   std::vector<std::string> notes;  // branches, closing time
   Trajectory trajectory;           // kept for the conservative (long) run's plot
 
