@@ -41,7 +41,7 @@ struct RegulatorSettings {
   double v_max = 2000;  // rad/s, above the mechanism's highest frequency
   double p0 = 1.0;
   double p1 = 0.5;
-  double regularization = 1e-6;  // delta relative to the largest eigenvalue of W(0)
+  double regularization = 2e-6;  // delta relative to the largest eigenvalue of W(0)
   ClosureSolverKind solver = ClosureSolverKind::automatic;
 };
 

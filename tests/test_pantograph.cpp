@@ -79,12 +79,14 @@ TEST_F(Pantograph, LoopsStayClosedOverTheWholeRun) {
 }
 
 // The same deployment by another way to the same equations: latch times
-// and the largest closure error agree to within the tolerances.
+// within the accuracy asked of them against the reduction (1e-5 s; GMRES's
+// inexact Newton steps move them by 2e-6 s, the sparse solver by 1e-9 s),
+// and the loops as closed.
 void expect_same_deployment(const RunResult& a, const RunResult& b, const Scene& scene) {
   ASSERT_EQ(b.status, RunStatus::finished) << describe(b.failure);
   ASSERT_EQ(a.trajectory.events.size(), b.trajectory.events.size());
   for (std::size_t k = 0; k < a.trajectory.events.size(); ++k)
-    EXPECT_NEAR(a.trajectory.events[k].t, b.trajectory.events[k].t, 1e-6);
+    EXPECT_NEAR(a.trajectory.events[k].t, b.trajectory.events[k].t, 1e-5);
   EXPECT_LT(summarize(scene, b).max_closure_m, 1e-6);
   EXPECT_LT(summarize(scene, b).max_loop_residual_before_latch, 1e-6);
 }
