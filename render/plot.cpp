@@ -93,6 +93,72 @@ void screen_points(const PlotFrame& f, const Series& s, std::vector<ImVec2>& out
             out.end());
 }
 
+
+// Points along a polyline at most `spacing` apart: what a legend box would hide.
+void trace_segments(const std::vector<ImVec2>& polyline, float spacing, std::vector<ImVec2>& out) {
+  for (std::size_t k = 0; k < polyline.size(); ++k) {
+    out.push_back(polyline[k]);
+    if (k == 0) continue;
+    const ImVec2 a = polyline[k - 1], b = polyline[k];
+    const int pieces = static_cast<int>(std::hypot(b.x - a.x, b.y - a.y) / spacing);
+    for (int i = 1; i < pieces; ++i) {
+      const float t = static_cast<float>(i) / pieces;
+      out.emplace_back(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y));
+    }
+  }
+}
+
+// The legend in the corner of the axes that hides the fewest drawn points
+// (top right on a tie), with as many entries as fit.
+void draw_legend(ImDrawList* draw, const PlotFrame& f, const PlotSpec& spec, const Theme& th,
+                 const std::vector<ImVec2>& drawn) {
+  const float font = ImGui::GetFontSize();
+  std::vector<std::pair<std::string, ImU32>> entries;
+  for (const Series& s : spec.series)
+    if (!s.ghost) entries.emplace_back(s.label, s.color);
+  const bool has_events = !spec.events.empty();
+  const float line = 1.2f * font, swatch = 1.6f * font, margin = 0.5f * font;
+  const int room = std::max(1, static_cast<int>((f.plot_max.y - f.plot_min.y - 1.5f * font) / line));
+  const int total = static_cast<int>(entries.size()) + (has_events ? 1 : 0);
+  std::string more;
+  if (room < 4 && total > room) return;  // too small for a useful legend
+  if (total > room) {
+    more = "+" + std::to_string(total - room + 1) + " more";
+    entries.resize(std::max(0, room - 1 - (has_events ? 1 : 0)));
+  }
+  if (has_events) entries.emplace_back(spec.event_label, th.event);
+  float widest = ImGui::CalcTextSize(more.c_str()).x;
+  for (const auto& e : entries) widest = std::max(widest, ImGui::CalcTextSize(e.first.c_str()).x);
+  const int rows = static_cast<int>(entries.size()) + (more.empty() ? 0 : 1);
+  if (rows == 0) return;
+  const ImVec2 box(widest + swatch + 1.5f * font, rows * line + margin);
+  ImVec2 box_min;
+  std::size_t fewest = std::numeric_limits<std::size_t>::max();
+  for (const bool top : {true, false})
+    for (const bool right : {true, false}) {
+      const ImVec2 corner(right ? f.plot_max.x - margin - box.x : f.plot_min.x + margin,
+                          top ? f.plot_min.y + margin : f.plot_max.y - margin - box.y);
+      const auto hidden = static_cast<std::size_t>(std::count_if(drawn.begin(), drawn.end(), [&](const ImVec2& p) {
+        return p.x >= corner.x && p.x <= corner.x + box.x && p.y >= corner.y && p.y <= corner.y + box.y;
+      }));
+      if (hidden < fewest) fewest = hidden, box_min = corner;
+    }
+  const ImVec2 box_max(box_min.x + box.x, box_min.y + box.y);
+  draw->AddRectFilled(box_min, box_max, (th.background & 0x00FFFFFF) | 0xE0000000);
+  draw->AddRect(box_min, box_max, th.grid);
+  float y = box_min.y + margin;
+  for (const auto& [label, color] : entries) {
+    const ImVec2 a(box_min.x + margin, y + line / 2), b(a.x + swatch, a.y);
+    if (has_events && label == spec.event_label && color == th.event)
+      dashed_line(draw, a, b, color, 1.5f, 4);
+    else
+      draw->AddLine(a, b, color, 2.5f);
+    draw->AddText(ImVec2(b.x + margin, y + (line - font) / 2), th.text, label.c_str());
+    y += line;
+  }
+  if (!more.empty()) draw->AddText(ImVec2(box_min.x + margin, y + (line - font) / 2), th.muted, more.c_str());
+}
+
 }  // namespace
 
 ImU32 palette(int i) {
@@ -209,11 +275,12 @@ PlotFrame draw_plot(ImDrawList* draw, ImVec2 origin, ImVec2 size, const PlotSpec
     const float sx = f.to_screen(e, spec.log_y ? 1 : y0).x;
     dashed_line(draw, ImVec2(sx, f.plot_min.y), ImVec2(sx, f.plot_max.y), th.event, 1.5f, 6);
   }
-  std::vector<ImVec2> points;
+  std::vector<ImVec2> points, drawn;
   for (int ghost = 1; ghost >= 0; --ghost)
     for (const Series& s : spec.series) {
       if (s.ghost != (ghost == 1)) continue;
       screen_points(f, s, points);
+      trace_segments(points, font, drawn);
       const ImU32 color = s.ghost ? (s.color & 0x00FFFFFF) | 0x60000000 : s.color;
       if (s.markers)
         for (std::size_t k = 0; k < s.x.size(); ++k)
@@ -228,41 +295,7 @@ PlotFrame draw_plot(ImDrawList* draw, ImVec2 origin, ImVec2 size, const PlotSpec
   draw->PopClipRect();
   draw->AddRect(f.plot_min, f.plot_max, th.frame);
 
-  // Legend, top right inside the axes, as many entries as fit.
-  std::vector<std::pair<std::string, ImU32>> entries;
-  for (const Series& s : spec.series)
-    if (!s.ghost) entries.emplace_back(s.label, s.color);
-  const bool has_events = !spec.events.empty();
-  const float line = 1.2f * font, swatch = 1.6f * font;
-  const int room = std::max(1, static_cast<int>((f.plot_max.y - f.plot_min.y - 1.5f * font) / line));
-  const int total = static_cast<int>(entries.size()) + (has_events ? 1 : 0);
-  std::string more;
-  if (room < 4 && total > room) return f;  // too small for a useful legend
-  if (total > room) {
-    more = "+" + std::to_string(total - room + 1) + " more";
-    entries.resize(std::max(0, room - 1 - (has_events ? 1 : 0)));
-  }
-  if (has_events) entries.emplace_back(spec.event_label, th.event);
-  float widest = ImGui::CalcTextSize(more.c_str()).x;
-  for (const auto& e : entries) widest = std::max(widest, ImGui::CalcTextSize(e.first.c_str()).x);
-  const int rows = static_cast<int>(entries.size()) + (more.empty() ? 0 : 1);
-  if (rows > 0) {
-    const ImVec2 box_max(f.plot_max.x - 0.5f * font, f.plot_min.y + 0.5f * font + rows * line + 0.5f * font);
-    const ImVec2 box_min(box_max.x - widest - swatch - 1.5f * font, f.plot_min.y + 0.5f * font);
-    draw->AddRectFilled(box_min, box_max, (th.background & 0x00FFFFFF) | 0xE0000000);
-    draw->AddRect(box_min, box_max, th.grid);
-    float y = box_min.y + 0.5f * font;
-    for (const auto& [label, color] : entries) {
-      const ImVec2 a(box_min.x + 0.5f * font, y + line / 2), b(a.x + swatch, a.y);
-      if (has_events && label == spec.event_label && color == th.event)
-        dashed_line(draw, a, b, color, 1.5f, 4);
-      else
-        draw->AddLine(a, b, color, 2.5f);
-      draw->AddText(ImVec2(b.x + 0.5f * font, y + (line - font) / 2), th.text, label.c_str());
-      y += line;
-    }
-    if (!more.empty()) draw->AddText(ImVec2(box_min.x + 0.5f * font, y + (line - font) / 2), th.muted, more.c_str());
-  }
+  draw_legend(draw, f, spec, th, drawn);
   return f;
 }
 

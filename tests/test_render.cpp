@@ -163,6 +163,38 @@ TEST_F(Render, LogLogPlotPlacesDecadesAndMarkers) {
   EXPECT_GT(n.inside, 200);
 }
 
+TEST_F(Render, LegendLeavesTheDataVisible) {
+  // Wall time against size: rising curves end in the top right corner, where
+  // a legend would hide the largest runs. The legend moves to a free corner.
+  render::PlotSpec spec;
+  spec.title = "wall time against size";
+  spec.log_x = spec.log_y = true;
+  for (int i = 0; i < 6; ++i) {
+    render::Series s;
+    s.label = "a long label for method " + std::to_string(i);
+    s.color = render::palette(i);
+    s.markers = true;
+    for (double n : {10.0, 100.0, 1000.0, 3000.0}) {
+      s.x.push_back(n);
+      s.y.push_back(1e-3 * n * (1 + 0.1 * i));
+    }
+    spec.series.push_back(s);
+  }
+  render::PlotRenderer plotter(640, 360);
+  Image image;
+  const render::PlotFrame frame = plotter.draw(spec, image);
+  const render::Series& top = spec.series.back();
+  const ImVec2 last = frame.to_screen(top.x.back(), top.y.back());
+  const int r = top.color & 0xFF, g = (top.color >> 8) & 0xFF, b = (top.color >> 16) & 0xFF;
+  int seen = 0;
+  for (int dy = -2; dy <= 2; ++dy)
+    for (int dx = -4; dx <= 0; ++dx) {
+      const std::uint8_t* p = image.pixel(static_cast<int>(last.x) + dx, static_cast<int>(last.y) + dy);
+      seen += std::abs(p[0] - r) <= 12 && std::abs(p[1] - g) <= 12 && std::abs(p[2] - b) <= 12;
+    }
+  EXPECT_GT(seen, 3) << "the largest run's marker is hidden";
+}
+
 TEST(FrameTimes, RangeAndRate) {
   app::RenderOptions o;
   o.fps = 10;
