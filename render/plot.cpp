@@ -94,24 +94,56 @@ void screen_points(const PlotFrame& f, const Series& s, std::vector<ImVec2>& out
 }
 
 
-// Points along a polyline at most `spacing` apart: what a legend box would hide.
-void trace_segments(const std::vector<ImVec2>& polyline, float spacing, std::vector<ImVec2>& out) {
-  for (std::size_t k = 0; k < polyline.size(); ++k) {
-    out.push_back(polyline[k]);
-    if (k == 0) continue;
-    const ImVec2 a = polyline[k - 1], b = polyline[k];
-    const int pieces = static_cast<int>(std::hypot(b.x - a.x, b.y - a.y) / spacing);
-    for (int i = 1; i < pieces; ++i) {
-      const float t = static_cast<float>(i) / pieces;
-      out.emplace_back(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y));
+// Which pixels of the axes hold some curve, at a 2 px resolution: what a
+// legend box would hide, with curves drawn on top of each other counted once.
+class Occupancy {
+ public:
+  explicit Occupancy(const PlotFrame& f)
+      : origin_(f.plot_min),
+        columns_(std::max(1, static_cast<int>((f.plot_max.x - f.plot_min.x) / cell) + 1)),
+        rows_(std::max(1, static_cast<int>((f.plot_max.y - f.plot_min.y) / cell) + 1)),
+        taken_(static_cast<std::size_t>(columns_) * rows_, 0) {}
+
+  // Marks a polyline's pixels, sampled at most a cell apart.
+  void mark(const std::vector<ImVec2>& polyline) {
+    for (std::size_t k = 0; k < polyline.size(); ++k) {
+      mark(polyline[k]);
+      if (k == 0) continue;
+      const ImVec2 a = polyline[k - 1], b = polyline[k];
+      const int pieces = static_cast<int>(std::hypot(b.x - a.x, b.y - a.y) / cell);
+      for (int i = 1; i < pieces; ++i) {
+        const float t = static_cast<float>(i) / pieces;
+        mark(ImVec2(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)));
+      }
     }
   }
-}
 
-// The legend in the corner of the axes that hides the fewest drawn points
+  int count(ImVec2 box_min, ImVec2 box_max) const {
+    int n = 0;
+    for (int r = row(box_min.y); r <= row(box_max.y); ++r)
+      for (int c = column(box_min.x); c <= column(box_max.x); ++c) n += taken_[index(c, r)];
+    return n;
+  }
+
+ private:
+  static constexpr float cell = 2.0f;
+  int column(float x) const { return std::clamp(static_cast<int>((x - origin_.x) / cell), 0, columns_ - 1); }
+  int row(float y) const { return std::clamp(static_cast<int>((y - origin_.y) / cell), 0, rows_ - 1); }
+  std::size_t index(int c, int r) const { return static_cast<std::size_t>(r) * columns_ + c; }
+  void mark(ImVec2 p) {
+    const float x = (p.x - origin_.x) / cell, y = (p.y - origin_.y) / cell;
+    if (x >= 0 && y >= 0 && x < columns_ && y < rows_) taken_[index(static_cast<int>(x), static_cast<int>(y))] = 1;
+  }
+
+  ImVec2 origin_;
+  int columns_, rows_;
+  std::vector<char> taken_;
+};
+
+// The legend in the corner of the axes that hides the least of the curves
 // (top right on a tie), with as many entries as fit.
 void draw_legend(ImDrawList* draw, const PlotFrame& f, const PlotSpec& spec, const Theme& th,
-                 const std::vector<ImVec2>& drawn) {
+                 const Occupancy& drawn) {
   const float font = ImGui::GetFontSize();
   std::vector<std::pair<std::string, ImU32>> entries;
   for (const Series& s : spec.series)
@@ -133,14 +165,12 @@ void draw_legend(ImDrawList* draw, const PlotFrame& f, const PlotSpec& spec, con
   if (rows == 0) return;
   const ImVec2 box(widest + swatch + 1.5f * font, rows * line + margin);
   ImVec2 box_min;
-  std::size_t fewest = std::numeric_limits<std::size_t>::max();
+  int fewest = std::numeric_limits<int>::max();
   for (const bool top : {true, false})
     for (const bool right : {true, false}) {
       const ImVec2 corner(right ? f.plot_max.x - margin - box.x : f.plot_min.x + margin,
                           top ? f.plot_min.y + margin : f.plot_max.y - margin - box.y);
-      const auto hidden = static_cast<std::size_t>(std::count_if(drawn.begin(), drawn.end(), [&](const ImVec2& p) {
-        return p.x >= corner.x && p.x <= corner.x + box.x && p.y >= corner.y && p.y <= corner.y + box.y;
-      }));
+      const int hidden = drawn.count(corner, ImVec2(corner.x + box.x, corner.y + box.y));
       if (hidden < fewest) fewest = hidden, box_min = corner;
     }
   const ImVec2 box_max(box_min.x + box.x, box_min.y + box.y);
@@ -275,12 +305,13 @@ PlotFrame draw_plot(ImDrawList* draw, ImVec2 origin, ImVec2 size, const PlotSpec
     const float sx = f.to_screen(e, spec.log_y ? 1 : y0).x;
     dashed_line(draw, ImVec2(sx, f.plot_min.y), ImVec2(sx, f.plot_max.y), th.event, 1.5f, 6);
   }
-  std::vector<ImVec2> points, drawn;
+  std::vector<ImVec2> points;
+  Occupancy drawn(f);
   for (int ghost = 1; ghost >= 0; --ghost)
     for (const Series& s : spec.series) {
       if (s.ghost != (ghost == 1)) continue;
       screen_points(f, s, points);
-      trace_segments(points, font, drawn);
+      drawn.mark(points);
       const ImU32 color = s.ghost ? (s.color & 0x00FFFFFF) | 0x60000000 : s.color;
       if (s.markers)
         for (std::size_t k = 0; k < s.x.size(); ++k)
