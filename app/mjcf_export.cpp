@@ -7,6 +7,7 @@
 
 #include "dynamics.hpp"
 #include "kinematics.hpp"
+#include "number_text.hpp"
 #include "output_file.hpp"
 
 namespace unfurl::app {

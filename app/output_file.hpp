@@ -27,7 +27,4 @@ class OutputFile {
 // Creates the directory (and its parents); throws on failure.
 void make_directory(const std::string& dir);
 
-// The shortest text that reads back as the same double; "nan"/"inf" kept.
-std::string format_number(double x);
-
 }  // namespace unfurl::app

@@ -1,6 +1,7 @@
 #include "run_files.hpp"
 
 #include "json_writer.hpp"
+#include "number_text.hpp"
 #include "output_file.hpp"
 
 namespace unfurl::app {

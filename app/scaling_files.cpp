@@ -6,9 +6,11 @@
 
 #include "gl_context.hpp"
 #include "markdown.hpp"
+#include "number_text.hpp"
 #include "output_file.hpp"
 #include "plot_renderer.hpp"
 #include "png_file.hpp"
+#include "report_plots.hpp"
 
 namespace unfurl::app {
 
@@ -16,19 +18,6 @@ namespace {
 
 std::string family_label(const ScalingScene& s) {
   return s.family + (s.variant.empty() ? "" : " (" + s.variant + ")");
-}
-
-// One series per label, with markers, in the palette's order.
-std::vector<render::Series> series_of(std::map<std::string, render::Series> curves) {
-  std::vector<render::Series> out;
-  int color = 0;
-  for (auto& [label, s] : curves) {
-    s.label = label;
-    s.color = render::palette(color++);
-    s.markers = true;
-    out.push_back(std::move(s));
-  }
-  return out;
 }
 
 render::PlotSpec rhs_plot(const ScalingReport& report) {
@@ -43,7 +32,7 @@ render::PlotSpec rhs_plot(const ScalingReport& report) {
     s.x.push_back(t.bodies);
     s.y.push_back(t.ns_per_body);
   }
-  spec.series = series_of(std::move(curves));
+  spec.series = render::marked_series(std::move(curves));
   return spec;
 }
 
@@ -62,7 +51,7 @@ render::PlotSpec run_plot(const ScalingReport& report) {
     s.x.push_back(t.bodies);
     s.y.push_back(t.wall_time_s);
   }
-  spec.series = series_of(std::move(curves));
+  spec.series = render::marked_series(std::move(curves));
   return spec;
 }
 

@@ -6,9 +6,11 @@
 
 #include "gl_context.hpp"
 #include "markdown.hpp"
+#include "number_text.hpp"
 #include "output_file.hpp"
 #include "plot_renderer.hpp"
 #include "png_file.hpp"
+#include "report_plots.hpp"
 
 namespace unfurl::app {
 
@@ -97,18 +99,13 @@ render::PlotSpec long_run_plot(const StabilityResult& r) {
 
 // Wall time against a case parameter, one curve per key (integrator, kind).
 render::PlotSpec wall_time_plot(const std::string& title, const std::string& x_label,
-                                const std::map<std::string, std::pair<std::vector<double>, std::vector<double>>>& curves) {
+                                std::map<std::string, render::Series> curves) {
   render::PlotSpec spec;
   spec.title = title;
   spec.y_label = "wall time, s (finished runs)";
   spec.x_label = x_label;
   spec.log_x = spec.log_y = true;
-  int color = 0;
-  for (const auto& [label, xy] : curves) {
-    render::Series s = series(label, color++, xy.first, xy.second);
-    s.markers = true;
-    spec.series.push_back(s);
-  }
+  spec.series = render::marked_series(std::move(curves));
   return spec;
 }
 
@@ -125,19 +122,19 @@ std::vector<std::string> write_stability_plots(const StabilityReport& report, co
     plots.emplace_back(gains_residual_plot(report.gains), "gains_residuals.png");
     plots.emplace_back(gains_eigen_plot(report.gains), "gains_eigenvalue.png");
   }
-  std::map<std::string, std::pair<std::vector<double>, std::vector<double>>> stiffness, arrays;
+  std::map<std::string, render::Series> stiffness, arrays;
   for (const StabilityResult& r : report.results) {
     if (r.spec.conservative && !r.trajectory.empty() && r.spec.label.find("1e4") != std::string::npos)
       plots.emplace_back(long_run_plot(r), "long_run.png");
     if (r.status != RunStatus::finished) continue;
     if (r.spec.group == "latch stiffness") {
       auto& c = stiffness[r.spec.label.substr(r.spec.label.find(", ") + 2)];
-      c.first.push_back(first_number(r.spec.label, "k_L = "));
-      c.second.push_back(r.wall_time_s);
+      c.x.push_back(first_number(r.spec.label, "k_L = "));
+      c.y.push_back(r.wall_time_s);
     } else if (r.spec.group == "large array") {
       auto& c = arrays[r.spec.scene.substr(0, r.spec.scene.find(':')) + ", 1 s"];
-      c.first.push_back(r.bodies);
-      c.second.push_back(r.wall_time_s);
+      c.x.push_back(r.bodies);
+      c.y.push_back(r.wall_time_s);
     }
   }
   if (!stiffness.empty())

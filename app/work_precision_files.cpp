@@ -5,6 +5,7 @@
 
 #include "gl_context.hpp"
 #include "markdown.hpp"
+#include "number_text.hpp"
 #include "output_file.hpp"
 #include "plot_renderer.hpp"
 #include "png_file.hpp"

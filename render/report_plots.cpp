@@ -53,4 +53,16 @@ PlotSpec work_precision_plot(const WorkPrecision& report, PrecisionMeasure measu
   return spec;
 }
 
+std::vector<Series> marked_series(std::map<std::string, Series> curves) {
+  std::vector<Series> out;
+  int color = 0;
+  for (auto& [label, s] : curves) {
+    s.label = label;
+    s.color = palette(color++);
+    s.markers = true;
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
 }  // namespace unfurl::render

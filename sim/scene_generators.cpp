@@ -5,19 +5,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "number_text.hpp"
+
 namespace unfurl {
 
 namespace {
 
-// The shortest text that reads back as the same double.
-std::string num(double x) {
-  std::ostringstream s;
-  s.precision(17);
-  s << x;
-  return s.str();
-}
-
-std::string vec(double x, double y, double z) { return "[" + num(x) + ", " + num(y) + ", " + num(z) + "]"; }
+std::string vec(double x, double y, double z) { return "[" + format_number(x) + ", " + format_number(y) + ", " + format_number(z) + "]"; }
 
 // The geometry and loads of SCENES.md, shared by the pantograph and z-fold.
 constexpr double kFrameHalf = 0.30, kPanelHalf = 0.60, kChainX = 0.45, kPitch = 0.03;
@@ -36,7 +30,7 @@ struct Writer {
   void body(const std::string& name, const std::string& parent, double mass, const double inertia[3],
             double share, const std::string& mesh, const std::string& joint, const std::string& parent_point,
             const std::string& child_point) {
-    out << "  - name: " << name << "\n    parent: " << parent << "\n    mass: " << num(mass * share)
+    out << "  - name: " << name << "\n    parent: " << parent << "\n    mass: " << format_number(mass * share)
         << "\n    inertia: " << vec(inertia[0] * share, inertia[1] * share, inertia[2] * share) << "\n";
     if (!mesh.empty()) out << "    mesh: " << mesh << "\n";
     out << "    joint: {name: " << joint << ", type: revolute, axis: [1, 0, 0], parent_point: " << parent_point
@@ -74,10 +68,10 @@ void chain_forces(std::ostringstream& springs, std::ostringstream& latches, int 
                   double first_sign) {
   for (int j = 0; j < count; ++j) {
     const double s = j == 0 ? first_sign : (j % 2 == 1 ? -first_sign : first_sign);
-    springs << "  - {joint: j" << first + j << ", stiffness: " << num(kSpring) << ", free_position: " << num(-s * M_PI / 2)
-            << ", damping: " << num(kSpringDamping) << "}\n";
-    latches << "  - {joint: j" << first + j << ", position: 0, stiffness: " << num(kLatch)
-            << ", damping: " << num(kLatchDamping) << "}\n";
+    springs << "  - {joint: j" << first + j << ", stiffness: " << format_number(kSpring) << ", free_position: " << format_number(-s * M_PI / 2)
+            << ", damping: " << format_number(kSpringDamping) << "}\n";
+    latches << "  - {joint: j" << first + j << ", position: 0, stiffness: " << format_number(kLatch)
+            << ", damping: " << format_number(kLatchDamping) << "}\n";
   }
 }
 
@@ -121,7 +115,7 @@ std::string generate_pantograph(int stages) {
     return ((j - 2 * N - 2) % 2 == 1 ? 2 : -2) * kOpen;
   };
   q << "  q: {";
-  for (int j = 1; j <= 3 * N + 2; ++j) q << (j > 1 ? ", " : "") << "j" << j << ": " << num(angle(j));
+  for (int j = 1; j <= 3 * N + 2; ++j) q << (j > 1 ? ", " : "") << "j" << j << ": " << format_number(angle(j));
   q << "}\n";
   w.out << "\nsprings:\n"
         << springs.str() << "\nlatches:\n"
@@ -143,8 +137,8 @@ std::string generate_zfold(int panels) {
   chain(w, "A", -kChainX, 1, N, 1, 1.0);
   std::ostringstream springs, latches, q;
   chain_forces(springs, latches, 1, N + 1, -1);
-  q << "  q: {j1: " << num(-M_PI / 2);
-  for (int j = 2; j <= N + 1; ++j) q << ", j" << j << ": " << num((j % 2 == 0 ? 1 : -1) * M_PI);
+  q << "  q: {j1: " << format_number(-M_PI / 2);
+  for (int j = 2; j <= N + 1; ++j) q << ", j" << j << ": " << format_number((j % 2 == 0 ? 1 : -1) * M_PI);
   q << "}\n";
   w.out << "\nsprings:\n"
         << springs.str() << "\nlatches:\n"
@@ -171,8 +165,8 @@ std::string generate_chain(int links) {
     const std::string parent = i == 1 ? "ground" : "link" + std::to_string(i - 1);
     w.body("link" + std::to_string(i), parent, mass, inertia, 1.0, "", "j" + std::to_string(i),
            i == 1 ? vec(0, 0, 0) : vec(0, 0, -length / 2), vec(0, 0, length / 2));
-    dampers << "  - {joint: j" << i << ", damping: " << num(1e-4 * mass) << "}\n";
-    q << (i > 1 ? ", " : "") << "j" << i << ": " << num(i == 1 ? 1.0 : 0.5 / N);
+    dampers << "  - {joint: j" << i << ", damping: " << format_number(1e-4 * mass) << "}\n";
+    q << (i > 1 ? ", " : "") << "j" << i << ": " << format_number(i == 1 ? 1.0 : 0.5 / N);
   }
   w.out << "\ndampers:\n"
         << dampers.str() << "\ninitial:\n  q: {" << q.str()

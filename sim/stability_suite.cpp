@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "dynamics.hpp"
+#include "number_text.hpp"
 #include "scene_generators.hpp"
 #include "summary.hpp"
 
@@ -13,25 +14,10 @@ namespace unfurl {
 
 namespace {
 
-// The shortest text that reads back as the same double.
-std::string num(double x) {
-  std::ostringstream s;
-  s.precision(17);
-  s << x;
-  const double back = std::stod(s.str());
-  for (int digits = 1; digits < 17; ++digits) {
-    std::ostringstream shorter;
-    shorter.precision(digits);
-    shorter << x;
-    if (std::stod(shorter.str()) == back) return shorter.str();
-  }
-  return s.str();
-}
-
 // Overrides that set one field of every latch (or spring) of a scene.
 std::vector<Override> for_each_joint(const std::string& list, const std::string& field, double value, int joints) {
   std::vector<Override> out;
-  for (int j = 0; j < joints; ++j) out.push_back({list + "." + std::to_string(j) + "." + field, num(value)});
+  for (int j = 0; j < joints; ++j) out.push_back({list + "." + std::to_string(j) + "." + field, format_number(value)});
   return out;
 }
 
@@ -42,7 +28,7 @@ StabilityCase make(std::string group, std::string label, std::string scene, std:
   c.label = std::move(label);
   c.scene = std::move(scene);
   c.overrides = std::move(overrides);
-  c.overrides.push_back({"run.max_wall_time", num(budget_s)});
+  c.overrides.push_back({"run.max_wall_time", format_number(budget_s)});
   return c;
 }
 
@@ -57,7 +43,7 @@ void latch_stiffness_cases(std::vector<StabilityCase>& out, double budget_s) {
       o.push_back({"run.rtol", "1e-8"});
       o.push_back({"run.atol", "1e-10"});
       o.push_back({"run.dt", "2e-4"});
-      StabilityCase c = make("latch stiffness", "k_L = " + num(k) + ", " + integrator_name(kind), "pantograph", o, budget_s);
+      StabilityCase c = make("latch stiffness", "k_L = " + format_number(k) + ", " + integrator_name(kind), "pantograph", o, budget_s);
       c.small = kind == IntegratorKind::cvode_bdf && k <= 1e5;
       c.probe = k > 1e7;
       out.push_back(c);
@@ -66,8 +52,8 @@ void latch_stiffness_cases(std::vector<StabilityCase>& out, double budget_s) {
 
 void regulator_cases(std::vector<StabilityCase>& out, double budget_s) {
   for (double v : {10.0, 100.0, 1e3, 2e3, 1e4, 1e5}) {
-    StabilityCase c = make("regulator v_max", "v_max = " + num(v) + " rad/s", "pantograph",
-                           {{"regulator.v_max", num(v)}}, budget_s);
+    StabilityCase c = make("regulator v_max", "v_max = " + format_number(v) + " rad/s", "pantograph",
+                           {{"regulator.v_max", format_number(v)}}, budget_s);
     // Far below the mechanism's frequencies at the latch impacts the loops
     // open.
     if (v <= 10) c.expected_check = "closure";
@@ -85,9 +71,9 @@ void regulator_cases(std::vector<StabilityCase>& out, double budget_s) {
 void mass_ratio_cases(std::vector<StabilityCase>& out, double budget_s) {
   // Panel A2 of the z-fold scaled against its neighbours A1 and A3.
   for (double r : {1e-3, 1e-2, 1e-1, 10.0, 100.0, 1e3}) {
-    const std::string inertia = "[" + num(0.4802 * r) + ", " + num(0.2702 * r) + ", " + num(0.75 * r) + "]";
-    StabilityCase c = make("mass ratio", "panel A2 x " + num(r) + " (mass and inertia)", "zfold",
-                           {{"bodies.panel_A2.mass", num(4.0 * r)}, {"bodies.panel_A2.inertia", inertia}}, budget_s);
+    const std::string inertia = "[" + format_number(0.4802 * r) + ", " + format_number(0.2702 * r) + ", " + format_number(0.75 * r) + "]";
+    StabilityCase c = make("mass ratio", "panel A2 x " + format_number(r) + " (mass and inertia)", "zfold",
+                           {{"bodies.panel_A2.mass", format_number(4.0 * r)}, {"bodies.panel_A2.inertia", inertia}}, budget_s);
     c.small = true;
     out.push_back(c);
   }
@@ -108,7 +94,7 @@ void singular_start_cases(std::vector<StabilityCase>& out, double budget_s) {
   const Scene reference = load_builtin_scene("pantograph");
   StabilityCase open = make("singular start", "loop A1 open by 1e-3 rad at the start", "pantograph",
                             {{"closure_tolerance", "0.01"},
-                             {"initial.q.j9", num(reference.q0[8] + 1e-3)},
+                             {"initial.q.j9", format_number(reference.q0[8] + 1e-3)},
                              {"run.sample", "1e-4"}},
                             budget_s);
   open.closing_time = open.small = true;
@@ -279,11 +265,11 @@ std::vector<std::string> describe_branches(const Scene& scene, const Trajectory&
 
 GainComparison compare_gain_tunings(double budget_s) {
   GainComparison g;
-  const Scene full = load_builtin_scene("pantograph", {{"run.max_wall_time", num(budget_s)}});
+  const Scene full = load_builtin_scene("pantograph", {{"run.max_wall_time", format_number(budget_s)}});
   // The paper's run is let go past the closure check, up to loops open by
   // metres, to show where it goes.
   const Scene paper = load_builtin_scene(
-      "pantograph", {{"regulator.gains", "paper"}, {"run.max_closure", "1e3"}, {"run.max_wall_time", num(budget_s)}});
+      "pantograph", {{"regulator.gains", "paper"}, {"run.max_closure", "1e3"}, {"run.max_wall_time", format_number(budget_s)}});
   const RunResult run_full = simulate(full, full.run), run_paper = simulate(paper, paper.run);
   for (const Sample& s : run_full.trajectory.samples) {
     g.t_full.push_back(s.t);

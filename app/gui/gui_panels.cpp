@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "number_text.hpp"
 #include "output_file.hpp"
 #include "trajectory_plots.hpp"
 
