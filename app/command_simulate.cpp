@@ -20,8 +20,8 @@ const char* kHelp =
     "                       [--atol X] [--dt X] [--sample DT] [--set KEY=VALUE ...]\n"
     "\n"
     "Simulates a scene and writes into DIR (default out/):\n"
-    "  trajectory.csv   t, then q.J, dq.J, p.J per joint, residual.L, closure_m.L,\n"
-    "                   closure_rad.L per loop, and energy, every DT seconds\n"
+    "  trajectory.csv   t, then q.J, dq.J, p.J per joint, closure_m.L and closure_rad.L\n"
+    "                   (the geometric gap) per loop, and energy, every DT seconds\n"
     "  events.csv       latch engagements (t, event, joint)\n"
     "  summary.json     integrator, statistics, latch times, largest residuals, energy\n"
     "\n"
@@ -49,9 +49,8 @@ void print_summary(const Scene& scene, const RunResult& result, const RunSummary
     for (const auto& joint : s.unlatched) std::printf("               %-10s never latched\n", joint.c_str());
   }
   if (!scene.loops.empty()) {
-    std::printf("loops        max |eps pi| %.3g (%.3g before the first latch)\n", s.max_loop_residual,
-                s.max_loop_residual_before_latch);
-    std::printf("closure      max %.3g m, %.3g rad\n", s.max_closure_m, s.max_closure_rad);
+    std::printf("loop gap     max %.3g m, %.3g rad (%.3g m, %.3g rad before the first latch)\n", s.max_closure_m,
+                s.max_closure_rad, s.max_closure_m_before_latch, s.max_closure_rad_before_latch);
   }
   std::printf("energy       %.9g J at t = 0, %.9g J at t = %g s\n", s.energy_initial, s.energy_final, s.t_reached);
   std::printf("files        %s/trajectory.csv, %s/events.csv, %s/summary.json\n", dir.c_str(), dir.c_str(),

@@ -16,8 +16,7 @@ void write_trajectory_csv(const Scene& scene, const Trajectory& trajectory, cons
     const std::string& name = model.joints[model.joint_of_coordinate[c]].name;
     out << ",q." << name << ",dq." << name << ",p." << name;
   }
-  for (const Loop& loop : scene.loops)
-    out << ",residual." << loop.name << ",closure_m." << loop.name << ",closure_rad." << loop.name;
+  for (const Loop& loop : scene.loops) out << ",closure_m." << loop.name << ",closure_rad." << loop.name;
   out << ",energy\n";
   for (const Sample& s : trajectory.samples) {
     out << format_number(s.t);
@@ -25,8 +24,7 @@ void write_trajectory_csv(const Scene& scene, const Trajectory& trajectory, cons
       out << ',' << format_number(s.y[L.q() + c]) << ',' << format_number(s.dq[c]) << ','
           << format_number(s.y[L.p() + c]);
     for (std::size_t l = 0; l < scene.loops.size(); ++l)
-      out << ',' << format_number(s.loop_residual[l]) << ',' << format_number(s.closure[l].distance) << ','
-          << format_number(s.closure[l].angle);
+      out << ',' << format_number(s.closure[l].distance) << ',' << format_number(s.closure[l].angle);
     out << ',' << format_number(s.energy.total()) << '\n';
   }
   file.commit();
@@ -76,10 +74,10 @@ void write_summary_json(const Scene& scene, const RunResult& result, const RunSu
   json.begin_array("unlatched");
   for (const std::string& joint : summary.unlatched) json.value("", joint);
   json.end_array();
-  json.value("max_loop_residual", summary.max_loop_residual);
-  json.value("max_loop_residual_before_latch", summary.max_loop_residual_before_latch);
   json.value("max_closure_m", summary.max_closure_m);
   json.value("max_closure_rad", summary.max_closure_rad);
+  json.value("max_closure_m_before_latch", summary.max_closure_m_before_latch);
+  json.value("max_closure_rad_before_latch", summary.max_closure_rad_before_latch);
   json.value("energy_initial", summary.energy_initial);
   json.value("energy_final", summary.energy_final);
   json.begin_object("final_q");

@@ -24,7 +24,7 @@ const char* scene_flags_help() {
          "                        to 100 states; run.linear_solver)\n"
          "  --rtol X              relative tolerance of the adaptive integrators (run.rtol)\n"
          "  --atol X              absolute tolerance of the joint angles (run.atol); momenta get\n"
-         "                        100 X, loop residuals X/100, regulator states 1e4 X\n"
+         "                        100 X, regulator states 1e4 X\n"
          "  --dt X                step of the fixed-step rk4 (run.dt)\n"
          "  --sample DT           output interval in seconds (run.sample, default 0.01)\n";
 }

@@ -50,8 +50,8 @@ render::Series series(const std::string& label, int color, std::vector<double> x
 
 render::PlotSpec gains_residual_plot(const GainComparison& g) {
   render::PlotSpec spec;
-  spec.title = "pantograph: loop residual, paper's diagonal gains (16) against full-matrix gains";
-  spec.y_label = "max over loops |eps pi|, m and rad";
+  spec.title = "pantograph: loop gap, paper's diagonal gains (16) against full-matrix gains";
+  spec.y_label = "largest geometric gap, m and rad";
   spec.x_label = "time, s";
   spec.log_y = true;
   spec.series.push_back(series("paper (16), diagonal of W(0)", 3, g.t_paper, g.residual_paper));
@@ -158,7 +158,7 @@ void write_stability_csv(const StabilityReport& report, const std::string& path)
   OutputFile file(path);
   std::ostream& out = file.stream();
   out << "group,case,scene,status,as_expected,failed_check,t_reached,wall_time_s,steps,rhs_calls,min_step,bodies,"
-         "loop_components,energy_initial,energy_final,energy_drift,max_closure_m,max_closure_rad,max_loop_residual,"
+         "loop_components,energy_initial,energy_final,energy_drift,max_closure_m,max_closure_rad,"
          "latches_engaged,latches_total\n";
   for (const StabilityResult& r : report.results)
     out << r.spec.group << ',' << '"' << r.spec.label << '"' << ',' << r.spec.scene << ',' << run_status_name(r.status)
@@ -166,8 +166,7 @@ void write_stability_csv(const StabilityReport& report, const std::string& path)
         << format_number(r.wall_time_s) << ',' << r.steps << ',' << r.rhs_calls << ',' << format_number(r.min_step)
         << ',' << r.bodies << ',' << r.loop_components << ',' << format_number(r.energy_initial) << ','
         << format_number(r.energy_final) << ',' << format_number(r.energy_drift) << ','
-        << format_number(r.max_closure_m) << ',' << format_number(r.max_closure_rad) << ','
-        << format_number(r.max_loop_residual) << ',' << r.latches_engaged << ',' << r.latches_total << '\n';
+        << format_number(r.max_closure_m) << ',' << format_number(r.max_closure_rad) << ',' << r.latches_engaged << ',' << r.latches_total << '\n';
   file.commit();
 }
 

@@ -66,7 +66,7 @@ Trajectory read_trajectory_csv(const Scene& scene, const std::string& path) {
     return it->second;
   };
   const int t_col = need("t");
-  std::vector<int> q_col, dq_col, p_col, residual_col, gap_m_col, gap_rad_col;
+  std::vector<int> q_col, dq_col, p_col, gap_m_col, gap_rad_col;
   for (int c = 0; c < model.nq; ++c) {
     const std::string& joint = model.joints[model.joint_of_coordinate[c]].name;
     q_col.push_back(need("q." + joint));
@@ -74,7 +74,6 @@ Trajectory read_trajectory_csv(const Scene& scene, const std::string& path) {
     p_col.push_back(need("p." + joint));
   }
   for (const Loop& loop : scene.loops) {
-    residual_col.push_back(need("residual." + loop.name));
     gap_m_col.push_back(need("closure_m." + loop.name));
     gap_rad_col.push_back(need("closure_rad." + loop.name));
   }
@@ -96,7 +95,6 @@ Trajectory read_trajectory_csv(const Scene& scene, const std::string& path) {
       s.dq[c] = parse(cells[dq_col[c]], where);
     }
     for (std::size_t l = 0; l < scene.loops.size(); ++l) {
-      s.loop_residual.push_back(parse(cells[residual_col[l]], where));
       s.closure.push_back({parse(cells[gap_m_col[l]], where), parse(cells[gap_rad_col[l]], where)});
     }
     s.energy.unattributed = parse(cells[energy_col], where);

@@ -49,7 +49,7 @@ void write_work_precision_csv(const WorkPrecision& report, const std::string& pa
   std::ostream& out = file.stream();
   out << "scene,integrator,rtol,atol,dt,status,runs,wall_time_s,steps,rhs_calls,jacobian_evals,linear_setups,"
          "linear_iterations,nonlinear_iterations,error_test_failures,min_step,angle_error,angle_error_whole_run,"
-         "final_error,latch_time_error,latches_missing,max_loop_residual,failure\n";
+         "final_error,latch_time_error,latches_missing,max_loop_gap_m,failure\n";
   for (const PrecisionPoint& p : report.points) {
     std::string failure = p.failure;
     for (char& c : failure)
@@ -61,7 +61,7 @@ void write_work_precision_csv(const WorkPrecision& report, const std::string& pa
         << p.stats.nonlinear_iterations << ',' << p.stats.error_test_failures << ','
         << format_number(p.stats.min_step) << ',' << format_number(p.angle_error) << ','
         << format_number(p.angle_error_whole_run) << ',' << format_number(p.final_error) << ','
-        << format_number(p.latch_time_error) << ',' << p.latches_missing << ',' << format_number(p.max_loop_residual)
+        << format_number(p.latch_time_error) << ',' << p.latches_missing << ',' << format_number(p.max_loop_gap)
         << ',' << failure << '\n';
   }
   file.commit();
@@ -83,8 +83,8 @@ void write_work_precision_markdown(const Scene& scene, const WorkPrecision& repo
   if (!scene.latches.empty() && !scene.loops.empty())
     out << " (the reference's first latch: after it the deployed state can be a branch point where exact runs "
            "part, so the final state and the latch times are compared instead)";
-  out << ". Adaptive integrators run at rtol as given and atol = rtol / 100 (joint angles; momenta 100x, loop "
-         "residuals 0.01x, regulator states 1e4x); RK4 at a fixed step. Wall time: the median of up to 3 runs on "
+  out << ". Adaptive integrators run at rtol as given and atol = rtol / 100 (joint angles; momenta 100x, regulator "
+         "states 1e4x); RK4 at a fixed step. Wall time: the median of up to 3 runs on "
          "this machine.\n\n";
   for (const std::string& picture : pictures) out << "![" << picture << "](" << picture << ")\n\n";
 
@@ -100,7 +100,7 @@ void write_work_precision_markdown(const Scene& scene, const WorkPrecision& repo
   out << "| integrator | setting | status | wall time, s | steps | RHS calls | Jacobians | linear iterations | angle "
          "error, rad | final-state error, rad |";
   if (!scene.latches.empty()) out << " latch-time error, s |";
-  if (!scene.loops.empty()) out << " max loop residual |";
+  if (!scene.loops.empty()) out << " max loop gap, m |";
   out << "\n|---|---|---|---|---|---|---|---|---|---|" << (scene.latches.empty() ? "" : "---|")
       << (scene.loops.empty() ? "" : "---|") << "\n";
   for (const PrecisionPoint& p : report.points) {
@@ -108,7 +108,7 @@ void write_work_precision_markdown(const Scene& scene, const WorkPrecision& repo
         << seconds(p.wall_time_s) << " | " << p.stats.steps << " | " << p.rhs_calls << " | " << p.stats.jacobian_evals << " | "
         << p.stats.linear_iterations << " | " << sci(p.angle_error) << " | " << sci(p.final_error) << " |";
     if (!scene.latches.empty()) out << ' ' << sci(p.latch_time_error) << " |";
-    if (!scene.loops.empty()) out << ' ' << sci(p.max_loop_residual) << " |";
+    if (!scene.loops.empty()) out << ' ' << sci(p.max_loop_gap) << " |";
     out << '\n';
   }
   file.commit();

@@ -51,6 +51,26 @@ void dashed_line(ImDrawList* draw, ImVec2 a, ImVec2 b, ImU32 color, float thickn
   }
 }
 
+// A polyline drawn in dashes of `dash` pixels, the pattern running on
+// across its vertices.
+void dashed_polyline(ImDrawList* draw, const std::vector<ImVec2>& points, ImU32 color, float thickness, float dash) {
+  float phase = 0;  // distance into the current dash-gap period
+  for (std::size_t k = 1; k < points.size(); ++k) {
+    const ImVec2 a = points[k - 1], b = points[k];
+    const float dx = b.x - a.x, dy = b.y - a.y, length = std::sqrt(dx * dx + dy * dy);
+    float s = 0;
+    while (s < length) {
+      const bool on = phase < dash;
+      const float step = std::min(length - s, (on ? dash : 2 * dash) - phase);
+      if (on)
+        draw->AddLine(ImVec2(a.x + dx * s / length, a.y + dy * s / length),
+                      ImVec2(a.x + dx * (s + step) / length, a.y + dy * (s + step) / length), color, thickness);
+      s += step;
+      phase = std::fmod(phase + step, 2 * dash);
+    }
+  }
+}
+
 // The series on screen, at most a minimum and a maximum per pixel column:
 // long runs draw as fast as short ones and keep their peaks.
 void screen_points(const PlotFrame& f, const Series& s, std::vector<ImVec2>& out) {
@@ -145,9 +165,14 @@ class Occupancy {
 void draw_legend(ImDrawList* draw, const PlotFrame& f, const PlotSpec& spec, const Theme& th,
                  const Occupancy& drawn) {
   const float font = ImGui::GetFontSize();
-  std::vector<std::pair<std::string, ImU32>> entries;
+  struct Entry {
+    std::string label;
+    ImU32 color;
+    bool dashed;
+  };
+  std::vector<Entry> entries;
   for (const Series& s : spec.series)
-    if (!s.ghost) entries.emplace_back(s.label, s.color);
+    if (!s.ghost) entries.push_back({s.label, s.color, s.dashed});
   const bool has_events = !spec.events.empty();
   const float line = 1.2f * font, swatch = 1.6f * font, margin = 0.5f * font;
   const int room = std::max(1, static_cast<int>((f.plot_max.y - f.plot_min.y - 1.5f * font) / line));
@@ -158,9 +183,9 @@ void draw_legend(ImDrawList* draw, const PlotFrame& f, const PlotSpec& spec, con
     more = "+" + std::to_string(total - room + 1) + " more";
     entries.resize(std::max(0, room - 1 - (has_events ? 1 : 0)));
   }
-  if (has_events) entries.emplace_back(spec.event_label, th.event);
+  if (has_events) entries.push_back({spec.event_label, th.event, true});
   float widest = ImGui::CalcTextSize(more.c_str()).x;
-  for (const auto& e : entries) widest = std::max(widest, ImGui::CalcTextSize(e.first.c_str()).x);
+  for (const auto& e : entries) widest = std::max(widest, ImGui::CalcTextSize(e.label.c_str()).x);
   const int rows = static_cast<int>(entries.size()) + (more.empty() ? 0 : 1);
   if (rows == 0) return;
   const ImVec2 box(widest + swatch + 1.5f * font, rows * line + margin);
@@ -177,13 +202,13 @@ void draw_legend(ImDrawList* draw, const PlotFrame& f, const PlotSpec& spec, con
   draw->AddRectFilled(box_min, box_max, (th.background & 0x00FFFFFF) | 0xE0000000);
   draw->AddRect(box_min, box_max, th.grid);
   float y = box_min.y + margin;
-  for (const auto& [label, color] : entries) {
+  for (const Entry& e : entries) {
     const ImVec2 a(box_min.x + margin, y + line / 2), b(a.x + swatch, a.y);
-    if (has_events && label == spec.event_label && color == th.event)
-      dashed_line(draw, a, b, color, 1.5f, 4);
+    if (e.dashed)
+      dashed_line(draw, a, b, e.color, e.color == th.event ? 1.5f : 2.5f, 4);
     else
-      draw->AddLine(a, b, color, 2.5f);
-    draw->AddText(ImVec2(b.x + margin, y + (line - font) / 2), th.text, label.c_str());
+      draw->AddLine(a, b, e.color, 2.5f);
+    draw->AddText(ImVec2(b.x + margin, y + (line - font) / 2), th.text, e.label.c_str());
     y += line;
   }
   if (!more.empty()) draw->AddText(ImVec2(box_min.x + margin, y + (line - font) / 2), th.muted, more.c_str());
@@ -317,7 +342,10 @@ PlotFrame draw_plot(ImDrawList* draw, ImVec2 origin, ImVec2 size, const PlotSpec
         for (std::size_t k = 0; k < s.x.size(); ++k)
           if (plottable(s.x[k], s.y[k], f.log_x, f.log_y)) draw->AddCircleFilled(f.to_screen(s.x[k], s.y[k]), 0.3f * font, color);
       if (points.size() < 2) continue;
-      draw->AddPolyline(points.data(), static_cast<int>(points.size()), color, ImDrawFlags_None, s.ghost ? 1.5f : 2.0f);
+      if (s.dashed)
+        dashed_polyline(draw, points, color, s.ghost ? 1.5f : 2.0f, 0.5f * font);
+      else
+        draw->AddPolyline(points.data(), static_cast<int>(points.size()), color, ImDrawFlags_None, s.ghost ? 1.5f : 2.0f);
     }
   if (spec.cursor) {
     const float sx = f.to_screen(*spec.cursor, spec.log_y ? 1 : y0).x;

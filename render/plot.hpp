@@ -15,7 +15,8 @@ struct Series {
   std::string label;
   std::vector<double> x, y;
   ImU32 color = IM_COL32(255, 255, 255, 255);
-  bool ghost = false;  // a previous run, drawn faint and dashed, not in the legend
+  bool ghost = false;  // a previous run, drawn faint, not in the legend
+  bool dashed = false;  // a second quantity of the same thing (an angle beside a distance)
   bool markers = false;  // a dot at every point (a few measured points, not a signal)
 };
 

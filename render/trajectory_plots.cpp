@@ -37,9 +37,14 @@ void add_curves(PlotSpec& spec, PlotKind kind, const Scene& scene, const Traject
       }
       break;
     case PlotKind::residuals:
-      for (std::size_t l = 0; l < scene.loops.size(); ++l)
-        added.push_back(series(tr, "loop " + scene.loops[l].name, palette(static_cast<int>(l)),
-                               [l](const Sample& s) { return s.loop_residual[l]; }));
+      for (std::size_t l = 0; l < scene.loops.size(); ++l) {
+        const int color = static_cast<int>(l);
+        added.push_back(series(tr, scene.loops[l].name + ", m", palette(color),
+                               [l](const Sample& s) { return s.closure[l].distance; }));
+        added.push_back(series(tr, scene.loops[l].name + ", rad", palette(color),
+                               [l](const Sample& s) { return s.closure[l].angle; }));
+        added.back().dashed = true;
+      }
       break;
     case PlotKind::energy:
       added.push_back(series(tr, "total", palette(0), [](const Sample& s) { return s.energy.total(); }));
@@ -73,8 +78,8 @@ PlotSpec trajectory_plot(PlotKind kind, const Scene& scene, const Trajectory& tr
       spec.y_label = "dq/dt, rad/s";
       break;
     case PlotKind::residuals:
-      spec.title = scene.name + ": loop residuals |eps pi|";
-      spec.y_label = "m and rad, log scale";
+      spec.title = scene.name + ": loop gaps (distance and angle between split body and image)";
+      spec.y_label = "gap, m (solid) and rad (dashed)";
       spec.log_y = true;
       break;
     case PlotKind::energy:

@@ -26,7 +26,11 @@ Dynamics::Dynamics(const Scene& scene)
       mu_(scene_.model.size()),
       F_(scene_.model.size()),
       poses_(scene_.model.size()),
-      Q_(scene_.model.nq) {
+      bias_(scene_.model.size()),
+      a_(scene_.model.size()),
+      Q_(scene_.model.nq),
+      Q_joint_(scene_.model.nq),
+      ddq_(scene_.model.nq) {
   layout_.nq = scene_.model.nq;
   if (!scene_.loops.empty()) {
     auto components = active_loop_components(scene_.model, scene_.loops, scene_.q0, sweep_);
@@ -35,6 +39,9 @@ Dynamics::Dynamics(const Scene& scene)
     sweep_.set_configuration(scene_.q0.data());
     regulator_->calibrate(sweep_);
     lambda_.resize(layout_.m);
+    g_.resize(layout_.m);
+    g_dot_.resize(layout_.m);
+    d_.resize(layout_.m);
   }
 }
 
@@ -62,14 +69,6 @@ std::vector<double> Dynamics::initial_state() {
       F_[i] = model.bodies[i].spatial_mass() * v_[i];
     }
     sweep_.generalized_forces(F_, y.data() + layout_.p());
-  }
-  if (regulator_) {
-    body_poses(model, scene_.q0.data(), poses_);
-    for (int c = 0; c < layout_.m; ++c) {
-      const LoopComponent& lc = regulator_->components()[c];
-      const Loop& loop = scene_.loops[lc.loop];
-      y[layout_.g() + c] = closure_mismatch(poses_[loop.body], poses_[loop.image])[lc.axis];
-    }
   }
   return y;
 }
@@ -107,18 +106,25 @@ bool Dynamics::evaluate(double, const double* y, double* ydot) {
   sweep_.momenta(v_, phi_, mu_);
 
   for (Vec6& f : F_) f.setZero();
-  if (loads_need_poses_) body_poses(model, q, poses_);
+  if (loads_need_poses_ || regulator_) sweep_.poses(poses_);
   add_body_loads(model, scene_.loads, poses_, F_);
+  std::fill(Q_joint_.begin(), Q_joint_.end(), 0.0);
+  joint_torques(q, dq, Q_joint_.data());
   if (regulator_) {
-    double* g_dot = ydot + L.g();
-    regulator_->residual_rate(v_, g_dot);
-    if (!regulator_->control(sweep_, y + L.g(), y + L.u(), g_dot, lambda_.data(), ydot + L.u())) return false;
+    regulator_->gap(poses_, g_.data());
+    regulator_->residual_rate(v_, g_dot_.data());
+    if (regulator_->uses_feedforward()) {
+      // d = eps a under every force but the loops'.
+      sweep_.accelerations(v_, dq, F_, Q_joint_.data(), bias_, a_, ddq_.data());
+      regulator_->residual_rate(a_, d_.data());
+    }
+    if (!regulator_->control(sweep_, g_.data(), y + L.u(), g_dot_.data(), d_.data(), lambda_.data(), ydot + L.u()))
+      return false;
     regulator_->apply(lambda_.data(), F_);
   }
   sweep_.generalized_forces(F_, Q_.data());
   sweep_.gyroscopic(v_, mu_, dp);
-  joint_torques(q, dq, Q_.data());
-  for (int c = 0; c < L.nq; ++c) dp[c] += Q_[c];
+  for (int c = 0; c < L.nq; ++c) dp[c] += Q_[c] + Q_joint_[c];
 
   for (int k = 0; k < L.size(); ++k)
     if (!std::isfinite(ydot[k])) return false;
@@ -150,18 +156,12 @@ void Dynamics::observe(double t, const double* y, Observation& out) {
   E.gravity = gravity_energy(model, out.poses);
 
   const int n_loops = static_cast<int>(scene_.loops.size());
-  out.loop_residual.assign(n_loops, 0.0);
   out.closure.resize(n_loops);
   for (int l = 0; l < n_loops; ++l)
     out.closure[l] = closure_error(out.poses[scene_.loops[l].body], out.poses[scene_.loops[l].image]);
   if (regulator_) {
-    for (int c = 0; c < L.m; ++c) {
-      const double g = y[L.g() + c];
-      out.loop_residual[regulator_->components()[c].loop] += g * g;
-    }
-    for (double& r : out.loop_residual) r = std::sqrt(r);
-    sweep_.set_configuration(y + L.q());
-    E.regulator = regulator_->energy(sweep_, y + L.g(), y + L.u());
+    regulator_->gap(out.poses, g_.data());
+    E.regulator = regulator_->energy(sweep_, g_.data(), y + L.u());
   }
 }
 

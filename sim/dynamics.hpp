@@ -1,11 +1,11 @@
 // The equations of motion of a scene as a first-order system for the
-// integrators: the state is (q, p) for a tree and (q, p, g = eps pi, u) for
-// a scene with loops, with only the active loop components:
+// integrators: the state is (q, p) for a tree and (q, p, u) for a scene with
+// loops, u the regulator's state on the active loop components:
 //   q' = the sweep's dq(q, p)                      (6)
 //   p' = -A^T Omega mu + A^T T^T (F - eps^T lambda) + Q_joint   (12)
-//   g' = eps v                                     (9)
-//   u' = k_pi g + k_v eps v                        (13)
-// rhs() allocates nothing.
+//   u' = k_pi g(q) + k_v eps v                     (13)
+// with g(q) the loops' true geometric gap (regulator.hpp). rhs() allocates
+// nothing.
 #pragma once
 
 #include <memory>
@@ -26,9 +26,8 @@ struct StateLayout {
   int m = 0;   // active loop components
   int q() const { return 0; }
   int p() const { return nq; }
-  int g() const { return 2 * nq; }
-  int u() const { return 2 * nq + m; }
-  int size() const { return 2 * nq + 2 * m; }
+  int u() const { return 2 * nq; }
+  int size() const { return 2 * nq + m; }
 };
 
 struct EnergyParts {
@@ -46,7 +45,6 @@ struct Observation {
   std::vector<double> dq;
   std::vector<Vec6> velocity;          // v_i, body frames
   std::vector<Pose> poses;
-  std::vector<double> loop_residual;   // |eps pi| per loop (active components)
   std::vector<ClosureError> closure;   // per loop
   EnergyParts energy;
 };
@@ -64,8 +62,7 @@ class Dynamics {
   int size() const { return layout_.size(); }
   Regulator* regulator() { return regulator_ ? &*regulator_ : nullptr; }
 
-  // The initial state: q0, p0 (from dq0 when no p0 is given), g0 from the
-  // loops' geometric mismatch, u0 = 0.
+  // The initial state: q0, p0 (from dq0 when no p0 is given), u0 = 0.
   std::vector<double> initial_state();
 
   // y' = f(t, y). Returns false when the result is not finite.
@@ -99,7 +96,8 @@ class Dynamics {
   // Scratch for rhs(), sized once.
   std::vector<Vec6> phi_, v_, mu_, F_;
   std::vector<Pose> poses_;
-  std::vector<double> Q_, lambda_;
+  std::vector<Vec6> bias_, a_;   // the accelerations pass
+  std::vector<double> Q_, Q_joint_, ddq_, lambda_, g_, g_dot_, d_;
 };
 
 }  // namespace unfurl

@@ -27,10 +27,7 @@ std::vector<double> absolute_tolerances(const StateLayout& layout, double atol) 
     tol[layout.q() + k] = atol;
     tol[layout.p() + k] = 100 * atol;
   }
-  for (int k = 0; k < layout.m; ++k) {
-    tol[layout.g() + k] = 0.01 * atol;
-    tol[layout.u() + k] = 1e4 * atol;
-  }
+  for (int k = 0; k < layout.m; ++k) tol[layout.u() + k] = atol;
   return tol;
 }
 

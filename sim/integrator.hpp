@@ -53,8 +53,7 @@ class Integrator {
   virtual double current_step() const = 0;
 };
 
-// Absolute tolerances per state: atol for q, looser for p and u, tighter for
-// the residual states g (they are the quantities the regulator keeps small).
+// Absolute tolerances per state: atol for q, looser for p and u.
 std::vector<double> absolute_tolerances(const StateLayout& layout, double atol);
 
 // Whether an implicit integrator uses GMRES for this state size.

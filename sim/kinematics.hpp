@@ -14,6 +14,9 @@ struct Pose {
   Mat3 rotation = Mat3::Identity(); // G_0^i: base frame to body frame
   // A point given in the body frame, in the base frame.
   Vec3 to_base(const Vec3& x) const { return position + rotation.transpose() * x; }
+  // The pose of a child placed by its joint: r_i = r_k + G_0^{k T} rho_i,
+  // G_0^i = G_i G_0^k.
+  Pose child(const Placement& X) const { return {to_base(X.rho), X.G * rotation}; }
 };
 
 // Poses of bodies 1..N in the frame of body 0 for coordinates q.

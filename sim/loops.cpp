@@ -68,9 +68,26 @@ ClosureError closure_error(const Pose& body, const Pose& image) {
 Vec6 closure_mismatch(const Pose& body, const Pose& image) {
   Vec6 g;
   g.head<3>() = body.rotation * (body.position - image.position);
-  const Eigen::AngleAxisd relative(image.rotation * body.rotation.transpose());
+  // G_image G_body^T turns body coordinates into image coordinates; its
+  // rate at identity is (w_body - w_image)~. Eigen takes the log through
+  // the quaternion (2 atan2(|v|, w) v / |v|), smooth through zero.
+  const Eigen::AngleAxisd relative(Eigen::Quaterniond(image.rotation * body.rotation.transpose()));
   g.tail<3>() = relative.angle() * relative.axis();
   return g;
+}
+
+void geometric_gap(const std::vector<Loop>& loops, const std::vector<LoopComponent>& components,
+                   const std::vector<Pose>& poses, double* g) {
+  int loop = -1;
+  Vec6 mismatch;
+  for (std::size_t c = 0; c < components.size(); ++c) {
+    const LoopComponent& lc = components[c];
+    if (lc.loop != loop) {
+      loop = lc.loop;
+      mismatch = closure_mismatch(poses[loops[loop].body], poses[loops[loop].image]);
+    }
+    g[c] = mismatch[lc.axis];
+  }
 }
 
 }  // namespace unfurl

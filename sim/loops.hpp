@@ -27,7 +27,7 @@ struct LoopComponent {
   int axis = 0;
 };
 
-// eps v on the active components, from body velocities (9).
+// eps v on the active components, from body velocities (8).
 void residual_rate(const std::vector<Loop>& loops, const std::vector<LoopComponent>& components,
                    const std::vector<Vec6>& v, double* g_dot);
 
@@ -49,9 +49,15 @@ struct ClosureError {
 };
 ClosureError closure_error(const Pose& body, const Pose& image);
 
-// The closure mismatch as a quasi-coordinate difference eps pi: the image
-// origin's offset seen from the body (body frame) and the rotation vector
-// from the image frame to the body frame.
+// The loop's true geometric gap g(q), what eps pi of (9) stands for: the
+// body origin's offset from the image's (body frame) and the rotation
+// vector (quaternion log) of the image frame relative to the body frame.
+// Where the loop is closed its rate is eps v of (8); unlike eps pi it is a
+// function of q, so an integration error in q cannot hide from it.
 Vec6 closure_mismatch(const Pose& body, const Pose& image);
+
+// g(q) on the active components.
+void geometric_gap(const std::vector<Loop>& loops, const std::vector<LoopComponent>& components,
+                   const std::vector<Pose>& poses, double* g);
 
 }  // namespace unfurl

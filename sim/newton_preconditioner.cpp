@@ -12,6 +12,7 @@ NewtonPreconditioner::NewtonPreconditioner(Dynamics& dynamics)
       diagonal_(dynamics.model().nq),
       r_(dynamics.model().nq),
       x_(dynamics.model().nq),
+      rates_(dynamics.model().nq),
       g_dot_(dynamics.layout().m),
       phi_(dynamics.model().size()),
       v_(dynamics.model().size()) {}
@@ -57,11 +58,11 @@ void NewtonPreconditioner::solve(const double* r, double* z) {
   if (!regulator) return;
   const RegulatorSettings& s = regulator->settings();
   const double k_pi = s.p0 * s.v_max, k_v = 2 * s.p0 * s.p1;  // (16)
+  // J (k_pi zq + k_v x) by one kinematic pass: J is linear in the rates.
+  for (int c = 0; c < L.nq; ++c) rates_[c] = k_pi * zq[c] + k_v * x_[c];
+  sweep_.velocities_from_rates(rates_.data(), v_);
   regulator->residual_rate(v_, g_dot_.data());
-  for (int c = 0; c < L.m; ++c) {
-    z[L.g() + c] = r[L.g() + c] + gamma * g_dot_[c];
-    z[L.u() + c] = r[L.u() + c] + gamma * (k_pi * z[L.g() + c] + k_v * g_dot_[c]);
-  }
+  for (int c = 0; c < L.m; ++c) z[L.u() + c] = r[L.u() + c] + gamma * g_dot_[c];
 }
 
 }  // namespace unfurl

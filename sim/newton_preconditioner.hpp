@@ -5,8 +5,9 @@
 //
 // It solves the linear model in which the joints' springs, dampers and
 // engaged latches are the stiff terms and the mass matrix is frozen:
-//   q' = x,  Mtilde x = p,  p' = -K q - D x,  g' = eps v(x),
-//   u' = k_pi g + k_v g'   (the full tuning's W R^-1 taken as I),
+//   q' = x,  Mtilde x = p,  p' = -K q - D x,
+//   u' = k_pi J q + k_v J x   (J = eps T A, g' = J q' where the loops are
+//   closed; the full tuning's W R^-1 taken as I),
 // by one pass of the sweep with Mtilde + gamma D + gamma^2 K (the joint
 // terms enter the articulated inertia like armature). The loop forces are
 // left to the Krylov iterations: the full-matrix gains put every strong
@@ -38,7 +39,7 @@ class NewtonPreconditioner {
   std::vector<double> stiffness_, damping_, diagonal_;  // per coordinate
 
   // Scratch, sized once.
-  std::vector<double> r_, x_, g_dot_;
+  std::vector<double> r_, x_, rates_, g_dot_;
   std::vector<Vec6> phi_, v_;
 };
 

@@ -35,8 +35,12 @@ void Regulator::residual_rate(const std::vector<Vec6>& v, double* g_dot) const {
   unfurl::residual_rate(loops_, components_, v, g_dot);
 }
 
-bool Regulator::control(const Sweep& sweep, const double* g, const double* u, const double* g_dot, double* lambda,
-                        double* u_dot) {
+void Regulator::gap(const std::vector<Pose>& poses, double* g) const {
+  geometric_gap(loops_, components_, poses, g);
+}
+
+bool Regulator::control(const Sweep& sweep, const double* g, const double* u, const double* g_dot, const double* d,
+                        double* lambda, double* u_dot) {
   const double v = settings_.v_max, p0 = settings_.p0, p1 = settings_.p1;
   const double k_pi = p0 * v, k_v = 2 * p0 * p1;  // (16)
   const int m = size();
@@ -44,6 +48,7 @@ bool Regulator::control(const Sweep& sweep, const double* g, const double* u, co
   Eigen::Map<Eigen::VectorXd> lambda_(lambda, m), ud_(u_dot, m);
   auto a = rhs_.col(0), b = rhs_.col(1);
   a = (v * v) * (g_ + u_) + ((p0 + 2 * p1) * v) * gd_;
+  if (uses_feedforward()) a += Eigen::Map<const Eigen::VectorXd>(d, m);
   b = k_pi * g_ + k_v * gd_;
   if (settings_.gains == GainTuning::paper) {
     // C_j = v^2 / W_jj, D_j = (p0 + 2 p1) v / W_jj (16), u' of (13)
@@ -56,7 +61,7 @@ bool Regulator::control(const Sweep& sweep, const double* g, const double* u, co
     return false;
   }
   solver_->solve(rhs_.data(), solved_.data(), 2);
-  lambda_ = solved_.col(0);               // R^-1 (v^2 (g + u) + (p0 + 2 p1) v g')
+  lambda_ = solved_.col(0);               // R^-1 (v^2 (g + u) + (p0 + 2 p1) v g' + d)
   ud_ = b - delta_ * solved_.col(1);      // W R^-1 b = b - delta R^-1 b
   return true;
 }

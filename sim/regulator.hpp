@@ -1,10 +1,15 @@
-// The modified-Lagrange PID regulator of the loop residuals g = eps pi:
-//   (12)  loop force lambda = C (g + u) + D g'   (applied as -eps^T lambda)
-//   (13)  u' = k_pi g + k_v g'
+// The modified-Lagrange PID regulator of the loops, (12) and (13), acting on
+// the true geometric gap g(q) (loops.hpp) where the paper integrates the
+// quasi-coordinates eps pi of (9):
+//   (12)  loop force lambda = C (g + u) + D eps v   (applied as -eps^T lambda)
+//   (13)  u' = k_pi g + k_v eps v
 // with k_pi = p0 v_max, k_v = 2 p0 p1 and W C = v_max^2, W D = (p0 + 2 p1)
-// v_max of (16), W = eps T A Mtilde^-1 (eps T A)^T, so that every residual
-// mode obeys (s + b0)(s^2 + 2 b1 s + v_max^2) = 0, b0 = p0 v_max,
-// b1 = p1 v_max.
+// v_max of (16), W = eps T A Mtilde^-1 (eps T A)^T. Since g' = eps v (8)
+// where the loop is closed, the linearization is the paper's and every
+// residual mode obeys (s + b0)(s^2 + 2 b1 s + v_max^2) = 0, b0 = p0 v_max,
+// b1 = p1 v_max. eps pi itself is not integrated: it drifts from the real
+// gap with every integration error in q (quasi-coordinates are not
+// integrable), and a regulator holding it at zero lets the loop open.
 //
 // Two tunings:
 // - full (default): C and D from the current W(q) as full matrices, so every
@@ -19,6 +24,14 @@
 //   Modes with w >> delta keep the designed cubic; weaker ones get softer,
 //   still stable, control. delta = regularization x the largest eigenvalue
 //   of W at the start. Only solves with R are needed (closure_solver.hpp).
+//   With feedforward (default) the loop force also carries R^-1 d, d = eps a
+//   the residual's acceleration under every other force (the sweep's
+//   accelerations, loop forces left out): W lambda then cancels d in every
+//   strong mode, and the PID corrects only what is left. Without it the
+//   residual answers d with the designed error g ~ d' / (p0 v_max^3) (about
+//   1e-8 m on the four-bar at v_max = 5000); with it the gap is held at
+//   the integrator's tolerance. The feedforward is a force the constraint
+//   needs, not feedback, so the cubic and the Routh argument are unchanged.
 // - paper: the paper's diagonal (16) with the diagonal of W at t = 0 and the
 //   unscaled integral; kept to show where it fails (strongly coupled loops).
 #pragma once
@@ -42,6 +55,7 @@ struct RegulatorSettings {
   double p0 = 1.0;
   double p1 = 0.5;
   double regularization = 2e-6;  // delta relative to the largest eigenvalue of W(0)
+  bool feedforward = true;       // full gains: cancel the residual's acceleration d
   ClosureSolverKind solver = ClosureSolverKind::automatic;
 };
 
@@ -62,13 +76,20 @@ class Regulator {
   // paper's.
   void calibrate(const Sweep& sweep);
 
-  // eps v on the active components from body velocities.
+  // eps v (8) on the active components from body velocities.
   void residual_rate(const std::vector<Vec6>& v, double* g_dot) const;
 
-  // lambda of (12) and u' of (13) at the sweep's current configuration.
+  // The geometric gap g(q) on the active components from body poses.
+  void gap(const std::vector<Pose>& poses, double* g) const;
+
+  // Whether control() wants the residual's acceleration d.
+  bool uses_feedforward() const { return settings_.gains == GainTuning::full && settings_.feedforward; }
+
+  // lambda of (12) and u' of (13) at the sweep's current configuration,
+  // from the gap g, the regulator state u, eps v and (with feedforward) d.
   // False (and NaN in lambda) if R could not be factored.
-  bool control(const Sweep& sweep, const double* g, const double* u, const double* g_dot, double* lambda,
-               double* u_dot);
+  bool control(const Sweep& sweep, const double* g, const double* u, const double* g_dot, const double* d,
+               double* lambda, double* u_dot);
 
   // Adds -eps^T lambda to the body forces.
   void apply(const double* lambda, std::vector<Vec6>& F) const;

@@ -37,6 +37,7 @@ class SceneReader {
   double positive(const YAML::Node& node, const std::string& field) const;
   double non_negative(const YAML::Node& node, const std::string& field) const;
   std::string text(const YAML::Node& node, const std::string& field) const;
+  bool flag(const YAML::Node& node, const std::string& field) const;
   std::vector<double> numbers(const YAML::Node& node, const std::string& field) const;
   Vec3 vec3(const YAML::Node& node, const std::string& field) const;
   Vec3 vec3_or(const YAML::Node& map, const char* key, const Vec3& fallback, const std::string& field) const;
@@ -445,8 +446,15 @@ void SceneReader::read_loops(const YAML::Node& list, Scene& scene) {
   }
 }
 
+bool SceneReader::flag(const YAML::Node& node, const std::string& field) const {
+  const std::string value = text(node, field);
+  if (value == "true") return true;
+  if (value == "false") return false;
+  fail(node, field, "expected true or false, got '" + value + "'");
+}
+
 void SceneReader::read_regulator(const YAML::Node& node, Scene& scene) const {
-  check_keys(node, {"gains", "v_max", "p0", "p1", "regularization", "solver"}, "regulator");
+  check_keys(node, {"gains", "v_max", "p0", "p1", "regularization", "feedforward", "solver"}, "regulator");
   RegulatorSettings& r = scene.regulator;
   if (const YAML::Node gains = node["gains"]) {
     const std::string g = text(gains, "regulator.gains");
@@ -461,6 +469,7 @@ void SceneReader::read_regulator(const YAML::Node& node, Scene& scene) const {
   if (node["p0"]) r.p0 = positive(node["p0"], "regulator.p0");
   if (node["p1"]) r.p1 = positive(node["p1"], "regulator.p1");
   if (node["regularization"]) r.regularization = positive(node["regularization"], "regulator.regularization");
+  if (node["feedforward"]) r.feedforward = flag(node["feedforward"], "regulator.feedforward");
   if (const YAML::Node solver = node["solver"]) {
     const std::string name = text(solver, "regulator.solver");
     if (name == "auto")

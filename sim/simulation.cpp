@@ -28,7 +28,6 @@ class Recorder {
     s.t = t;
     s.y = y;
     s.dq = observation_.dq;
-    s.loop_residual = observation_.loop_residual;
     s.closure = observation_.closure;
     s.energy = observation_.energy;
     trajectory_.samples.push_back(std::move(s));

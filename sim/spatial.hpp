@@ -76,6 +76,15 @@ inline Mat6 spatial_inertia(double m, const Vec3& c, const Mat3& J_origin) {
   return M;
 }
 
+// The motion cross product m1 x m2 = (w1 x v2 + v1 x w2, w1 x w2): the
+// rate at which a motion m2 fixed in a frame moving with m1 changes.
+inline Vec6 motion_cross(const Vec6& m1, const Vec6& m2) {
+  Vec6 out;
+  out.head<3>() = m1.tail<3>().cross(m2.head<3>()) + m1.head<3>().cross(m2.tail<3>());
+  out.tail<3>() = m1.tail<3>().cross(m2.tail<3>());
+  return out;
+}
+
 // Omega_i mu_i of (7) for v = (v, w) and mu = (h, L).
 inline Vec6 omega_times(const Vec6& v, const Vec6& mu) {
   Vec6 out;

@@ -37,7 +37,7 @@ struct StabilityResult {
   int bodies = 0, loop_components = 0;
   double energy_initial = 0, energy_final = 0;
   double energy_drift = std::numeric_limits<double>::quiet_NaN();  // max |E - E0| / |E0| (conservative cases)
-  double max_closure_m = 0, max_closure_rad = 0, max_loop_residual = 0;
+  double max_closure_m = 0, max_closure_rad = 0;
   int latches_engaged = 0, latches_total = 0;
   bool energy_rose = false;        // a passive, non-conservative run that gained energy: not physical
   std::vector<std::string> notes;  // branches, closing time
@@ -59,7 +59,7 @@ std::string reproduce_command(const StabilityCase& c);
 StabilityResult run_stability_case(const StabilityCase& c);
 
 // The paper's diagonal tuning (16) against the full-matrix gains on the
-// pantograph: the largest |eps pi| of each along the run (the paper's run is
+// pantograph: the largest geometric loop gap of each along the run (the paper's run is
 // let go on past the closure check to show where it goes), and the smallest
 // eigenvalue a of K = W diag(W)^-1 along the full-gain run (a mode of the
 // paper's tuning is stable only for a > p0 / ((p0 + 2 p1)(1 + 2 p0 p1))).

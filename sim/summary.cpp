@@ -20,13 +20,12 @@ RunSummary summarize(const Scene& scene, const RunResult& result) {
     if (!engaged) s.unlatched.push_back(model.joints[scene.latches[l].joint].name);
   }
   for (const Sample& sample : tr.samples) {
-    for (double r : sample.loop_residual) {
-      s.max_loop_residual = std::max(s.max_loop_residual, r);
-      if (sample.t <= first_latch) s.max_loop_residual_before_latch = std::max(s.max_loop_residual_before_latch, r);
-    }
     for (const ClosureError& c : sample.closure) {
       s.max_closure_m = std::max(s.max_closure_m, c.distance);
       s.max_closure_rad = std::max(s.max_closure_rad, c.angle);
+      if (sample.t > first_latch) continue;
+      s.max_closure_m_before_latch = std::max(s.max_closure_m_before_latch, c.distance);
+      s.max_closure_rad_before_latch = std::max(s.max_closure_rad_before_latch, c.angle);
     }
   }
   if (!tr.empty()) {

@@ -1,5 +1,5 @@
-// The figures a user reads off a run: latch times, the largest loop
-// residual and closure error, energy at both ends, the final state.
+// The figures a user reads off a run: latch times, the largest geometric
+// loop gap, energy at both ends, the final state.
 #pragma once
 
 #include <string>
@@ -12,10 +12,10 @@ namespace unfurl {
 struct RunSummary {
   std::vector<std::pair<std::string, double>> latch_times;  // joint name, time
   std::vector<std::string> unlatched;                       // joints whose latch never engaged
-  double max_loop_residual = 0;         // max |eps pi| over loops and samples
-  double max_loop_residual_before_latch = 0;  // the same up to the first latch
-  double max_closure_m = 0;
+  double max_closure_m = 0;    // the largest gap over loops and samples
   double max_closure_rad = 0;
+  double max_closure_m_before_latch = 0;  // the same up to the first latch
+  double max_closure_rad_before_latch = 0;
   double energy_initial = 0;
   double energy_final = 0;
   double t_reached = 0;

@@ -9,6 +9,7 @@
 
 #include <vector>
 
+#include "kinematics.hpp"
 #include "model.hpp"
 #include "spatial.hpp"
 
@@ -43,6 +44,31 @@ class Sweep {
   void generalized_forces(std::vector<Vec6>& F, double* Q) const {
     auto Q_ = coordinates(Q);
     force_pass(F, Q_);
+  }
+
+  // Body poses in the base frame from the placements of the last
+  // set_configuration (no trigonometry again).
+  void poses(std::vector<Pose>& poses) const;
+
+  // v_i = C_i v_{k_i} + A_i dq_i of (1) for given joint rates dq and a base
+  // at rest: the kinematic map, linear in dq.
+  void velocities_from_rates(const double* dq, std::vector<Vec6>& v) const;
+
+  // The accelerations: a_i, the rate of v_i in its own frame, and ddq, for
+  // joint rates dq, body velocities v, applied body forces F (at the
+  // origins, body frames, loop forces included) and joint forces Q. The
+  // sweep's M*_i, D_i are the articulated inertias, so this is the sweep
+  // carried one derivative further (the articulated-body recursion): a
+  // backward pass of the bias forces p^A_i = v_i x* M_i v_i - F_i + what the
+  // children pass on, and a forward pass. With them, M*_i a_i + p^A_i is the
+  // wrench that joint i transmits from the parent to body i (at its origin,
+  // in its frame). The base moves steadily (its acceleration is zero).
+  void accelerations(const std::vector<Vec6>& v, const double* dq, const std::vector<Vec6>& F, const double* Q,
+                     std::vector<Vec6>& bias, std::vector<Vec6>& a, double* ddq) const;
+
+  // M*_i a_i + p^A_i: the joint wrench from accelerations() results.
+  Vec6 joint_wrench(int i, const std::vector<Vec6>& bias, const std::vector<Vec6>& a) const {
+    return M_star_[i] * a[i] + bias[i];
   }
 
   // dp_i = -A_i^T Omega_i mu_i, the velocity-dependent part of (7).

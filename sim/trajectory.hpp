@@ -14,8 +14,7 @@ struct Sample {
   double t = 0;
   std::vector<double> y;             // the full state
   std::vector<double> dq;            // joint rates
-  std::vector<double> loop_residual; // |eps pi| per loop
-  std::vector<ClosureError> closure; // geometric closure per loop
+  std::vector<ClosureError> closure; // geometric gap per loop
   EnergyParts energy;
 };
 

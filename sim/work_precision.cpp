@@ -55,14 +55,14 @@ void measure_errors(const Scene& scene, const RunResult& run, const Reference& r
   const Trajectory& tr = run.trajectory;
   const int nq = scene.model.nq;
   const std::size_t n = std::min(tr.samples.size(), ref.times.size());
-  double before = 0, whole = 0, residual = 0;
+  double before = 0, whole = 0, gap = 0;
   for (std::size_t k = 0; k < n; ++k) {
     const Sample& s = tr.samples[k];
     double e = 0;
     for (int c = 0; c < nq; ++c) e = std::max(e, std::abs(s.y[c] - ref.q[k][c]));
     whole = std::max(whole, e);
     if (ref.times[k] <= ref.first_latch) before = std::max(before, e);
-    for (double r : s.loop_residual) residual = std::max(residual, r);
+    for (const ClosureError& c : s.closure) gap = std::max(gap, c.distance);
   }
   if (run.status != RunStatus::finished || n != ref.times.size()) return;
   p.angle_error = before;
@@ -70,7 +70,7 @@ void measure_errors(const Scene& scene, const RunResult& run, const Reference& r
   double final_error = 0;
   for (int c = 0; c < nq; ++c) final_error = std::max(final_error, std::abs(tr.samples.back().y[c] - ref.q.back()[c]));
   p.final_error = final_error;
-  p.max_loop_residual = scene.loops.empty() ? kNotMeasured : residual;
+  p.max_loop_gap = scene.loops.empty() ? kNotMeasured : gap;
   if (scene.latches.empty()) return;
   const std::vector<double> t = latch_times(tr, static_cast<int>(scene.latches.size()));
   double worst = 0;

@@ -43,7 +43,7 @@ struct PrecisionPoint {
   double angle_error = kNotMeasured;  // max |q - q_ref| over joints and samples (up to the first latch)
   double angle_error_whole_run = kNotMeasured;
   double final_error = kNotMeasured;  // max |q(t_end) - q_ref(t_end)|
-  double max_loop_residual = kNotMeasured;
+  double max_loop_gap = kNotMeasured;  // the largest geometric loop gap, m
   double latch_time_error = kNotMeasured;  // max |t - t_ref| over the latches both runs engaged
   int latches_missing = 0;                 // engaged by one run and not the other
 };

@@ -133,10 +133,10 @@ TEST(LoopRegulator, ResidualOfAnOpenStartDecays) {
   ASSERT_EQ(run.status, RunStatus::finished);
   const auto& samples = run.trajectory.samples;
   EXPECT_GT(samples.front().closure[0].distance, 1e-4);
-  // eps pi is driven to zero; the geometric gap, of which eps pi is a
-  // first-order measure, closes to second order in the initial gap.
-  EXPECT_LT(samples.back().loop_residual[0], 1e-9);
-  EXPECT_LT(samples.back().closure[0].distance, 1e-3 * samples.front().closure[0].distance);
+  // The regulator acts on the geometric gap itself: it closes to round-off
+  // of the regulator's designed error, not only to first order.
+  EXPECT_LT(samples.back().closure[0].distance, 1e-9);
+  EXPECT_LT(samples.back().closure[0].angle, 1e-9);
 }
 
 TEST(LeaveOut, TreeSceneCarriesNoRegulatorState) {
@@ -153,13 +153,13 @@ TEST(LeaveOut, PlanarLoopCarriesThreeComponents) {
   ASSERT_NE(dynamics.regulator(), nullptr);
   EXPECT_EQ(dynamics.layout().m, 3);  // v_y, v_z, w_x: the in-plane ones
   for (const LoopComponent& c : dynamics.regulator()->components()) EXPECT_TRUE(c.axis == 1 || c.axis == 2 || c.axis == 3);
-  EXPECT_EQ(dynamics.size(), 2 * scene.model.nq + 2 * 3);
+  EXPECT_EQ(dynamics.size(), 2 * scene.model.nq + 3);  // (q, p, u)
 }
 
 TEST(LeaveOut, PantographCarriesNineComponents) {
   Dynamics dynamics(test::scene_file("pantograph"));
   EXPECT_EQ(dynamics.layout().m, 9);
-  EXPECT_EQ(dynamics.size(), 40);
+  EXPECT_EQ(dynamics.size(), 31);  // (q, p, u): 11 + 11 + 9
 }
 
 TEST(LeaveOut, SceneWithoutLatchesHasNoEvents) {
