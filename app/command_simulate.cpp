@@ -1,5 +1,6 @@
 // unfurl simulate: run a scene and write trajectory.csv, events.csv and
 // summary.json.
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
@@ -22,6 +23,9 @@ const char* kHelp =
     "Simulates a scene and writes into DIR (default out/):\n"
     "  trajectory.csv   t, then q.J, dq.J, p.J per joint, closure_m.L and closure_rad.L\n"
     "                   (the geometric gap) per loop, and energy, every DT seconds\n"
+    "  loads.csv        per joint the spring, damper and latch torques and the reaction\n"
+    "                   wrench at the hinge (child frame), per loop component the\n"
+    "                   constraint force, at the same times\n"
     "  events.csv       latch engagements (t, event, joint)\n"
     "  summary.json     integrator, statistics, latch times, largest residuals, energy\n"
     "\n"
@@ -52,9 +56,14 @@ void print_summary(const Scene& scene, const RunResult& result, const RunSummary
     std::printf("loop gap     max %.3g m, %.3g rad (%.3g m, %.3g rad before the first latch)\n", s.max_closure_m,
                 s.max_closure_rad, s.max_closure_m_before_latch, s.max_closure_rad_before_latch);
   }
+  const RunSummary::NamedPeak* latch = nullptr;
+  for (const auto& p : s.latch_peak_torque)
+    if (!std::isnan(p.peak.t) && (!latch || p.peak.value > latch->peak.value)) latch = &p;
+  if (latch)
+    std::printf("loads        peak latch torque %.4g N m at %s, t = %.6f s\n", latch->peak.value, latch->joint.c_str(),
+                latch->peak.t);
   std::printf("energy       %.9g J at t = 0, %.9g J at t = %g s\n", s.energy_initial, s.energy_final, s.t_reached);
-  std::printf("files        %s/trajectory.csv, %s/events.csv, %s/summary.json\n", dir.c_str(), dir.c_str(),
-              dir.c_str());
+  std::printf("files        %s/{trajectory,loads,events}.csv, %s/summary.json\n", dir.c_str(), dir.c_str());
 }
 
 }  // namespace
@@ -82,6 +91,7 @@ int command_simulate(const std::vector<std::string>& argv) {
   const RunSummary summary = summarize(scene, result);
 
   write_trajectory_csv(scene, result.trajectory, dir + "/trajectory.csv");
+  write_loads_csv(scene, result.trajectory, dir + "/loads.csv");
   write_events_csv(scene, result.trajectory, dir + "/events.csv");
   write_summary_json(scene, result, summary, dir + "/summary.json");
   if (!args.has("--quiet")) print_summary(scene, result, summary, dir);

@@ -1,5 +1,7 @@
 #include "run_files.hpp"
 
+#include <cmath>
+
 #include "json_writer.hpp"
 #include "number_text.hpp"
 #include "output_file.hpp"
@@ -26,6 +28,57 @@ void write_trajectory_csv(const Scene& scene, const Trajectory& trajectory, cons
     for (std::size_t l = 0; l < scene.loops.size(); ++l)
       out << ',' << format_number(s.closure[l].distance) << ',' << format_number(s.closure[l].angle);
     out << ',' << format_number(s.energy.total()) << '\n';
+  }
+  file.commit();
+}
+
+namespace {
+
+// Which element columns a joint has.
+struct JointElements {
+  bool spring = false, damper = false, latch = false;
+};
+
+std::vector<JointElements> joint_elements(const Scene& scene) {
+  std::vector<JointElements> has(scene.model.size());
+  for (std::size_t k = 0; k < scene.springs.size(); ++k) {
+    const JointSpring& s = scene.springs[k];
+    if (k < scene.dampers_from) has[s.joint].spring = true;
+    if (s.damping != 0) has[s.joint].damper = true;
+  }
+  for (const Latch& latch : scene.latches) has[latch.joint].latch = true;
+  return has;
+}
+
+}  // namespace
+
+void write_loads_csv(const Scene& scene, const Trajectory& trajectory, const std::string& path) {
+  const Model& model = scene.model;
+  const std::vector<JointElements> has = joint_elements(scene);
+  OutputFile file(path);
+  std::ostream& out = file.stream();
+  out << "t";
+  for (int j = 0; j < model.size(); ++j) {
+    const std::string& name = model.joints[j].name;
+    if (has[j].spring) out << ",tau_spring." << name;
+    if (has[j].damper) out << ",tau_damper." << name;
+    if (has[j].latch) out << ",tau_latch." << name;
+    for (int a = 0; a < 6; ++a) out << ",reaction." << name << '.' << wrench_component_name(a);
+  }
+  for (const LoopComponent& c : trajectory.loop_components)
+    out << ",loop_force." << scene.loops[c.loop].name << '.' << wrench_component_name(c.axis);
+  out << '\n';
+  for (const Sample& s : trajectory.samples) {
+    out << format_number(s.t);
+    for (int j = 0; j < model.size(); ++j) {
+      const JointLoad& load = s.loads.joints[j];
+      if (has[j].spring) out << ',' << format_number(load.spring);
+      if (has[j].damper) out << ',' << format_number(load.damper);
+      if (has[j].latch) out << ',' << format_number(load.latch);
+      for (int a = 0; a < 6; ++a) out << ',' << format_number(load.reaction[a]);
+    }
+    for (double f : s.loads.loop_force) out << ',' << format_number(f);
+    out << '\n';
   }
   file.commit();
 }
@@ -66,6 +119,9 @@ void write_summary_json(const Scene& scene, const RunResult& result, const RunSu
   json.value("nonlinear_failures", result.stats.nonlinear_failures);
   json.value("error_test_failures", result.stats.error_test_failures);
   json.value("min_step", result.stats.min_step);
+  json.value("min_step_after_restart", result.stats.min_step_after_restart);
+  json.value("restarts", result.stats.restarts);
+  json.value("grazes", result.stats.grazes);
   json.value("state_size", result.trajectory.layout.size());
   json.value("loop_components", result.trajectory.layout.m);
   json.begin_object("latch_times");
@@ -78,6 +134,17 @@ void write_summary_json(const Scene& scene, const RunResult& result, const RunSu
   json.value("max_closure_rad", summary.max_closure_rad);
   json.value("max_closure_m_before_latch", summary.max_closure_m_before_latch);
   json.value("max_closure_rad_before_latch", summary.max_closure_rad_before_latch);
+  auto peaks = [&](const char* key, const std::vector<RunSummary::NamedPeak>& list) {
+    json.begin_object(key);
+    for (const auto& [joint, peak] : list) {
+      if (std::isnan(peak.t)) continue;  // never engaged
+      json.begin_object(joint).value("value", peak.value).value("t", peak.t).end_object();
+    }
+    json.end_object();
+  };
+  peaks("latch_peak_torque", summary.latch_peak_torque);
+  peaks("hinge_peak_force", summary.hinge_peak_force);
+  peaks("hinge_peak_moment", summary.hinge_peak_moment);
   json.value("energy_initial", summary.energy_initial);
   json.value("energy_final", summary.energy_final);
   json.begin_object("final_q");

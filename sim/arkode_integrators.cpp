@@ -1,10 +1,8 @@
 #include "arkode_integrators.hpp"
 
 #include <arkode/arkode_arkstep.h>
-#include <arkode/arkode_erkstep.h>
 
 #include <cstdlib>
-#include <limits>
 
 namespace unfurl {
 
@@ -12,33 +10,18 @@ using sundials::check;
 
 ArkodeIntegrator::ArkodeIntegrator(IntegratorKind kind, Dynamics& dynamics, const RunSettings& settings,
                                    double t0, const std::vector<double>& y0)
-    : explicit_(kind == IntegratorKind::arkode_erk),
+    : api_(kind == IntegratorKind::arkode_erk ? erk_api() : dirk_api()),
       dynamics_(dynamics),
       y_(y0, ctx_),
       atol_(absolute_tolerances(dynamics.layout(), settings.atol), ctx_),
-      scratch_(y0, ctx_),
-      min_step_(std::numeric_limits<double>::infinity()) {
-  const int n_roots = dynamics.latch_count();
-  std::vector<int> falling(n_roots, -1);
-  if (explicit_) {
-    mem_ = ERKStepCreate(sundials::rhs, t0, y_, ctx_);
-    sundials::check_ptr(mem_, "ERKStepCreate");
-    check(ERKStepSetUserData(mem_, &dynamics_), "ERKStepSetUserData");
-    check(ERKStepSetErrHandlerFn(mem_, sundials::capture_error, &last_error_), "ERKStepSetErrHandlerFn");
-    check(ERKStepSVtolerances(mem_, settings.rtol, atol_), "ERKStepSVtolerances");
-    check(ERKStepSetMaxNumSteps(mem_, -1), "ERKStepSetMaxNumSteps");
-    if (n_roots > 0) {
-      check(ERKStepRootInit(mem_, n_roots, sundials::switching), "ERKStepRootInit");
-      check(ERKStepSetRootDirection(mem_, falling.data()), "ERKStepSetRootDirection");
-      check(ERKStepSetNoInactiveRootWarn(mem_), "ERKStepSetNoInactiveRootWarn");
-    }
-  } else {
-    mem_ = ARKStepCreate(nullptr, sundials::rhs, t0, y_, ctx_);
-    sundials::check_ptr(mem_, "ARKStepCreate");
-    check(ARKStepSetUserData(mem_, &dynamics_), "ARKStepSetUserData");
-    check(ARKStepSetErrHandlerFn(mem_, sundials::capture_error, &last_error_), "ARKStepSetErrHandlerFn");
-    check(ARKStepSVtolerances(mem_, settings.rtol, atol_), "ARKStepSVtolerances");
-    check(ARKStepSetMaxNumSteps(mem_, -1), "ARKStepSetMaxNumSteps");
+      scratch_(y0, ctx_) {
+  mem_ = api_.create(sundials::rhs, t0, y_, ctx_);
+  sundials::check_ptr(mem_, "ARKODE create");
+  check(api_.set_user_data(mem_, &dynamics_), "SetUserData");
+  check(api_.set_err_handler(mem_, sundials::capture_error, &last_error_), "SetErrHandlerFn");
+  check(api_.sv_tolerances(mem_, settings.rtol, atol_), "SVtolerances");
+  check(api_.set_max_num_steps(mem_, -1), "SetMaxNumSteps");
+  if (api_.implicit) {
     if (uses_krylov(settings, dynamics.size())) {
       krylov_.emplace(y_, ctx_);
       check(ARKStepSetLinearSolver(mem_, krylov_->LS, nullptr), "ARKStepSetLinearSolver");
@@ -48,46 +31,32 @@ ArkodeIntegrator::ArkodeIntegrator(IntegratorKind kind, Dynamics& dynamics, cons
       dense_.emplace(dynamics.size(), y_, ctx_);
       check(ARKStepSetLinearSolver(mem_, dense_->LS, dense_->A), "ARKStepSetLinearSolver");
     }
-    if (n_roots > 0) {
-      check(ARKStepRootInit(mem_, n_roots, sundials::switching), "ARKStepRootInit");
-      check(ARKStepSetRootDirection(mem_, falling.data()), "ARKStepSetRootDirection");
-      check(ARKStepSetNoInactiveRootWarn(mem_), "ARKStepSetNoInactiveRootWarn");
-    }
+  }
+  if (const int n_roots = dynamics.latch_count(); n_roots > 0) {
+    std::vector<int> falling(n_roots, -1);
+    check(api_.root_init(mem_, n_roots, sundials::switching), "RootInit");
+    check(api_.set_root_direction(mem_, falling.data()), "SetRootDirection");
+    check(api_.set_no_inactive_root_warn(mem_), "SetNoInactiveRootWarn");
   }
 }
 
-ArkodeIntegrator::~ArkodeIntegrator() {
-  if (explicit_)
-    ERKStepFree(&mem_);
-  else
-    ARKStepFree(&mem_);
-}
+ArkodeIntegrator::~ArkodeIntegrator() { api_.free(&mem_); }
 
 StepOutcome ArkodeIntegrator::step(double t_stop) {
   if (t_stop != t_stop_set_) {
-    check(explicit_ ? ERKStepSetStopTime(mem_, t_stop) : ARKStepSetStopTime(mem_, t_stop), "SetStopTime");
+    check(api_.set_stop_time(mem_, t_stop), "SetStopTime");
     t_stop_set_ = t_stop;
   }
   double t = 0;
-  const int flag = explicit_ ? ERKStepEvolve(mem_, t_stop, y_, &t, ARK_ONE_STEP)
-                             : ARKStepEvolve(mem_, t_stop, y_, &t, ARK_ONE_STEP);
+  const int flag = api_.evolve(mem_, t_stop, y_, &t, ARK_ONE_STEP);
   StepOutcome out;
   out.t = t;
-  double h = 0;
-  if (explicit_)
-    ERKStepGetLastStep(mem_, &h);
-  else
-    ARKStepGetLastStep(mem_, &h);
-  if (h > 0) min_step_ = std::min(min_step_, h);
   if (flag < 0) {
-    char* name = explicit_ ? ERKStepGetReturnFlagName(flag) : ARKStepGetReturnFlagName(flag);
+    char* name = api_.get_return_flag_name(flag);
     out.status = StepStatus::failed;
     out.reason = std::string(name) + (last_error_.empty() ? "" : " (" + last_error_ + ")");
     std::free(name);
-    if (explicit_)
-      ERKStepGetCurrentTime(mem_, &out.t);
-    else
-      ARKStepGetCurrentTime(mem_, &out.t);
+    api_.get_current_time(mem_, &out.t);
     return out;
   }
   if (flag == ARK_ROOT_RETURN) {
@@ -101,26 +70,30 @@ StepOutcome ArkodeIntegrator::step(double t_stop) {
   return out;
 }
 
-void ArkodeIntegrator::interpolate(double t, double* y) {
-  check(explicit_ ? ERKStepGetDky(mem_, t, 0, scratch_) : ARKStepGetDky(mem_, t, 0, scratch_), "GetDky");
-  std::copy(scratch_.data(), scratch_.data() + dynamics_.size(), y);
+double ArkodeIntegrator::span_end() const {
+  double t = 0;
+  api_.get_current_time(mem_, &t);
+  return t;
 }
+
+void ArkodeIntegrator::derivative(double t, int k, double* out) {
+  check(api_.get_dky(mem_, t, k, scratch_), "GetDky");
+  std::copy(scratch_.data(), scratch_.data() + dynamics_.size(), out);
+}
+
+void ArkodeIntegrator::interpolate(double t, double* y) { derivative(t, 0, y); }
+void ArkodeIntegrator::interpolate_rate(double t, double* ydot) { derivative(t, 1, ydot); }
 
 void ArkodeIntegrator::restart(double t, const double* y) {
   earlier_segments_ += segment_stats();
-  min_step_ = std::numeric_limits<double>::infinity();
   std::copy(y, y + dynamics_.size(), y_.data());
-  if (explicit_)
-    check(ERKStepReInit(mem_, sundials::rhs, t, y_), "ERKStepReInit");
-  else
-    check(ARKStepReInit(mem_, nullptr, sundials::rhs, t, y_), "ARKStepReInit");
+  check(api_.reinit(mem_, sundials::rhs, t, y_), "ReInit");
   t_stop_set_ = -1;
 }
 
 std::vector<int> ArkodeIntegrator::roots() {
   std::vector<int> found(dynamics_.latch_count());
-  check(explicit_ ? ERKStepGetRootInfo(mem_, found.data()) : ARKStepGetRootInfo(mem_, found.data()),
-        "GetRootInfo");
+  check(api_.get_root_info(mem_, found.data()), "GetRootInfo");
   std::vector<int> hit;
   for (int l = 0; l < static_cast<int>(found.size()); ++l)
     if (found[l] != 0) hit.push_back(l);
@@ -135,38 +108,27 @@ SolverStats ArkodeIntegrator::stats() const {
 
 SolverStats ArkodeIntegrator::segment_stats() const {
   SolverStats s;
-  long steps = 0, etf = 0;
-  if (explicit_) {
-    ERKStepGetNumSteps(mem_, &steps);
-    ERKStepGetNumErrTestFails(mem_, &etf);
-    ERKStepGetLastStep(mem_, &s.last_step);
-  } else {
-    long jac = 0, setups = 0, iters = 0, fails = 0;
-    ARKStepGetNumSteps(mem_, &steps);
-    ARKStepGetNumErrTestFails(mem_, &etf);
-    if (dense_) ARKStepGetNumJacEvals(mem_, &jac);
-    if (krylov_) ARKStepGetNumLinIters(mem_, &s.linear_iterations);
-    ARKStepGetNumLinSolvSetups(mem_, &setups);
-    ARKStepGetNumNonlinSolvIters(mem_, &iters);
-    ARKStepGetNumNonlinSolvConvFails(mem_, &fails);
-    ARKStepGetLastStep(mem_, &s.last_step);
-    s.jacobian_evals = jac;
-    s.linear_setups = setups;
-    s.nonlinear_iterations = iters;
-    s.nonlinear_failures = fails;
-  }
-  s.steps = steps;
-  s.error_test_failures = etf;
-  s.min_step = min_step_;
+  api_.get_num_steps(mem_, &s.steps);
+  api_.get_num_err_test_fails(mem_, &s.error_test_failures);
+  s.last_step = last_step();
+  if (!api_.implicit) return s;
+  if (dense_) ARKStepGetNumJacEvals(mem_, &s.jacobian_evals);
+  if (krylov_) ARKStepGetNumLinIters(mem_, &s.linear_iterations);
+  ARKStepGetNumLinSolvSetups(mem_, &s.linear_setups);
+  ARKStepGetNumNonlinSolvIters(mem_, &s.nonlinear_iterations);
+  ARKStepGetNumNonlinSolvConvFails(mem_, &s.nonlinear_failures);
   return s;
 }
 
 double ArkodeIntegrator::current_step() const {
   double h = 0;
-  if (explicit_)
-    ERKStepGetCurrentStep(mem_, &h);
-  else
-    ARKStepGetCurrentStep(mem_, &h);
+  api_.get_current_step(mem_, &h);
+  return h;
+}
+
+double ArkodeIntegrator::last_step() const {
+  double h = 0;
+  api_.get_last_step(mem_, &h);
   return h;
 }
 

@@ -1,11 +1,13 @@
 // ARKODE: an explicit adaptive embedded Runge-Kutta method (ERKStep, the
 // default 4th-order pair) or a diagonally implicit one (ARKStep with the
 // whole right-hand side implicit, the default 4th-order SDIRK, Newton with a
-// dense direct solver).
+// dense direct solver or GMRES). SUNDIALS 6 gives the two steppers parallel
+// function families; the integrator picks one family once (arkode_api.hpp).
 #pragma once
 
 #include <optional>
 
+#include "arkode_api.hpp"
 #include "integrator.hpp"
 #include "sundials_support.hpp"
 
@@ -18,16 +20,21 @@ class ArkodeIntegrator : public Integrator {
   ~ArkodeIntegrator() override;
 
   StepOutcome step(double t_stop) override;
+  double span_begin() const override { return span_end() - last_step(); }
+  double span_end() const override;
   void interpolate(double t, double* y) override;
+  void interpolate_rate(double t, double* ydot) override;
   void restart(double t, const double* y) override;
   std::vector<int> roots() override;
   SolverStats stats() const override;
   double current_step() const override;
+  double last_step() const override;
 
  private:
   SolverStats segment_stats() const;
+  void derivative(double t, int k, double* out);
 
-  bool explicit_;
+  const ArkodeApi& api_;
   Dynamics& dynamics_;
   sundials::Context ctx_;
   sundials::Vector y_;
@@ -37,7 +44,6 @@ class ArkodeIntegrator : public Integrator {
   std::optional<sundials::KrylovSolver> krylov_;
   void* mem_ = nullptr;
   double t_stop_set_ = -1;
-  double min_step_;
   SolverStats earlier_segments_;
   std::string last_error_;
 };

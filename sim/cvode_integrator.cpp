@@ -4,7 +4,6 @@
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
 #include <cstdlib>
-#include <limits>
 
 namespace unfurl {
 
@@ -15,8 +14,7 @@ CvodeIntegrator::CvodeIntegrator(IntegratorKind kind, Dynamics& dynamics, const 
     : dynamics_(dynamics),
       y_(y0, ctx_),
       atol_(absolute_tolerances(dynamics.layout(), settings.atol), ctx_),
-      scratch_(y0, ctx_),
-      min_step_(std::numeric_limits<double>::infinity()) {
+      scratch_(y0, ctx_) {
   const bool bdf = kind == IntegratorKind::cvode_bdf;
   mem_ = CVodeCreate(bdf ? CV_BDF : CV_ADAMS, ctx_);
   sundials::check_ptr(mem_, "CVodeCreate");
@@ -60,9 +58,6 @@ StepOutcome CvodeIntegrator::step(double t_stop) {
   const int flag = CVode(mem_, t_stop, y_, &t, CV_ONE_STEP);
   StepOutcome out;
   out.t = t;
-  double h = 0;
-  CVodeGetLastStep(mem_, &h);
-  if (h > 0) min_step_ = std::min(min_step_, h);
   if (flag < 0) {
     char* name = CVodeGetReturnFlagName(flag);
     out.status = StepStatus::failed;
@@ -82,14 +77,22 @@ StepOutcome CvodeIntegrator::step(double t_stop) {
   return out;
 }
 
-void CvodeIntegrator::interpolate(double t, double* y) {
-  check(CVodeGetDky(mem_, t, 0, scratch_), "CVodeGetDky");
-  std::copy(scratch_.data(), scratch_.data() + dynamics_.size(), y);
+double CvodeIntegrator::span_end() const {
+  double t = 0;
+  CVodeGetCurrentTime(mem_, &t);
+  return t;
 }
+
+void CvodeIntegrator::derivative(double t, int k, double* out) {
+  check(CVodeGetDky(mem_, t, k, scratch_), "CVodeGetDky");
+  std::copy(scratch_.data(), scratch_.data() + dynamics_.size(), out);
+}
+
+void CvodeIntegrator::interpolate(double t, double* y) { derivative(t, 0, y); }
+void CvodeIntegrator::interpolate_rate(double t, double* ydot) { derivative(t, 1, ydot); }
 
 void CvodeIntegrator::restart(double t, const double* y) {
   earlier_segments_ += segment_stats();
-  min_step_ = std::numeric_limits<double>::infinity();
   std::copy(y, y + dynamics_.size(), y_.data());
   check(CVodeReInit(mem_, t, y_), "CVodeReInit");
   t_stop_set_ = -1;
@@ -126,9 +129,14 @@ SolverStats CvodeIntegrator::segment_stats() const {
   s.nonlinear_iterations = iters;
   s.nonlinear_failures = fails;
   s.error_test_failures = etf;
-  s.min_step = min_step_;
-  CVodeGetLastStep(mem_, &s.last_step);
+  s.last_step = last_step();
   return s;
+}
+
+double CvodeIntegrator::last_step() const {
+  double h = 0;
+  CVodeGetLastStep(mem_, &h);
+  return h;
 }
 
 double CvodeIntegrator::current_step() const {

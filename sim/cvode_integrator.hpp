@@ -1,13 +1,13 @@
-// CVODE: variable-order BDF (stiff, Newton with a dense direct solver) or
-// Adams-Moulton (non-stiff, fixed-point iteration).
+// CVODE: variable-order BDF (stiff, Newton with a dense direct solver or
+// GMRES) or Adams-Moulton (non-stiff, fixed-point iteration).
 #pragma once
-
-#include "integrator.hpp"
-#include "sundials_support.hpp"
 
 #include <sundials/sundials_nonlinearsolver.h>
 
 #include <optional>
+
+#include "integrator.hpp"
+#include "sundials_support.hpp"
 
 namespace unfurl {
 
@@ -18,14 +18,19 @@ class CvodeIntegrator : public Integrator {
   ~CvodeIntegrator() override;
 
   StepOutcome step(double t_stop) override;
+  double span_begin() const override { return span_end() - last_step(); }
+  double span_end() const override;
   void interpolate(double t, double* y) override;
+  void interpolate_rate(double t, double* ydot) override;
   void restart(double t, const double* y) override;
   std::vector<int> roots() override;
   SolverStats stats() const override;
   double current_step() const override;
+  double last_step() const override;
 
  private:
   SolverStats segment_stats() const;  // since the last (re)start
+  void derivative(double t, int k, double* out);
 
   Dynamics& dynamics_;
   sundials::Context ctx_;
@@ -37,7 +42,6 @@ class CvodeIntegrator : public Integrator {
   SUNNonlinearSolver fixed_point_ = nullptr;
   void* mem_ = nullptr;
   double t_stop_set_ = -1;
-  double min_step_;
   SolverStats earlier_segments_;
   std::string last_error_;
 };

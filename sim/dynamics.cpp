@@ -43,6 +43,7 @@ Dynamics::Dynamics(const Scene& scene)
     g_dot_.resize(layout_.m);
     d_.resize(layout_.m);
   }
+  ydot_.resize(layout_.size());
 }
 
 Dynamics::~Dynamics() = default;
@@ -136,12 +137,51 @@ void Dynamics::switching_functions(const double* y, double* values) const {
     values[l] = latch_state_.switching_value(l, y[layout_.q() + scene_.model.coordinate[scene_.latches[l].joint]]);
 }
 
+void Dynamics::loads(double t, const double* y, Loads& out, std::vector<ClosureError>* closure) {
+  const Model& model = scene_.model;
+  const StateLayout& L = layout_;
+  evaluate(t, y, ydot_.data());
+  const double* q = y + L.q();
+  const double* dq = ydot_.data() + L.q();
+  out.joints.assign(model.size(), JointLoad{});
+  for (const JointSpring& s : scene_.springs) {
+    const int c = model.coordinate[s.joint];
+    out.joints[s.joint].spring += -s.stiffness * (q[c] - s.free_position);
+    out.joints[s.joint].damper += -s.damping * dq[c];
+  }
+  for (int l = 0; l < latch_count(); ++l) {
+    if (!latch_state_.engaged(l)) continue;
+    const Latch& latch = scene_.latches[l];
+    const int c = model.coordinate[latch.joint];
+    out.joints[latch.joint].latch += latch.torque(q[c], dq[c]);
+  }
+  // The applied forces again (the force pass consumed them), loop forces
+  // included, then the accelerations and each joint's wrench, moved from
+  // the child's origin to the hinge point.
+  for (Vec6& f : F_) f.setZero();
+  add_body_loads(model, scene_.loads, poses_, F_);
+  if (regulator_) regulator_->apply(lambda_.data(), F_);
+  sweep_.accelerations(v_, dq, F_, Q_joint_.data(), bias_, a_, ddq_.data());
+  for (int i = 0; i < model.size(); ++i) {
+    const Vec6 f = sweep_.joint_wrench(i, bias_, a_);
+    Vec6& r = out.joints[i].reaction;
+    r.head<3>() = f.head<3>();
+    r.tail<3>() = f.tail<3>() - model.joints[i].child_point.cross(f.head<3>());
+  }
+  out.loop_force.resize(L.m);
+  for (int c = 0; c < L.m; ++c) out.loop_force[c] = -lambda_[c];
+  if (!closure) return;
+  // evaluate() placed the bodies wherever a loop needs them.
+  closure->resize(scene_.loops.size());
+  for (std::size_t l = 0; l < scene_.loops.size(); ++l)
+    (*closure)[l] = closure_error(poses_[scene_.loops[l].body], poses_[scene_.loops[l].image]);
+}
+
 void Dynamics::observe(double t, const double* y, Observation& out) {
   const Model& model = scene_.model;
   const StateLayout& L = layout_;
-  std::vector<double> ydot(size());
-  evaluate(t, y, ydot.data());
-  out.dq.assign(ydot.begin() + L.q(), ydot.begin() + L.q() + L.nq);
+  loads(t, y, out.loads);
+  out.dq.assign(ydot_.begin() + L.q(), ydot_.begin() + L.q() + L.nq);
   out.velocity = v_;
   body_poses(model, y + L.q(), out.poses);
 

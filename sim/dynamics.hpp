@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "latch.hpp"
+#include "loads.hpp"
 #include "regulator.hpp"
 #include "scene.hpp"
 #include "sweep.hpp"
@@ -47,6 +48,7 @@ struct Observation {
   std::vector<Pose> poses;
   std::vector<ClosureError> closure;   // per loop
   EnergyParts energy;
+  Loads loads;
 };
 
 class Dynamics {
@@ -80,6 +82,11 @@ class Dynamics {
   // Derived quantities at a state.
   void observe(double t, const double* y, Observation& out);
 
+  // The loads at a state (loads.hpp): the element forces from the joints'
+  // laws, the reactions from the sweep's accelerations (exact, O(N)); and
+  // the loops' geometric gaps if asked.
+  void loads(double t, const double* y, Loads& out, std::vector<ClosureError>* closure = nullptr);
+
  private:
   bool evaluate(double t, const double* y, double* ydot);
   void joint_torques(const double* q, const double* dq, double* Q) const;
@@ -97,7 +104,7 @@ class Dynamics {
   std::vector<Vec6> phi_, v_, mu_, F_;
   std::vector<Pose> poses_;
   std::vector<Vec6> bias_, a_;   // the accelerations pass
-  std::vector<double> Q_, Q_joint_, ddq_, lambda_, g_, g_dot_, d_;
+  std::vector<double> Q_, Q_joint_, ddq_, lambda_, g_, g_dot_, d_, ydot_;
 };
 
 }  // namespace unfurl

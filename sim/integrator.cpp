@@ -16,7 +16,10 @@ SolverStats& SolverStats::operator+=(const SolverStats& segment) {
   nonlinear_iterations += segment.nonlinear_iterations;
   nonlinear_failures += segment.nonlinear_failures;
   error_test_failures += segment.error_test_failures;
+  restarts += segment.restarts;
+  grazes += segment.grazes;
   min_step = std::min(min_step, segment.min_step);
+  min_step_after_restart = std::min(min_step_after_restart, segment.min_step_after_restart);
   last_step = segment.last_step;
   return *this;
 }

@@ -22,7 +22,12 @@ struct SolverStats {
   long nonlinear_iterations = 0;
   long nonlinear_failures = 0;
   long error_test_failures = 0;
+  long restarts = 0;  // re-initializations after latch events
+  long grazes = 0;    // latch crossings found inside a step (latch_events.hpp)
+  // The smallest step away from restarts (after each (re)start the step
+  // grows from a tiny first step; those steps are counted apart).
   double min_step = std::numeric_limits<double>::infinity();
+  double min_step_after_restart = std::numeric_limits<double>::infinity();
   double last_step = 0;
 
   // Counters of a run made of several restarted segments.
@@ -43,14 +48,23 @@ class Integrator {
   // One internal step toward t_stop, never past it. Stops early at a root
   // of the latch switching functions (status root, t = the root).
   virtual StepOutcome step(double t_stop) = 0;
-  // The state at a time inside the last step, by the method's interpolant.
+  // The span over which the interpolant serves: the last step taken (after
+  // a root return it reaches past the root).
+  virtual double span_begin() const = 0;
+  virtual double span_end() const = 0;
+  // The state at a time inside the span, by the method's interpolant, and
+  // its time derivative.
   virtual void interpolate(double t, double* y) = 0;
+  virtual void interpolate_rate(double t, double* ydot) = 0;
   // Restarts cleanly from (t, y): after an event changed the equations.
   virtual void restart(double t, const double* y) = 0;
   // The switching functions that reached zero at the last root.
   virtual std::vector<int> roots() = 0;
+  // Counters; min_step and restarts are the simulation's to fill.
   virtual SolverStats stats() const = 0;
+  // The step it will try next, and the one just taken.
   virtual double current_step() const = 0;
+  virtual double last_step() const = 0;
 };
 
 // Absolute tolerances per state: atol for q, looser for p and u.

@@ -30,6 +30,8 @@ class LatchState {
   // The root function of latch l: s (q - position), crossing zero downwards
   // when the joint reaches the deployed position; +1 once engaged.
   double switching_value(int l, double q) const;
+  // Its rate for a joint rate dq (0 once engaged).
+  double switching_rate(int l, double dq) const { return engaged_[l] ? 0.0 : side_[l] * dq; }
   bool engaged(int l) const { return engaged_[l] != 0; }
   void engage(int l) { engaged_[l] = 1; }
   int size() const { return static_cast<int>(side_.size()); }

@@ -2,19 +2,9 @@
 
 #include <cmath>
 
+#include "hermite.hpp"
+
 namespace unfurl {
-
-namespace {
-
-// Cubic Hermite interpolation on [t0, t1] from values and slopes.
-double hermite(double t0, double t1, double y0, double f0, double y1, double f1, double t) {
-  const double h = t1 - t0, s = (t - t0) / h;
-  const double h00 = (1 + 2 * s) * (1 - s) * (1 - s), h10 = s * (1 - s) * (1 - s);
-  const double h01 = s * s * (3 - 2 * s), h11 = s * s * (s - 1);
-  return h00 * y0 + h10 * h * f0 + h01 * y1 + h11 * h * f1;
-}
-
-}  // namespace
 
 Rk4Integrator::Rk4Integrator(Dynamics& dynamics, const RunSettings& settings, double t0,
                              const std::vector<double>& y0)
@@ -56,7 +46,6 @@ bool Rk4Integrator::take_step(double h) {
   ok = ok && dynamics_.rhs(t1_, y1_.data(), f1_.data());
   dynamics_.switching_functions(y1_.data(), s1_.data());
   ++stats_.steps;
-  stats_.min_step = std::min(stats_.min_step, h);
   stats_.last_step = h;
   return ok;
 }
@@ -68,8 +57,9 @@ double Rk4Integrator::earliest_crossing(std::vector<int>& which) {
   for (int l = 0; l < dynamics_.latch_count(); ++l) {
     if (!(s0_[l] > 0 && s1_[l] <= 0)) continue;
     const int c = nq_offset + dynamics_.model().coordinate[dynamics_.scene().latches[l].joint];
+    const Hermite step{t0_, t1_};
     auto value = [&](double t) {
-      return dynamics_.latch_state().switching_value(l, hermite(t0_, t1_, y0_[c], f0_[c], y1_[c], f1_[c], t));
+      return dynamics_.latch_state().switching_value(l, step.value(y0_[c], f0_[c], y1_[c], f1_[c], t));
     };
     double lo = t0_, hi = t1_;
     for (int it = 0; it < 60 && hi - lo > 1e-15 * std::max(1.0, std::abs(hi)); ++it) {
@@ -108,13 +98,8 @@ StepOutcome Rk4Integrator::step(double t_stop) {
   bool crossed = false;
   for (int l = 0; l < dynamics_.latch_count(); ++l) crossed = crossed || (s0_[l] > 0 && s1_[l] <= 0);
   if (crossed) {
-    const double t_root = earliest_crossing(roots_);
-    if (t_root < t1_) {
-      take_step(t_root - t0_);
-      --stats_.steps;  // the retaken step replaces the first attempt
-    }
     out.status = StepStatus::root;
-    out.t = t1_;
+    out.t = earliest_crossing(roots_);
     return out;
   }
   out.t = t1_;
@@ -127,7 +112,17 @@ void Rk4Integrator::interpolate(double t, double* y) {
     std::copy(y1_.begin(), y1_.end(), y);
     return;
   }
-  for (std::size_t j = 0; j < y0_.size(); ++j) y[j] = hermite(t0_, t1_, y0_[j], f0_[j], y1_[j], f1_[j], t);
+  const Hermite step{t0_, t1_};
+  for (std::size_t j = 0; j < y0_.size(); ++j) y[j] = step.value(y0_[j], f0_[j], y1_[j], f1_[j], t);
+}
+
+void Rk4Integrator::interpolate_rate(double t, double* ydot) {
+  if (t1_ == t0_) {
+    std::copy(f1_.begin(), f1_.end(), ydot);
+    return;
+  }
+  const Hermite step{t0_, t1_};
+  for (std::size_t j = 0; j < y0_.size(); ++j) ydot[j] = step.rate(y0_[j], f0_[j], y1_[j], f1_[j], t);
 }
 
 }  // namespace unfurl

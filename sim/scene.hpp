@@ -40,9 +40,12 @@ struct RunSettings {
   // The run fails ("time budget") when it has taken longer than this, in
   // seconds of wall time; 0: no limit.
   double max_wall_time = 0;
-  // The run fails when a loop's residual |eps pi| or geometric closure
-  // exceeds this (m or rad): the regulator has lost the loop.
+  // The run fails when a loop's geometric gap exceeds this (m or rad), at
+  // the end of any step: the regulator has lost the loop.
   double max_closure = 0.1;
+  // Latches whose roots follow the first within this many seconds engage in
+  // one restart, each at its own root (latch_events.hpp).
+  double event_window = 1e-6;
 };
 
 // What the renderer draws for a body: a mesh from assets/meshes, scaled,

@@ -1,8 +1,12 @@
 #include "simulation.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <sstream>
+
+#include "latch_events.hpp"
+#include "run_monitor.hpp"
 
 namespace unfurl {
 
@@ -30,11 +34,15 @@ class Recorder {
     s.dq = observation_.dq;
     s.closure = observation_.closure;
     s.energy = observation_.energy;
+    s.loads = observation_.loads;
     trajectory_.samples.push_back(std::move(s));
     if (observer_.on_sample) observer_.on_sample(trajectory_.samples.back());
   }
 
-  const Observation& last() const { return observation_; }
+  void event(const LatchEvent& e) {
+    trajectory_.events.push_back(e);
+    if (observer_.on_event) observer_.on_event(e);
+  }
 
  private:
   Dynamics& dynamics_;
@@ -42,12 +50,6 @@ class Recorder {
   Trajectory& trajectory_;
   Observation observation_;
 };
-
-double largest_closure(const Observation& o) {
-  double worst = 0;
-  for (const ClosureError& c : o.closure) worst = std::max({worst, c.distance, c.angle});
-  return worst;
-}
 
 }  // namespace
 
@@ -64,6 +66,7 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
   Dynamics dynamics(scene);
   Trajectory& trajectory = result.trajectory;
   trajectory.layout = dynamics.layout();
+  if (dynamics.regulator()) trajectory.loop_components = dynamics.regulator()->components();
 
   std::vector<double> y = dynamics.initial_state();
   std::vector<double> ys(y.size());
@@ -71,12 +74,8 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
   const double t0 = 0.0;
   recorder.record(t0, y);
   // A joint that starts exactly at its latch angle is caught from the start.
-  for (int l = 0; l < dynamics.latch_count(); ++l) {
-    if (!dynamics.latch_state().engaged(l)) continue;
-    const LatchEvent event{t0, l, scene.latches[l].joint};
-    trajectory.events.push_back(event);
-    if (observer.on_event) observer.on_event(event);
-  }
+  for (int l = 0; l < dynamics.latch_count(); ++l)
+    if (dynamics.latch_state().engaged(l)) recorder.event({t0, l, scene.latches[l].joint});
 
   auto fail = [&](double t, double step, std::string check, std::string reason) {
     result.status = RunStatus::failed;
@@ -89,6 +88,18 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
   } catch (const std::exception& e) {
     fail(t0, 0, "integrator", e.what());
   }
+  LatchEvents events(dynamics, settings.event_window);
+  RunMonitor monitor(dynamics);
+  long restarts = 0;
+  // The gap is checked at every step's end, the start included.
+  auto check_closure = [&](double t, double gap) {
+    if (gap <= settings.max_closure) return true;
+    std::ostringstream why;
+    why << "a loop opened by " << gap << " (limit " << settings.max_closure << "): the regulator lost the loop";
+    fail(t, integrator ? integrator->current_step() : 0.0, "closure", why.str());
+    return false;
+  };
+  check_closure(t0, monitor.observe(t0, y.data()));
 
   long sample_index = 1;
   auto sample_time = [&](long k) { return std::min(t0 + k * settings.sample, settings.t_end); };
@@ -103,35 +114,27 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
       fail(step.t, integrator->current_step(), "integrator", step.reason);
       break;
     }
-    // Samples inside the step just taken, by the method's interpolant.
-    while (sample_index >= 0 && sample_time(sample_index) <= step.t) {
+    monitor.step_taken(integrator->last_step());
+    const LatchGroup group = events.find(*integrator, step);
+    const double t_done = group.empty() ? step.t : group.t_restart;
+    // Samples up to where this step is done, by the method's interpolant.
+    while (sample_index >= 0 && sample_time(sample_index) <= t_done) {
       integrator->interpolate(sample_time(sample_index), ys.data());
       recorder.record(sample_time(sample_index), ys);
-      if (largest_closure(recorder.last()) > settings.max_closure) {
-        std::ostringstream why;
-        why << "a loop opened by " << largest_closure(recorder.last()) << " (limit " << settings.max_closure
-            << "): the regulator lost the loop";
-        fail(sample_time(sample_index), integrator->current_step(), "closure", why.str());
-        break;
-      }
       sample_index = sample_time(sample_index) >= settings.t_end ? -1 : sample_index + 1;
     }
-    if (result.status != RunStatus::finished) break;
-    t = step.t;
-    if (step.status == StepStatus::root) {
-      integrator->interpolate(t, y.data());
-      std::vector<double> s(dynamics.latch_count());
-      dynamics.switching_functions(y.data(), s.data());
-      for (int l : integrator->roots()) s[l] = 0;
-      for (int l = 0; l < dynamics.latch_count(); ++l) {
-        if (dynamics.latch_state().engaged(l) || s[l] > 0) continue;
-        dynamics.latch_state().engage(l);
-        const LatchEvent event{t, l, scene.latches[l].joint};
-        trajectory.events.push_back(event);
-        if (observer.on_event) observer.on_event(event);
-      }
-      integrator->restart(t, y.data());
+    integrator->interpolate(t_done, y.data());
+    if (!group.empty()) {
+      events.engage(group, *integrator, y.data());
+      std::vector<LatchRoot> roots = group.roots;
+      std::stable_sort(roots.begin(), roots.end(), [](const LatchRoot& a, const LatchRoot& b) { return a.t < b.t; });
+      for (const LatchRoot& r : roots) recorder.event({r.t, r.latch, scene.latches[r.latch].joint});
+      integrator->restart(t_done, y.data());
+      monitor.restarted();
+      ++restarts;
     }
+    t = t_done;
+    if (!check_closure(t, monitor.observe(t, y.data()))) break;
     if (t < settings.t_end && settings.max_wall_time > 0 &&
         std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count() > settings.max_wall_time) {
       std::ostringstream why;
@@ -149,6 +152,11 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
   }
 
   if (integrator) result.stats = integrator->stats();
+  result.stats.restarts = restarts;
+  result.stats.min_step = monitor.min_step();
+  result.stats.min_step_after_restart = monitor.min_step_after_restart();
+  result.stats.grazes = events.grazes();
+  result.peaks = monitor.peaks();
   result.rhs_calls = dynamics.rhs_calls();
   result.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   return result;

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "integrator.hpp"
+#include "loads.hpp"
 #include "scene.hpp"
 #include "trajectory.hpp"
 
@@ -31,6 +32,7 @@ struct RunResult {
   RunStatus status = RunStatus::finished;
   Failure failure;
   SolverStats stats;
+  RunPeaks peaks;  // over every step, not only the samples
   long rhs_calls = 0;
   double wall_time_s = 0;
   RunSettings settings;

@@ -9,24 +9,22 @@ RunSummary summarize(const Scene& scene, const RunResult& result) {
   RunSummary s;
   const Model& model = scene.model;
   const Trajectory& tr = result.trajectory;
-  double first_latch = std::numeric_limits<double>::infinity();
-  for (const LatchEvent& e : tr.events) {
-    s.latch_times.emplace_back(model.joints[e.joint].name, e.t);
-    first_latch = std::min(first_latch, e.t);
-  }
+  for (const LatchEvent& e : tr.events) s.latch_times.emplace_back(model.joints[e.joint].name, e.t);
   for (int l = 0; l < static_cast<int>(scene.latches.size()); ++l) {
     const bool engaged = std::any_of(tr.events.begin(), tr.events.end(),
                                      [&](const LatchEvent& e) { return e.latch == l; });
     if (!engaged) s.unlatched.push_back(model.joints[scene.latches[l].joint].name);
   }
-  for (const Sample& sample : tr.samples) {
-    for (const ClosureError& c : sample.closure) {
-      s.max_closure_m = std::max(s.max_closure_m, c.distance);
-      s.max_closure_rad = std::max(s.max_closure_rad, c.angle);
-      if (sample.t > first_latch) continue;
-      s.max_closure_m_before_latch = std::max(s.max_closure_m_before_latch, c.distance);
-      s.max_closure_rad_before_latch = std::max(s.max_closure_rad_before_latch, c.angle);
-    }
+  const RunPeaks& p = result.peaks;
+  s.max_closure_m = p.gap_m.value;
+  s.max_closure_rad = p.gap_rad.value;
+  s.max_closure_m_before_latch = p.gap_m_before_latch.value;
+  s.max_closure_rad_before_latch = p.gap_rad_before_latch.value;
+  for (std::size_t l = 0; l < p.latch_torque.size(); ++l)
+    s.latch_peak_torque.push_back({model.joints[scene.latches[l].joint].name, p.latch_torque[l]});
+  for (std::size_t j = 0; j < p.hinge_force.size(); ++j) {
+    s.hinge_peak_force.push_back({model.joints[j].name, p.hinge_force[j]});
+    s.hinge_peak_moment.push_back({model.joints[j].name, p.hinge_moment[j]});
   }
   if (!tr.empty()) {
     s.energy_initial = tr.samples.front().energy.total();

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "hermite.hpp"
+
 namespace unfurl {
 
 void Trajectory::coordinates_at(double t, std::vector<double>& q) const {
@@ -19,11 +21,8 @@ void Trajectory::coordinates_at(double t, std::vector<double>& q) const {
                                       [](double x, const Sample& s) { return x < s.t; });
   const Sample& b = *after;
   const Sample& a = *(after - 1);
-  const double h = b.t - a.t, s = (t - a.t) / h;
-  const double h00 = (1 + 2 * s) * (1 - s) * (1 - s), h10 = s * (1 - s) * (1 - s);
-  const double h01 = s * s * (3 - 2 * s), h11 = s * s * (s - 1);
-  for (int c = 0; c < layout.nq; ++c)
-    q[c] = h00 * a.y[layout.q() + c] + h10 * h * a.dq[c] + h01 * b.y[layout.q() + c] + h11 * h * b.dq[c];
+  const Hermite span{a.t, b.t};
+  for (int c = 0; c < layout.nq; ++c) q[c] = span.value(a.y[layout.q() + c], a.dq[c], b.y[layout.q() + c], b.dq[c], t);
 }
 
 }  // namespace unfurl

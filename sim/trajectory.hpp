@@ -16,6 +16,7 @@ struct Sample {
   std::vector<double> dq;            // joint rates
   std::vector<ClosureError> closure; // geometric gap per loop
   EnergyParts energy;
+  Loads loads;
 };
 
 struct LatchEvent {
@@ -26,6 +27,7 @@ struct LatchEvent {
 
 struct Trajectory {
   StateLayout layout;
+  std::vector<LoopComponent> loop_components;  // what Loads::loop_force holds
   std::vector<Sample> samples;
   std::vector<LatchEvent> events;
 

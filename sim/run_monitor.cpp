@@ -1,0 +1,47 @@
+#include "run_monitor.hpp"
+
+#include <algorithm>
+
+namespace unfurl {
+
+RunMonitor::RunMonitor(Dynamics& dynamics) : dynamics_(dynamics) {
+  peaks_.latch_torque.resize(dynamics.latch_count());
+  peaks_.hinge_force.resize(dynamics.model().size());
+  peaks_.hinge_moment.resize(dynamics.model().size());
+}
+
+double RunMonitor::observe(double t, const double* y) {
+  dynamics_.loads(t, y, loads_, &closure_);
+  for (int l = 0; l < dynamics_.latch_count(); ++l)
+    if (dynamics_.latch_state().engaged(l))
+      peaks_.latch_torque[l].update(std::abs(loads_.joints[dynamics_.scene().latches[l].joint].latch), t);
+  for (std::size_t j = 0; j < loads_.joints.size(); ++j) {
+    const Vec6& r = loads_.joints[j].reaction;
+    peaks_.hinge_force[j].update(r.head<3>().norm(), t);
+    peaks_.hinge_moment[j].update(r.tail<3>().norm(), t);
+  }
+  const bool before_latch = dynamics_.latch_state().engaged_count() == 0;
+  double largest = 0;
+  for (const ClosureError& c : closure_) {
+    peaks_.gap_m.update(c.distance, t);
+    peaks_.gap_rad.update(c.angle, t);
+    if (before_latch) {
+      peaks_.gap_m_before_latch.update(c.distance, t);
+      peaks_.gap_rad_before_latch.update(c.angle, t);
+    }
+    largest = std::max({largest, c.distance, c.angle});
+  }
+  return largest;
+}
+
+void RunMonitor::step_taken(double h) {
+  if (ramping_ && h > last_h_) {
+    last_h_ = h;
+    min_step_after_restart_ = std::min(min_step_after_restart_, h);
+    return;
+  }
+  ramping_ = false;
+  min_step_ = std::min(min_step_, h);
+}
+
+}  // namespace unfurl

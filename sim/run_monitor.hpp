@@ -1,0 +1,44 @@
+// What the simulation watches at the end of every step the integrator
+// takes, not only at the samples: the peaks of the loads (a latch's shock
+// lasts milliseconds), the loops' geometric gap (max_closure fails a run on
+// it), and the step sizes away from restarts. Because it follows the steps,
+// what it reports does not depend on the sampling interval.
+#pragma once
+
+#include <limits>
+#include <vector>
+
+#include "dynamics.hpp"
+#include "loads.hpp"
+
+namespace unfurl {
+
+class RunMonitor {
+ public:
+  explicit RunMonitor(Dynamics& dynamics);
+
+  // At a step's end (t, y), latches as engaged there. Returns the largest
+  // gap of any loop, metres or radians.
+  double observe(double t, const double* y);
+
+  // Step-size bookkeeping: after each (re)start the step grows from a tiny
+  // first step; until it stops growing the steps count as restart steps.
+  void step_taken(double h);
+  void restarted() { ramping_ = true, last_h_ = 0; }
+
+  const RunPeaks& peaks() const { return peaks_; }
+  double min_step() const { return min_step_; }
+  double min_step_after_restart() const { return min_step_after_restart_; }
+
+ private:
+  Dynamics& dynamics_;
+  RunPeaks peaks_;
+  Loads loads_;
+  std::vector<ClosureError> closure_;
+  bool ramping_ = true;
+  double last_h_ = 0;
+  double min_step_ = std::numeric_limits<double>::infinity();
+  double min_step_after_restart_ = std::numeric_limits<double>::infinity();
+};
+
+}  // namespace unfurl
