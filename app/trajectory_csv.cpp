@@ -48,6 +48,60 @@ void read_events(const Scene& scene, const std::string& path, Trajectory& tr) {
   }
 }
 
+// loads.csv beside the trajectory, when there is one: the same samples.
+void read_loads(const Scene& scene, const std::string& path, Trajectory& tr) {
+  std::ifstream in(path);
+  if (!in) return;
+  std::string line;
+  if (!std::getline(in, line)) return;
+  const auto header = split(line);
+  std::map<std::string, int> column;
+  for (std::size_t c = 0; c < header.size(); ++c) column[header[c]] = static_cast<int>(c);
+  const Model& model = scene.model;
+  auto find = [&](const std::string& name) {
+    const auto it = column.find(name);
+    return it == column.end() ? -1 : it->second;
+  };
+  std::vector<int> loop_columns;
+  for (std::size_t c = 0; c < header.size(); ++c) {
+    if (header[c].rfind("loop_force.", 0) != 0) continue;
+    loop_columns.push_back(static_cast<int>(c));
+    const std::string rest = header[c].substr(11);
+    const auto dot = rest.rfind('.');
+    int loop = -1, axis = -1;
+    for (std::size_t l = 0; l < scene.loops.size(); ++l)
+      if (dot != std::string::npos && scene.loops[l].name == rest.substr(0, dot)) loop = static_cast<int>(l);
+    for (int a = 0; a < 6; ++a)
+      if (dot != std::string::npos && rest.substr(dot + 1) == wrench_component_name(a)) axis = a;
+    if (loop < 0 || axis < 0) throw std::runtime_error(path + ":1: no loop component '" + rest + "' in the scene");
+    tr.loop_components.push_back({loop, axis});
+  }
+  for (std::size_t k = 0; k < tr.samples.size(); ++k) {
+    if (!std::getline(in, line)) throw std::runtime_error(path + ": fewer rows than trajectory.csv");
+    const std::string where = path + ":" + std::to_string(k + 2);
+    const auto cells = split(line);
+    if (cells.size() != header.size()) throw std::runtime_error(where + ": expected " + std::to_string(header.size()) + " columns");
+    Sample& s = tr.samples[k];
+    if (std::abs(parse(cells[0], where) - s.t) > 1e-9 * std::max(1.0, std::abs(s.t)))
+      throw std::runtime_error(where + ": its time is not trajectory.csv's");
+    s.loads.joints.assign(model.size(), JointLoad{});
+    for (int j = 0; j < model.size(); ++j) {
+      const std::string& name = model.joints[j].name;
+      JointLoad& load = s.loads.joints[j];
+      const int spring = find("tau_spring." + name), damper = find("tau_damper." + name), latch = find("tau_latch." + name);
+      if (spring >= 0) load.spring = parse(cells[spring], where);
+      if (damper >= 0) load.damper = parse(cells[damper], where);
+      if (latch >= 0) load.latch = parse(cells[latch], where);
+      for (int a = 0; a < 6; ++a) {
+        const int c = find("reaction." + name + "." + wrench_component_name(a));
+        if (c < 0) throw std::runtime_error(path + ":1: no column 'reaction." + name + "." + wrench_component_name(a) + "'");
+        load.reaction[a] = parse(cells[c], where);
+      }
+    }
+    for (int c : loop_columns) s.loads.loop_force.push_back(parse(cells[c], where));
+  }
+}
+
 }  // namespace
 
 Trajectory read_trajectory_csv(const Scene& scene, const std::string& path) {
@@ -102,7 +156,9 @@ Trajectory read_trajectory_csv(const Scene& scene, const std::string& path) {
     tr.samples.push_back(std::move(s));
   }
   if (tr.samples.empty()) throw std::runtime_error(path + ": no samples");
-  read_events(scene, (std::filesystem::path(path).parent_path() / "events.csv").string(), tr);
+  const std::filesystem::path dir = std::filesystem::path(path).parent_path();
+  read_events(scene, (dir / "events.csv").string(), tr);
+  read_loads(scene, (dir / "loads.csv").string(), tr);
   return tr;
 }
 

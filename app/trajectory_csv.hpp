@@ -1,5 +1,5 @@
 // Reads back a trajectory.csv written by `unfurl simulate` (and the
-// events.csv beside it) for the scene it came from, so `render` can draw a
+// events.csv and loads.csv beside it) for the scene it came from, so `render` can draw a
 // run without simulating it again.
 #pragma once
 

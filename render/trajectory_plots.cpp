@@ -46,6 +46,27 @@ void add_curves(PlotSpec& spec, PlotKind kind, const Scene& scene, const Traject
         added.back().dashed = true;
       }
       break;
+    case PlotKind::loads: {
+      // Latch torques (solid) and the hinge moments' magnitudes (dashed) of
+      // the latched joints, or of the first joints of a scene without latches.
+      if (tr.empty() || tr.samples.front().loads.joints.empty()) break;
+      std::vector<int> joints;
+      for (const Latch& latch : scene.latches) joints.push_back(latch.joint);
+      for (int j = 0; joints.empty() && j < std::min(model.size(), max_joints); ++j) joints.push_back(j);
+      if (static_cast<int>(joints.size()) > max_joints / 2) joints.resize(std::max(1, max_joints / 2));
+      for (std::size_t k = 0; k < joints.size(); ++k) {
+        const int j = joints[k];
+        const std::string& name = model.joints[j].name;
+        const ImU32 color = palette(static_cast<int>(k));
+        if (!scene.latches.empty())
+          added.push_back(series(tr, "latch " + name, color, [j](const Sample& s) { return s.loads.joints[j].latch; }));
+        added.push_back(series(tr, "|hinge moment| " + name, color, [j](const Sample& s) {
+          return s.loads.joints[j].reaction.tail<3>().norm();
+        }));
+        added.back().dashed = !scene.latches.empty();
+      }
+      break;
+    }
     case PlotKind::energy:
       added.push_back(series(tr, "total", palette(0), [](const Sample& s) { return s.energy.total(); }));
       if (!tr.empty() && tr.samples.front().energy.unattributed != 0) break;  // only the total is known
@@ -82,6 +103,10 @@ PlotSpec trajectory_plot(PlotKind kind, const Scene& scene, const Trajectory& tr
       spec.y_label = "gap, m (solid) and rad (dashed)";
       spec.log_y = true;
       break;
+    case PlotKind::loads:
+      spec.title = scene.name + (scene.latches.empty() ? ": hinge moments" : ": latch torques and hinge moments");
+      spec.y_label = "N m (hinge moments about the hinge point)";
+      break;
     case PlotKind::energy:
       spec.title = scene.name + ": energy";
       spec.y_label = "J";
@@ -94,13 +119,32 @@ PlotSpec trajectory_plot(PlotKind kind, const Scene& scene, const Trajectory& tr
   return spec;
 }
 
+const char* plot_kind_name(PlotKind kind) {
+  switch (kind) {
+    case PlotKind::angles: return "angles";
+    case PlotKind::rates: return "rates";
+    case PlotKind::residuals: return "loop gaps";
+    case PlotKind::loads: return "loads";
+    case PlotKind::energy: return "energy";
+  }
+  return "?";
+}
+
+std::vector<PlotKind> plot_kinds(const Scene& scene) {
+  std::vector<PlotKind> kinds{PlotKind::angles, PlotKind::rates};
+  if (!scene.loops.empty()) kinds.push_back(PlotKind::residuals);
+  kinds.push_back(PlotKind::loads);
+  kinds.push_back(PlotKind::energy);
+  return kinds;
+}
+
 std::vector<NamedPlot> trajectory_plots(const Scene& scene, const Trajectory& trajectory, int max_joints) {
+  static const char* files[] = {"angles.png", "rates.png", "residuals.png", "loads.png", "energy.png"};
   std::vector<NamedPlot> plots;
-  plots.push_back({PlotKind::angles, "angles.png", trajectory_plot(PlotKind::angles, scene, trajectory, nullptr, max_joints)});
-  plots.push_back({PlotKind::rates, "rates.png", trajectory_plot(PlotKind::rates, scene, trajectory, nullptr, max_joints)});
-  if (!scene.loops.empty())
-    plots.push_back({PlotKind::residuals, "residuals.png", trajectory_plot(PlotKind::residuals, scene, trajectory)});
-  plots.push_back({PlotKind::energy, "energy.png", trajectory_plot(PlotKind::energy, scene, trajectory)});
+  for (PlotKind kind : plot_kinds(scene)) {
+    if (kind == PlotKind::loads && (trajectory.empty() || trajectory.samples.front().loads.joints.empty())) continue;
+    plots.push_back({kind, files[static_cast<int>(kind)], trajectory_plot(kind, scene, trajectory, nullptr, max_joints)});
+  }
   return plots;
 }
 

@@ -1,7 +1,7 @@
 // The standard plots of a run, from its trajectory: joint angles (the
-// paper's figure 6), joint rates (figure 7), loop residuals |eps pi| on a
-// log axis (figure 8; scenes with loops only) and energy; latch events
-// marked.
+// paper's figure 6), joint rates (figure 7), the loops' geometric gaps on a
+// log axis (figure 8 drawn from the true gap; scenes with loops only), the
+// loads (latch torques and hinge moments) and energy; latch events marked.
 #pragma once
 
 #include <string>
@@ -13,7 +13,13 @@
 
 namespace unfurl::render {
 
-enum class PlotKind { angles, rates, residuals, energy };
+enum class PlotKind { angles, rates, residuals, loads, energy };
+
+// "angles", "rates", "loop gaps", "loads", "energy".
+const char* plot_kind_name(PlotKind kind);
+
+// The plots a scene's runs have: no gap plot for a tree.
+std::vector<PlotKind> plot_kinds(const Scene& scene);
 
 struct NamedPlot {
   PlotKind kind;
@@ -21,8 +27,9 @@ struct NamedPlot {
   PlotSpec spec;
 };
 
-// The plots this scene has (no residual plot for a tree). At most
-// `max_joints` joints are drawn, in scene order.
+// Every plot of plot_kinds() with its file name (angles.png, rates.png,
+// residuals.png, loads.png, energy.png). At most `max_joints` joints are
+// drawn, in scene order.
 std::vector<NamedPlot> trajectory_plots(const Scene& scene, const Trajectory& trajectory, int max_joints = 12);
 
 // One plot; `ghost` (may be null) adds a previous run's curves, faint.

@@ -242,8 +242,9 @@ TEST(RenderCommand, WritesFramesPlotsAndAVideoWithTheExpectedFrameCount) {
     EXPECT_TRUE(fs::exists(dir / name)) << name;
   }
   EXPECT_FALSE(fs::exists(dir / "frame_00011.png"));
-  for (const char* plot : {"angles.png", "rates.png", "energy.png"}) EXPECT_TRUE(fs::exists(dir / plot)) << plot;
-  EXPECT_FALSE(fs::exists(dir / "residuals.png"));  // a tree has no loop residuals
+  for (const char* plot : {"angles.png", "rates.png", "loads.png", "energy.png"})
+    EXPECT_TRUE(fs::exists(dir / plot)) << plot;
+  EXPECT_FALSE(fs::exists(dir / "residuals.png"));  // a tree has no loop gaps
   const std::string probe = "ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames "
                             "-of csv=p=0 " + video;
   FILE* pipe = popen(probe.c_str(), "r");

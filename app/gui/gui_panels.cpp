@@ -173,15 +173,8 @@ void parameters_panel(const GuiState& state, Requests& requests) {
   }
 }
 
-std::vector<render::PlotKind> plot_kinds(const Scene& scene) {
-  std::vector<render::PlotKind> kinds{render::PlotKind::angles, render::PlotKind::rates};
-  if (!scene.loops.empty()) kinds.push_back(render::PlotKind::residuals);
-  kinds.push_back(render::PlotKind::energy);
-  return kinds;
-}
-
 std::vector<render::PlotKind> shown_plots(const GuiState& state) {
-  const std::vector<render::PlotKind> kinds = plot_kinds(state.scene);
+  const std::vector<render::PlotKind> kinds = render::plot_kinds(state.scene);
   if (state.plot_tab >= 0 && state.plot_tab < static_cast<int>(kinds.size())) return {kinds[state.plot_tab]};
   return kinds;
 }
@@ -194,11 +187,10 @@ ImVec4 plot_cell(std::size_t k, std::size_t count, ImVec2 panel) {
 }
 
 void plots_panel(GuiState& state, unsigned texture, const std::vector<render::PlotFrame>& frames) {
-  static const char* names[] = {"angles", "rates", "loop residuals", "energy"};
-  const std::vector<render::PlotKind> all = plot_kinds(state.scene);
+  const std::vector<render::PlotKind> all = render::plot_kinds(state.scene);
   for (std::size_t k = 0; k <= all.size(); ++k) {
     if (k > 0) ImGui::SameLine();
-    const char* name = k < all.size() ? names[static_cast<int>(all[k])] : "all";
+    const char* name = k < all.size() ? render::plot_kind_name(all[k]) : "all";
     if (ImGui::RadioButton(name, state.plot_tab == static_cast<int>(k))) state.plot_tab = static_cast<int>(k);
   }
   const ImVec2 size = ImGui::GetContentRegionAvail();

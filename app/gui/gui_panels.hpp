@@ -24,8 +24,6 @@ void timeline_panel(GuiState& state);
 // Spring, latch, regulator and integrator settings built from the scene.
 void parameters_panel(const GuiState& state, Requests& requests);
 
-// The plots this scene shows: angles, rates, residuals (loops only), energy.
-std::vector<render::PlotKind> plot_kinds(const Scene& scene);
 // The plots the selected tab shows, and where plot k of them goes in a
 // panel of this size (one plot, or all in two columns).
 std::vector<render::PlotKind> shown_plots(const GuiState& state);
