@@ -505,8 +505,8 @@ void SceneReader::read_initial(const YAML::Node& node, Scene& scene) const {
 
 void SceneReader::read_run(const YAML::Node& node, RunSettings& run) const {
   check_keys(node,
-             {"t_end", "integrator", "linear_solver", "rtol", "atol", "dt", "sample", "max_closure", "max_steps",
-              "max_wall_time"},
+             {"t_end", "integrator", "linear_solver", "rtol", "atol", "dt", "sample", "max_closure", "event_window",
+              "max_steps", "max_wall_time"},
              "run");
   if (node["t_end"]) run.t_end = positive(node["t_end"], "run.t_end");
   if (const YAML::Node integrator = node["integrator"]) {
@@ -533,6 +533,7 @@ void SceneReader::read_run(const YAML::Node& node, RunSettings& run) const {
   if (node["dt"]) run.dt = positive(node["dt"], "run.dt");
   if (node["sample"]) run.sample = positive(node["sample"], "run.sample");
   if (node["max_closure"]) run.max_closure = positive(node["max_closure"], "run.max_closure");
+  if (node["event_window"]) run.event_window = non_negative(node["event_window"], "run.event_window");
   if (node["max_wall_time"]) run.max_wall_time = positive(node["max_wall_time"], "run.max_wall_time");
   if (node["max_steps"]) run.max_steps = static_cast<long>(positive(node["max_steps"], "run.max_steps"));
 }

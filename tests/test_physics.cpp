@@ -139,6 +139,20 @@ TEST(LoopRegulator, ResidualOfAnOpenStartDecays) {
   EXPECT_LT(samples.back().closure[0].angle, 1e-9);
 }
 
+TEST(LoopRegulator, MaxClosureFailsARunOnTheGeometricGap) {
+  // The pantograph's gap, held at the integrator's tolerance, reaches about
+  // 1e-11 m: a limit below that stops the run where it is first exceeded,
+  // at a step's end, with what was computed kept.
+  const Scene scene = test::scene_file("pantograph", {{"run.max_closure", "5e-12"}});
+  const RunResult run = simulate(scene, scene.run);
+  ASSERT_EQ(run.status, RunStatus::failed);
+  EXPECT_EQ(run.failure.check, "closure");
+  EXPECT_GT(run.failure.t, 0.0);
+  EXPECT_GT(run.peaks.gap_m.value, 5e-12);
+  EXPECT_NE(run.failure.reason.find("a loop opened by"), std::string::npos);
+  EXPECT_LE(run.trajectory.t_end(), run.failure.t);
+}
+
 TEST(LeaveOut, TreeSceneCarriesNoRegulatorState) {
   const Scene scene = test::scene_file("zfold");
   Dynamics dynamics(scene);
