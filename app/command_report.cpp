@@ -29,7 +29,7 @@ const char* kHelp =
     "exact solution where the scene has one, else CVODE BDF at the tightest tolerance that\n"
     "runs) and writes into DIR (default report/):\n"
     "  work_precision.csv        every run: wall time (median of up to 3), steps, RHS calls,\n"
-    "                            Jacobians, linear iterations, errors, loop residual, latches\n"
+    "                            Jacobians, linear iterations, errors, loop gap, latches\n"
     "  work_precision.png        joint-angle error against wall time, one curve per integrator\n"
     "  work_precision_latch.png  latch-time error against wall time (scenes with latches)\n"
     "  work_precision_final.png  final-state error against wall time (scenes with latches)\n"
