@@ -41,23 +41,12 @@
 #include <vector>
 
 #include "closure_solver.hpp"
-#include "loops.hpp"
+#include "loop_components.hpp"
 #include "mobility.hpp"
+#include "regulator_settings.hpp"
 #include "sweep.hpp"
 
 namespace unfurl {
-
-enum class GainTuning { full, paper };
-
-struct RegulatorSettings {
-  GainTuning gains = GainTuning::full;
-  double v_max = 2000;  // rad/s, above the mechanism's highest frequency
-  double p0 = 1.0;
-  double p1 = 0.5;
-  double regularization = 2e-6;  // delta relative to the largest eigenvalue of W(0)
-  bool feedforward = true;       // full gains: cancel the residual's acceleration d
-  ClosureSolverKind solver = ClosureSolverKind::automatic;
-};
 
 class Regulator {
  public:

@@ -42,7 +42,7 @@ void Regulator::gap(const std::vector<Pose>& poses, double* g) const {
 bool Regulator::control(const Sweep& sweep, const double* g, const double* u, const double* g_dot, const double* d,
                         double* lambda, double* u_dot) {
   const double v = settings_.v_max, p0 = settings_.p0, p1 = settings_.p1;
-  const double k_pi = p0 * v, k_v = 2 * p0 * p1;  // (16)
+  const double k_pi = settings_.k_pi(), k_v = settings_.k_v();  // (16)
   const int m = size();
   Eigen::Map<const Eigen::VectorXd> g_(g, m), u_(u, m), gd_(g_dot, m);
   Eigen::Map<Eigen::VectorXd> lambda_(lambda, m), ud_(u_dot, m);

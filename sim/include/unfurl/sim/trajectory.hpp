@@ -6,7 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "dynamics.hpp"
+#include "energy.hpp"
+#include "loads.hpp"
+#include "loop.hpp"
+#include "state_layout.hpp"
 
 namespace unfurl {
 

@@ -1,4 +1,4 @@
-#include "scene.hpp"
+#include "run_settings.hpp"
 
 namespace unfurl {
 

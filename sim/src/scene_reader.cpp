@@ -1,50 +1,32 @@
-#include "scene_yaml.hpp"
-
+// Scene files (YAML) into a Scene and its visuals; the format is documented
+// in assets/scenes/README.md.
 #include <yaml-cpp/yaml.h>
 
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <fstream>
 #include <map>
-#include <set>
 #include <sstream>
 
-#include "kinematics.hpp"
+#include "scene_overrides.hpp"
+#include "scene_validation.hpp"
+#include "unfurl/sim/scene_file.hpp"
+#include "yaml_fields.hpp"
 
 namespace unfurl {
 
 namespace {
 
-using Keys = std::initializer_list<const char*>;
-
-// Reads one scene document, checking every key and value, and remembers
-// where each node came from so an error can point at it.
-class SceneReader {
+// Reads one scene document into a Scene and its visuals, checking every
+// key and value.
+class SceneReader : private YamlFields {
  public:
-  SceneReader(std::string source) : source_(std::move(source)) {}
+  explicit SceneReader(std::string source) : YamlFields(std::move(source)) {}
 
-  Scene read(const std::string& text, const std::vector<Override>& overrides);
+  SceneFile read(const std::string& text, const std::vector<Override>& overrides);
 
  private:
-  [[noreturn]] void fail(const YAML::Node& at, const std::string& field, const std::string& what) const;
-  std::string where(const YAML::Node& at) const;
-
-  void check_keys(const YAML::Node& map, Keys allowed, const std::string& field) const;
-  void check_map(const YAML::Node& node, const std::string& field) const;
-  YAML::Node require(const YAML::Node& map, const char* key, const std::string& field) const;
-  double number(const YAML::Node& node, const std::string& field) const;
-  double number_or(const YAML::Node& map, const char* key, double fallback, const std::string& field) const;
-  double positive(const YAML::Node& node, const std::string& field) const;
-  double non_negative(const YAML::Node& node, const std::string& field) const;
-  std::string text(const YAML::Node& node, const std::string& field) const;
-  bool flag(const YAML::Node& node, const std::string& field) const;
-  std::vector<double> numbers(const YAML::Node& node, const std::string& field) const;
-  Vec3 vec3(const YAML::Node& node, const std::string& field) const;
-  Vec3 vec3_or(const YAML::Node& map, const char* key, const Vec3& fallback, const std::string& field) const;
-
-  void apply_override(YAML::Node& root, const Override& o);
-
-  void read_base(const YAML::Node& node, Scene& scene) const;
+  void read_base(const YAML::Node& node, Scene& scene);
   void read_body(const YAML::Node& node, int index, const YAML::Node& all, Scene& scene);
   Joint read_joint(const YAML::Node& node, const std::string& field) const;
   Visual read_visual(const YAML::Node& node, const std::string& field) const;
@@ -56,174 +38,15 @@ class SceneReader {
   void read_regulator(const YAML::Node& node, Scene& scene) const;
   void read_initial(const YAML::Node& node, Scene& scene) const;
   void read_run(const YAML::Node& node, RunSettings& run) const;
-  void check_loops_close(const Scene& scene) const;
 
   int joint_by_name(const YAML::Node& node, const Scene& scene, const std::string& field,
                     bool needs_coordinate) const;
   int body_by_name(const YAML::Node& node, const Scene& scene, const std::string& field) const;
 
-  std::string source_;
-  std::vector<std::pair<YAML::Node, std::string>> overrides_;  // node, "--set ..."
+  SceneVisuals visuals_;
   std::vector<YAML::Node> loop_nodes_;
   std::map<std::string, int> joint_index_;
 };
-
-std::string index_field(const std::string& list, std::size_t i) {
-  return list + "[" + std::to_string(i) + "]";
-}
-
-bool contains(const YAML::Node& haystack, const YAML::Node& needle) {
-  if (haystack.is(needle)) return true;
-  if (haystack.IsSequence() || haystack.IsMap())
-    for (const auto& item : haystack)
-      if (haystack.IsMap() ? contains(item.first, needle) || contains(item.second, needle)
-                           : contains(item, needle))
-        return true;
-  return false;
-}
-
-std::string SceneReader::where(const YAML::Node& at) const {
-  for (const auto& [node, text] : overrides_)
-    if (contains(node, at)) return text;
-  const YAML::Mark mark = at.Mark();
-  if (mark.is_null()) return source_ + " (with the --set overrides)";
-  return source_ + ":" + std::to_string(mark.line + 1) + ":" + std::to_string(mark.column + 1);
-}
-
-void SceneReader::fail(const YAML::Node& at, const std::string& field, const std::string& what) const {
-  throw SceneError(where(at) + ": " + (field.empty() ? "" : field + ": ") + what);
-}
-
-void SceneReader::check_map(const YAML::Node& node, const std::string& field) const {
-  if (!node.IsMap()) fail(node, field, "expected a mapping of keys to values");
-}
-
-void SceneReader::check_keys(const YAML::Node& map, Keys allowed, const std::string& field) const {
-  check_map(map, field);
-  for (const auto& item : map) {
-    const std::string key = item.first.Scalar();
-    bool known = false;
-    std::string list;
-    for (const char* a : allowed) {
-      known = known || key == a;
-      list += std::string(list.empty() ? "" : ", ") + a;
-    }
-    if (!known) fail(item.first, field, "unknown key '" + key + "' (expected one of: " + list + ")");
-  }
-}
-
-YAML::Node SceneReader::require(const YAML::Node& map, const char* key, const std::string& field) const {
-  const YAML::Node node = map[key];
-  if (!node) fail(map, field, std::string("missing field '") + key + "'");
-  return node;
-}
-
-double SceneReader::number(const YAML::Node& node, const std::string& field) const {
-  if (!node.IsScalar()) fail(node, field, "expected a number");
-  double x = 0;
-  try {
-    x = node.as<double>();
-  } catch (const YAML::Exception&) {
-    fail(node, field, "expected a number, got '" + node.Scalar() + "'");
-  }
-  if (!std::isfinite(x)) fail(node, field, "must be a finite number, got '" + node.Scalar() + "'");
-  return x;
-}
-
-double SceneReader::number_or(const YAML::Node& map, const char* key, double fallback,
-                              const std::string& field) const {
-  const YAML::Node node = map[key];
-  return node ? number(node, field + "." + key) : fallback;
-}
-
-double SceneReader::positive(const YAML::Node& node, const std::string& field) const {
-  const double x = number(node, field);
-  if (!(x > 0)) fail(node, field, "must be positive, got " + node.Scalar());
-  return x;
-}
-
-double SceneReader::non_negative(const YAML::Node& node, const std::string& field) const {
-  const double x = number(node, field);
-  if (x < 0) fail(node, field, "must not be negative, got " + node.Scalar());
-  return x;
-}
-
-std::string SceneReader::text(const YAML::Node& node, const std::string& field) const {
-  if (!node.IsScalar()) fail(node, field, "expected a string");
-  return node.Scalar();
-}
-
-std::vector<double> SceneReader::numbers(const YAML::Node& node, const std::string& field) const {
-  if (!node.IsSequence()) fail(node, field, "expected a list of numbers");
-  std::vector<double> out;
-  for (std::size_t i = 0; i < node.size(); ++i) out.push_back(number(node[i], index_field(field, i)));
-  return out;
-}
-
-Vec3 SceneReader::vec3(const YAML::Node& node, const std::string& field) const {
-  const std::vector<double> v = numbers(node, field);
-  if (v.size() != 3) fail(node, field, "expected 3 numbers, got " + std::to_string(v.size()));
-  return Vec3(v[0], v[1], v[2]);
-}
-
-Vec3 SceneReader::vec3_or(const YAML::Node& map, const char* key, const Vec3& fallback,
-                          const std::string& field) const {
-  const YAML::Node node = map[key];
-  return node ? vec3(node, field + "." + key) : fallback;
-}
-
-// Follows a dotted path; list elements by index or by name/joint/body.
-void SceneReader::apply_override(YAML::Node& root, const Override& o) {
-  const std::string origin = "--set " + o.path + "=" + o.value;
-  std::vector<std::string> parts;
-  std::stringstream ss(o.path);
-  for (std::string part; std::getline(ss, part, '.');) parts.push_back(part);
-  if (parts.empty() || o.path.empty()) throw SceneError(origin + ": empty path");
-  YAML::Node value;
-  try {
-    value = YAML::Load(o.value);
-  } catch (const YAML::Exception& e) {
-    throw SceneError(origin + ": the value is not valid YAML: " + e.msg);
-  }
-  YAML::Node cur;
-  cur.reset(root);
-  for (std::size_t k = 0; k < parts.size(); ++k) {
-    const std::string& part = parts[k];
-    const bool last = k + 1 == parts.size();
-    if (cur.IsSequence()) {
-      std::size_t index = cur.size();
-      const bool numeric = !part.empty() && part.find_first_not_of("0123456789") == std::string::npos;
-      for (std::size_t i = 0; i < cur.size(); ++i) {
-        const YAML::Node item = cur[i];
-        if (numeric ? std::stoul(part) == i
-                    : item.IsMap() && ((item["name"] && item["name"].Scalar() == part) ||
-                                       (item["joint"] && item["joint"].Scalar() == part) ||
-                                       (item["body"] && item["body"].Scalar() == part))) {
-          index = i;
-          break;
-        }
-      }
-      if (index == cur.size()) throw SceneError(origin + ": no element '" + part + "' in the list");
-      if (last) {
-        cur[index] = value;
-      } else {
-        YAML::Node next = cur[index];
-        cur.reset(next);
-      }
-    } else if (cur.IsMap() || cur.IsNull()) {
-      if (last) {
-        cur[part] = value;
-      } else {
-        if (!cur[part]) cur[part] = YAML::Node(YAML::NodeType::Map);
-        YAML::Node next = cur[part];
-        cur.reset(next);
-      }
-    } else {
-      throw SceneError(origin + ": '" + part + "' is inside a value, not a mapping or list");
-    }
-  }
-  overrides_.emplace_back(value, origin);
-}
 
 Visual SceneReader::read_visual(const YAML::Node& node, const std::string& field) const {
   Visual v;
@@ -251,10 +74,10 @@ Visual SceneReader::read_visual(const YAML::Node& node, const std::string& field
   return v;
 }
 
-void SceneReader::read_base(const YAML::Node& node, Scene& scene) const {
+void SceneReader::read_base(const YAML::Node& node, Scene& scene) {
   check_keys(node, {"name", "mesh", "velocity"}, "base");
   if (node["name"]) scene.model.base_name = text(node["name"], "base.name");
-  if (node["mesh"]) scene.base_visual = read_visual(node["mesh"], "base.mesh");
+  if (node["mesh"]) visuals_.base = read_visual(node["mesh"], "base.mesh");
   if (const YAML::Node v = node["velocity"]) {
     const std::vector<double> x = numbers(v, "base.velocity");
     if (x.size() != 6) fail(v, "base.velocity", "expected 6 numbers (vx, vy, vz, wx, wy, wz)");
@@ -338,7 +161,7 @@ void SceneReader::read_body(const YAML::Node& node, int index, const YAML::Node&
   if (joint_index_.count(j.name)) fail(node["joint"], field + ".joint", "a joint named '" + j.name + "' already exists");
   joint_index_[j.name] = index;
 
-  scene.visuals.push_back(node["mesh"] ? read_visual(node["mesh"], field + ".mesh") : Visual{});
+  visuals_.bodies.push_back(node["mesh"] ? read_visual(node["mesh"], field + ".mesh") : Visual{});
   model.bodies.push_back(b);
   model.joints.push_back(j);
   model.parent.push_back(k);
@@ -446,13 +269,6 @@ void SceneReader::read_loops(const YAML::Node& list, Scene& scene) {
   }
 }
 
-bool SceneReader::flag(const YAML::Node& node, const std::string& field) const {
-  const std::string value = text(node, field);
-  if (value == "true") return true;
-  if (value == "false") return false;
-  fail(node, field, "expected true or false, got '" + value + "'");
-}
-
 void SceneReader::read_regulator(const YAML::Node& node, Scene& scene) const {
   check_keys(node, {"gains", "v_max", "p0", "p1", "regularization", "feedforward", "solver"}, "regulator");
   RegulatorSettings& r = scene.regulator;
@@ -538,41 +354,23 @@ void SceneReader::read_run(const YAML::Node& node, RunSettings& run) const {
   if (node["max_steps"]) run.max_steps = static_cast<long>(positive(node["max_steps"], "run.max_steps"));
 }
 
-void SceneReader::check_loops_close(const Scene& scene) const {
-  std::vector<Pose> poses;
-  body_poses(scene.model, scene.q0.data(), poses);
-  for (std::size_t l = 0; l < scene.loops.size(); ++l) {
-    const Loop& loop = scene.loops[l];
-    const ClosureError e = closure_error(poses[loop.body], poses[loop.image]);
-    if (e.distance > scene.closure_tolerance || e.angle > scene.closure_tolerance) {
-      std::ostringstream s;
-      s.precision(6);
-      s << "loop '" << loop.name << "' does not close at the initial state: the origins of '"
-        << scene.model.bodies[loop.body].name << "' and '" << scene.model.bodies[loop.image].name << "' are "
-        << e.distance << " m apart and their frames " << e.angle << " rad apart (closure_tolerance "
-        << scene.closure_tolerance << ")";
-      fail(loop_nodes_[l], index_field("loops", l), s.str());
-    }
-  }
-}
-
-Scene SceneReader::read(const std::string& text_in, const std::vector<Override>& overrides) {
+SceneFile SceneReader::read(const std::string& text_in, const std::vector<Override>& overrides) {
   YAML::Node root;
   try {
     root = YAML::Load(text_in);
   } catch (const YAML::ParserException& e) {
-    throw SceneError(source_ + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) +
+    throw SceneError(source() + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) +
                      ": YAML syntax error: " + e.msg);
   }
-  if (!root.IsMap()) throw SceneError(source_ + ": a scene file is a YAML mapping (name, bodies, ...)");
-  for (const Override& o : overrides) apply_override(root, o);
+  if (!root.IsMap()) throw SceneError(source() + ": a scene file is a YAML mapping (name, bodies, ...)");
+  for (const Override& o : overrides) apply_override(root, o, *this);
 
   check_keys(root,
              {"name", "description", "base", "gravity", "bodies", "springs", "dampers", "loads", "latches",
               "loops", "regulator", "initial", "closure_tolerance", "run"},
              "");
   Scene scene;
-  scene.source = source_;
+  scene.source = source();
   scene.name = root["name"] ? text(root["name"], "name") : "scene";
   if (root["description"]) scene.description = text(root["description"], "description");
   if (root["base"]) read_base(root["base"], scene);
@@ -600,29 +398,30 @@ Scene SceneReader::read(const std::string& text_in, const std::vector<Override>&
   if (root["closure_tolerance"])
     scene.closure_tolerance = positive(root["closure_tolerance"], "closure_tolerance");
   if (root["run"]) read_run(root["run"], scene.run);
-  check_loops_close(scene);
-  return scene;
+  check_loops_close(scene, loop_nodes_, *this);
+  return {scene, visuals_};
 }
 
 }  // namespace
 
-Override parse_override(const std::string& assignment) {
-  const auto eq = assignment.find('=');
-  if (eq == std::string::npos || eq == 0)
-    throw SceneError("--set " + assignment + ": expected KEY=VALUE, for example springs.0.stiffness=0.2");
-  return {assignment.substr(0, eq), assignment.substr(eq + 1)};
-}
-
-Scene load_scene_text(const std::string& text, const std::string& source, const std::vector<Override>& overrides) {
+SceneFile read_scene_text(const std::string& text, const std::string& source, const std::vector<Override>& overrides) {
   return SceneReader(source).read(text, overrides);
 }
 
-Scene load_scene_file(const std::string& path, const std::vector<Override>& overrides) {
+SceneFile read_scene_file(const std::string& path, const std::vector<Override>& overrides) {
   std::ifstream in(path);
   if (!in) throw SceneError(path + ": cannot open the scene file");
   std::stringstream text;
   text << in.rdbuf();
-  return load_scene_text(text.str(), path, overrides);
+  return read_scene_text(text.str(), path, overrides);
+}
+
+Scene load_scene_text(const std::string& text, const std::string& source, const std::vector<Override>& overrides) {
+  return read_scene_text(text, source, overrides).scene;
+}
+
+Scene load_scene_file(const std::string& path, const std::vector<Override>& overrides) {
+  return read_scene_file(path, overrides).scene;
 }
 
 }  // namespace unfurl

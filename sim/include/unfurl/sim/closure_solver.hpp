@@ -13,12 +13,11 @@
 #include <memory>
 #include <vector>
 
-#include "loops.hpp"
+#include "loop_components.hpp"
+#include "regulator_settings.hpp"
 #include "sweep.hpp"
 
 namespace unfurl {
-
-enum class ClosureSolverKind { automatic, dense, sparse };
 
 class ClosureSolver {
  public:

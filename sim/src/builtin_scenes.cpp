@@ -1,6 +1,6 @@
 #include <map>
 
-#include "scene_yaml.hpp"
+#include "unfurl/sim/scene_file.hpp"
 
 namespace unfurl {
 
@@ -23,8 +23,12 @@ const std::string& builtin_scene_text(const std::string& name) {
   return it->second;
 }
 
+SceneFile read_builtin_scene(const std::string& name, const std::vector<Override>& overrides) {
+  return read_scene_text(builtin_scene_text(name), "built-in:" + name, overrides);
+}
+
 Scene load_builtin_scene(const std::string& name, const std::vector<Override>& overrides) {
-  return load_scene_text(builtin_scene_text(name), "built-in:" + name, overrides);
+  return read_builtin_scene(name, overrides).scene;
 }
 
 }  // namespace unfurl

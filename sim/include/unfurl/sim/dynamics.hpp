@@ -11,35 +11,17 @@
 #include <memory>
 #include <vector>
 
+#include "energy.hpp"
 #include "latch.hpp"
 #include "loads.hpp"
 #include "regulator.hpp"
 #include "scene.hpp"
+#include "state_layout.hpp"
 #include "sweep.hpp"
 
 namespace unfurl {
 
 class NewtonPreconditioner;
-
-// Where each kind of state sits in the state vector.
-struct StateLayout {
-  int nq = 0;  // coordinates
-  int m = 0;   // active loop components
-  int q() const { return 0; }
-  int p() const { return nq; }
-  int u() const { return 2 * nq; }
-  int size() const { return 2 * nq + m; }
-};
-
-struct EnergyParts {
-  double kinetic = 0;
-  double springs = 0;
-  double latches = 0;
-  double gravity = 0;
-  double regulator = 0;
-  double unattributed = 0;  // energy known only as a total (a trajectory read back from a file)
-  double total() const { return kinetic + springs + latches + gravity + regulator + unattributed; }
-};
 
 // Everything derived from a state at one instant.
 struct Observation {

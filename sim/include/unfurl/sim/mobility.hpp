@@ -6,7 +6,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "loops.hpp"
+#include "loop_components.hpp"
 #include "sweep.hpp"
 
 namespace unfurl {

@@ -57,7 +57,7 @@ void NewtonPreconditioner::solve(const double* r, double* z) {
   Regulator* regulator = dynamics_.regulator();
   if (!regulator) return;
   const RegulatorSettings& s = regulator->settings();
-  const double k_pi = s.p0 * s.v_max, k_v = 2 * s.p0 * s.p1;  // (16)
+  const double k_pi = s.k_pi(), k_v = s.k_v();  // (16)
   // J (k_pi zq + k_v x) by one kinematic pass: J is linear in the rates.
   for (int c = 0; c < L.nq; ++c) rates_[c] = k_pi * zq[c] + k_v * x_[c];
   sweep_.velocities_from_rates(rates_.data(), v_);

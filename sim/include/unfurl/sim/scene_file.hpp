@@ -1,6 +1,7 @@
-// Scene files (YAML): loading, overrides and validation. Every error names
-// the file, line, column and field (SceneError); the format is documented
-// in assets/scenes/README.md.
+// Scene files (YAML): loading, --set overrides and validation. Every error
+// names the file, line, column and field (SceneError); the format is
+// documented in assets/scenes/README.md. A file gives the Scene (what the
+// solver runs) and its visuals (what the renderer draws).
 #pragma once
 
 #include <stdexcept>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "scene.hpp"
+#include "visuals.hpp"
 
 namespace unfurl {
 
@@ -25,6 +27,16 @@ struct Override {
 // Parses "path=value"; throws SceneError when there is no '='.
 Override parse_override(const std::string& assignment);
 
+struct SceneFile {
+  Scene scene;
+  SceneVisuals visuals;
+};
+
+SceneFile read_scene_file(const std::string& path, const std::vector<Override>& overrides = {});
+SceneFile read_scene_text(const std::string& text, const std::string& source,
+                          const std::vector<Override>& overrides = {});
+
+// The Scene alone.
 Scene load_scene_file(const std::string& path, const std::vector<Override>& overrides = {});
 Scene load_scene_text(const std::string& text, const std::string& source,
                       const std::vector<Override>& overrides = {});
@@ -32,6 +44,7 @@ Scene load_scene_text(const std::string& text, const std::string& source,
 // The scenes built into the binary (so `unfurl simulate` needs no files).
 std::vector<std::string> builtin_scene_names();
 // Throws SceneError for an unknown name.
+SceneFile read_builtin_scene(const std::string& name, const std::vector<Override>& overrides = {});
 Scene load_builtin_scene(const std::string& name, const std::vector<Override>& overrides = {});
 const std::string& builtin_scene_text(const std::string& name);
 

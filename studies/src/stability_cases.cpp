@@ -1,14 +1,7 @@
-#include "stability_suite.hpp"
+#include "unfurl/studies/stability_cases.hpp"
 
-#include <Eigen/Eigenvalues>
-#include <algorithm>
-#include <cmath>
-#include <sstream>
-
-#include "dynamics.hpp"
-#include "number_text.hpp"
-#include "scene_generators.hpp"
-#include "summary.hpp"
+#include "unfurl/sim/number_text.hpp"
+#include "unfurl/studies/scene_generators.hpp"
 
 namespace unfurl {
 
@@ -135,29 +128,7 @@ void large_array_cases(std::vector<StabilityCase>& out, double budget_s) {
     }
 }
 
-double largest_gap(const Sample& s);
-
-// The first time the largest loop gap is below `level`.
-double closing_time(const Trajectory& tr, double level) {
-  for (const Sample& s : tr.samples)
-    if (largest_gap(s) < level) return s.t;
-  return std::numeric_limits<double>::quiet_NaN();
-}
-
-// The largest geometric gap of any loop, metres or radians.
-double largest_gap(const Sample& s) {
-  double r = 0;
-  for (const ClosureError& c : s.closure) r = std::max({r, c.distance, c.angle});
-  return r;
-}
-
 }  // namespace
-
-bool StabilityResult::as_expected() const {
-  if (spec.probe) return status == RunStatus::finished || (status == RunStatus::failed && !failed_check.empty());
-  if (spec.expected_check.empty()) return status == RunStatus::finished;
-  return status == RunStatus::failed && failed_check == spec.expected_check;
-}
 
 std::vector<StabilityCase> stability_cases(double budget_s) {
   std::vector<StabilityCase> out;
@@ -193,125 +164,6 @@ std::string reproduce_command(const StabilityCase& c) {
     command += " --set " + o.path + "=" + (quote ? "'" + o.value + "'" : o.value);
   }
   return command;
-}
-
-StabilityResult run_stability_case(const StabilityCase& c) {
-  StabilityResult r;
-  r.spec = c;
-  const Scene scene = stability_scene(c);
-  RunResult run = simulate(scene, scene.run);
-  const RunSummary s = summarize(scene, run);
-  r.status = run.status;
-  if (run.status == RunStatus::failed) {
-    r.failed_check = run.failure.check;
-    r.failure = describe(run.failure);
-  }
-  r.t_reached = s.t_reached;
-  r.wall_time_s = run.wall_time_s;
-  r.min_step = run.stats.min_step;
-  r.steps = run.stats.steps;
-  r.rhs_calls = run.rhs_calls;
-  r.bodies = scene.model.size();
-  r.loop_components = run.trajectory.layout.m;
-  r.energy_initial = s.energy_initial;
-  r.energy_final = s.energy_final;
-  r.max_closure_m = s.max_closure_m;
-  r.max_closure_rad = s.max_closure_rad;
-  r.latches_engaged = static_cast<int>(s.latch_times.size());
-  r.latches_total = static_cast<int>(scene.latches.size());
-  if (c.conservative) {
-    double drift = 0;
-    for (const Sample& x : run.trajectory.samples) drift = std::max(drift, std::abs(x.energy.total() - s.energy_initial));
-    r.energy_drift = drift / std::abs(s.energy_initial);
-  }
-  if (c.branches) r.notes = describe_branches(scene, run.trajectory);
-  r.energy_rose = !c.conservative && s.energy_final - s.energy_initial > 0.01 * std::abs(s.energy_initial) + 1e-9;
-  if (r.energy_rose) {
-    std::ostringstream note;
-    note << "energy rose from " << s.energy_initial << " to " << s.energy_final
-         << " J: a passive mechanism cannot gain energy, so this run is not physical";
-    r.notes.push_back(note.str());
-  }
-  if (c.closing_time && !run.trajectory.empty()) {
-    std::ostringstream note;
-    note << "started open by a gap of " << largest_gap(run.trajectory.samples.front())
-         << "; below 1e-3 of that at t = " << closing_time(run.trajectory, 1e-3 * largest_gap(run.trajectory.samples.front()))
-         << " s, below 1e-9 at t = " << closing_time(run.trajectory, 1e-9) << " s (designed slowest pole: b0 = p0 v_max = "
-         << scene.regulator.p0 * scene.regulator.v_max << " 1/s)";
-    r.notes.push_back(note.str());
-  }
-  if (c.conservative) r.trajectory = std::move(run.trajectory);
-  return r;
-}
-
-std::vector<std::string> describe_branches(const Scene& scene, const Trajectory& trajectory) {
-  const Model& model = scene.model;
-  std::vector<std::string> out;
-  if (trajectory.empty()) return out;
-  const Sample &first = trajectory.samples.front(), &last = trajectory.samples.back();
-  for (const Loop& loop : scene.loops) {
-    // The joints from the split body and from its image up to their common
-    // ancestor: the loop's path through the tree.
-    std::vector<int> a, b;
-    for (int i = loop.body; i != kBase; i = model.parent[i]) a.push_back(i);
-    for (int i = loop.image; i != kBase; i = model.parent[i]) b.push_back(i);
-    while (!a.empty() && !b.empty() && a.back() == b.back()) a.pop_back(), b.pop_back();
-    a.insert(a.end(), b.rbegin(), b.rend());
-    std::string opened, held, between;
-    for (int i : a) {
-      const int c = model.coordinate[i];
-      if (c < 0) continue;
-      const double moved = std::abs(last.y[c] - first.y[c]);
-      std::string& list = moved > 0.1 ? opened : moved < 0.01 ? held : between;
-      list += (list.empty() ? "" : ", ") + model.joints[i].name;
-    }
-    std::string note = "loop " + loop.name + ": ";
-    note += held.empty() ? "every joint of the loop moved (the lazy-tongs path)" : "held " + held + "; opened " + (opened.empty() ? "none" : opened);
-    if (!between.empty()) note += "; moved a little " + between;
-    out.push_back(note);
-  }
-  return out;
-}
-
-GainComparison compare_gain_tunings(double budget_s) {
-  GainComparison g;
-  const Scene full = load_builtin_scene("pantograph", {{"run.max_wall_time", format_number(budget_s)}});
-  // The paper's run is let go past the closure check, up to loops open by
-  // metres, to show where it goes.
-  const Scene paper = load_builtin_scene(
-      "pantograph", {{"regulator.gains", "paper"}, {"run.max_closure", "1e3"}, {"run.max_wall_time", format_number(budget_s)}});
-  const RunResult run_full = simulate(full, full.run), run_paper = simulate(paper, paper.run);
-  for (const Sample& s : run_full.trajectory.samples) {
-    g.t_full.push_back(s.t);
-    g.residual_full.push_back(largest_gap(s));
-  }
-  for (const Sample& s : run_paper.trajectory.samples) {
-    g.t_paper.push_back(s.t);
-    g.residual_paper.push_back(largest_gap(s));
-  }
-  g.paper_status = run_paper.status;
-  if (run_paper.status == RunStatus::failed) g.paper_failure = describe(run_paper.failure);
-  g.paper_latches = static_cast<int>(run_paper.trajectory.events.size());
-  g.full_latches = static_cast<int>(run_full.trajectory.events.size());
-
-  // a = eigenvalues of K = W diag(W(0))^-1 (the paper's gains come from W
-  // at t = 0), similar to the symmetric diag(W(0))^-1/2 W diag(W(0))^-1/2.
-  Dynamics dynamics(full);
-  Regulator& regulator = *dynamics.regulator();
-  Sweep sweep(full.model);
-  const RegulatorSettings& r = full.regulator;
-  g.routh_bound = r.p0 / ((r.p0 + 2 * r.p1) * (1 + 2 * r.p0 * r.p1));
-  sweep.set_configuration(full.q0.data());
-  const Eigen::VectorXd scale = regulator.mobility(sweep).diagonal().cwiseSqrt().cwiseInverse();
-  for (std::size_t k = 0; k < run_full.trajectory.samples.size(); k += 5) {
-    const Sample& s = run_full.trajectory.samples[k];
-    sweep.set_configuration(s.y.data());
-    const Eigen::MatrixXd W = regulator.mobility(sweep);
-    const Eigen::MatrixXd K = scale.asDiagonal() * W * scale.asDiagonal();
-    g.t_eigen.push_back(s.t);
-    g.smallest_eigen.push_back(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(K, Eigen::EigenvaluesOnly).eigenvalues()(0));
-  }
-  return g;
 }
 
 }  // namespace unfurl

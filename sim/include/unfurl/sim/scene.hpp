@@ -1,0 +1,36 @@
+// A scene: the mechanism (tree, forces, latches, loops, regulator), its
+// initial state and how to run it. What the renderer draws is apart
+// (visuals.hpp).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "forces.hpp"
+#include "latch.hpp"
+#include "loop.hpp"
+#include "model.hpp"
+#include "regulator_settings.hpp"
+#include "run_settings.hpp"
+
+namespace unfurl {
+
+struct Scene {
+  std::string name;
+  std::string description;
+  std::string source;  // the file it came from, or "built-in"
+  Model model;
+  std::vector<JointSpring> springs;  // the file's springs, then its dampers
+  std::size_t dampers_from = 0;      // springs[dampers_from..] came from `dampers:`
+  std::vector<BodyLoad> loads;
+  std::vector<Latch> latches;
+  std::vector<Loop> loops;
+  RegulatorSettings regulator;
+  std::vector<double> q0;     // per coordinate
+  std::vector<double> dq0;    // per coordinate (used when p0 is empty)
+  std::vector<double> p0;     // per coordinate, optional
+  double closure_tolerance = 1e-6;  // how far the initial loops may be open
+  RunSettings run;
+};
+
+}  // namespace unfurl

@@ -1,0 +1,53 @@
+// Typed access to a YAML document's fields for the scene loader: every
+// value read is checked (type, range), and every error names the file,
+// line, column and field. A node that came from a --set override is named
+// by the override instead of a position.
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+
+#include <initializer_list>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "unfurl/sim/spatial.hpp"
+
+namespace unfurl {
+
+// "list[i]".
+std::string index_field(const std::string& list, std::size_t i);
+
+class YamlFields {
+ public:
+  using Keys = std::initializer_list<const char*>;
+
+  explicit YamlFields(std::string source) : source_(std::move(source)) {}
+
+  // Remembers that `node` came from the override `origin` ("--set a.b=1").
+  void mark_override(const YAML::Node& node, std::string origin) { overrides_.emplace_back(node, std::move(origin)); }
+
+  // Throws SceneError at the node's position.
+  [[noreturn]] void fail(const YAML::Node& at, const std::string& field, const std::string& what) const;
+  std::string where(const YAML::Node& at) const;
+  const std::string& source() const { return source_; }
+
+  void check_keys(const YAML::Node& map, Keys allowed, const std::string& field) const;
+  void check_map(const YAML::Node& node, const std::string& field) const;
+  YAML::Node require(const YAML::Node& map, const char* key, const std::string& field) const;
+  double number(const YAML::Node& node, const std::string& field) const;
+  double number_or(const YAML::Node& map, const char* key, double fallback, const std::string& field) const;
+  double positive(const YAML::Node& node, const std::string& field) const;
+  double non_negative(const YAML::Node& node, const std::string& field) const;
+  std::string text(const YAML::Node& node, const std::string& field) const;
+  bool flag(const YAML::Node& node, const std::string& field) const;
+  std::vector<double> numbers(const YAML::Node& node, const std::string& field) const;
+  Vec3 vec3(const YAML::Node& node, const std::string& field) const;
+  Vec3 vec3_or(const YAML::Node& map, const char* key, const Vec3& fallback, const std::string& field) const;
+
+ private:
+  std::string source_;
+  std::vector<std::pair<YAML::Node, std::string>> overrides_;  // node, "--set ..."
+};
+
+}  // namespace unfurl
