@@ -9,7 +9,7 @@
 #include "cli.hpp"
 #include "commands.hpp"
 #include "output_file.hpp"
-#include "scene_generators.hpp"
+#include "unfurl/studies/scene_generators.hpp"
 
 namespace unfurl::app {
 

@@ -10,17 +10,17 @@
 
 #include "cli.hpp"
 #include "commands.hpp"
-#include "frame_renderer.hpp"
-#include "gl_context.hpp"
+#include "unfurl/render/frame_renderer.hpp"
+#include "unfurl/render/gl_context.hpp"
 #include "output_file.hpp"
 #include "png_file.hpp"
 #include "progress.hpp"
 #include "render_options.hpp"
 #include "scene_options.hpp"
-#include "simulation.hpp"
+#include "unfurl/sim/simulation.hpp"
 #include "trajectory_csv.hpp"
-#include "plot_renderer.hpp"
-#include "trajectory_plots.hpp"
+#include "unfurl/render/plot_renderer.hpp"
+#include "unfurl/render/trajectory_plots.hpp"
 #include "video_pipe.hpp"
 
 namespace unfurl::app {
@@ -43,6 +43,8 @@ const char* kHelp =
     "  --video FILE.mp4      also encode the frames as an H.264 video (needs ffmpeg)\n"
     "  --camera VIEW         a preset (iso, side, top, end, bottom; default iso) or AZ,EL,DIST in\n"
     "                        degrees and metres around the centre of the array\n"
+    "  --gl egl|osmesa|auto  the offscreen OpenGL context (default auto: EGL when it works, else\n"
+    "                        OSMesa)\n"
     "  --plots               also write angles.png, rates.png, residuals.png (the loops' gaps;\n"
     "                        scenes with loops), loads.png and energy.png\n"
     "  --no-frames           do not write frame PNGs (with --video or --plots)\n"
@@ -68,14 +70,15 @@ void remove_stale_frames(const std::string& dir, std::size_t written) {
 
 int command_render(const std::vector<std::string>& argv) {
   std::set<std::string> valued = scene_flags();
-  valued.insert({"--out", "--fps", "--size", "--from", "--to", "--video", "--camera", "--trajectory"});
+  valued.insert({"--out", "--fps", "--size", "--from", "--to", "--video", "--camera", "--trajectory", "--gl"});
   const Args args(argv, valued, {"--help", "-h", "--plots", "--no-frames", "--quiet"});
   if (args.has("--help") || args.has("-h")) {
     std::printf(kHelp, scene_flags_help());
     return 0;
   }
   if (args.positionals().size() > 1) throw UsageError("render takes one SCENE (see --help)");
-  const Scene scene = load_scene(args.positionals().empty() ? std::nullopt : std::optional(args.positionals()[0]), args);
+  const SceneFile file = read_scene(args.positionals().empty() ? std::nullopt : std::optional(args.positionals()[0]), args);
+  const Scene& scene = file.scene;
   const RenderOptions options = parse_render_options(args);
   const std::string dir = args.get("--out").value_or("out");
   make_directory(dir);
@@ -83,8 +86,8 @@ int command_render(const std::vector<std::string>& argv) {
 
   int exit_code = 0;
   Trajectory trajectory;
-  if (const auto file = args.get("--trajectory")) {
-    trajectory = read_trajectory_csv(scene, *file);
+  if (const auto path = args.get("--trajectory")) {
+    trajectory = read_trajectory_csv(scene, *path);
   } else {
     Progress progress("simulating " + scene.name, scene.run.t_end);
     RunObserver observer;
@@ -100,8 +103,8 @@ int command_render(const std::vector<std::string>& argv) {
   }
 
   const std::vector<double> times = frame_times(options, trajectory.t_begin(), trajectory.t_end());
-  auto context = render::make_offscreen_context();
-  render::FrameRenderer renderer(scene, options.width, options.height, mesh_directories(scene));
+  auto context = render::make_offscreen_context(options.gl);
+  render::FrameRenderer renderer(scene, file.visuals, options.width, options.height, mesh_directories(scene));
   const render::Camera camera = choose_camera(options, scene, trajectory, renderer.view(),
                                               static_cast<float>(options.width) / options.height);
 
@@ -142,6 +145,7 @@ int command_render(const std::vector<std::string>& argv) {
 
   if (!quiet) {
     std::printf("scene        %s (%s)\n", scene.name.c_str(), scene.source.c_str());
+    std::printf("context      %s\n", context->description().c_str());
     std::printf("frames       %zu at %g fps, t = %g .. %g s, %dx%d, %.1f frames/s%s\n", times.size(), options.fps,
                 times.empty() ? 0.0 : times.front(), times.empty() ? 0.0 : times.back(), options.width,
                 options.height, seconds > 0 ? times.size() / seconds : 0.0,

@@ -247,7 +247,7 @@ int stability_report(const std::vector<std::string>& argv, const Args& args) {
   write_stability_markdown(report, pictures, dir + "/STABILITY.md");
   int unexpected = 0;
   for (const StabilityResult& r : report.results) {
-    if (r.as_expected()) continue;
+    if (as_expected(r)) continue;
     ++unexpected;
     std::fprintf(stderr, "unfurl report: %s / %s did not end as expected: %s\n", r.spec.group.c_str(),
                  r.spec.label.c_str(), r.status == RunStatus::finished ? "it finished" : r.failure.c_str());

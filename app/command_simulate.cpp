@@ -10,7 +10,7 @@
 #include "progress.hpp"
 #include "run_files.hpp"
 #include "scene_options.hpp"
-#include "summary.hpp"
+#include "unfurl/sim/summary.hpp"
 
 namespace unfurl::app {
 

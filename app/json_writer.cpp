@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "number_text.hpp"
+#include "unfurl/sim/number_text.hpp"
 #include "output_file.hpp"
 
 namespace unfurl::app {

@@ -7,7 +7,7 @@
 
 #include "cli.hpp"
 #include "commands.hpp"
-#include "scene_yaml.hpp"
+#include "unfurl/sim/scene_file.hpp"
 
 namespace {
 

@@ -5,9 +5,9 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "dynamics.hpp"
-#include "kinematics.hpp"
-#include "number_text.hpp"
+#include "unfurl/sim/dynamics.hpp"
+#include "unfurl/sim/kinematics.hpp"
+#include "unfurl/sim/number_text.hpp"
 #include "output_file.hpp"
 
 namespace unfurl::app {

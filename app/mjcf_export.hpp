@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "scene.hpp"
+#include "unfurl/sim/scene.hpp"
 
 namespace unfurl::app {
 

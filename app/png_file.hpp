@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "framebuffer.hpp"
+#include "unfurl/render/framebuffer.hpp"
 
 namespace unfurl::app {
 

@@ -4,8 +4,8 @@
 #include <filesystem>
 #include <sstream>
 
-#include "kinematics.hpp"
-#include "mesh_library.hpp"
+#include "unfurl/sim/kinematics.hpp"
+#include "unfurl/render/mesh_library.hpp"
 
 namespace unfurl::app {
 
@@ -26,6 +26,11 @@ RenderOptions parse_render_options(const Args& args) {
   if (o.from && o.to && *o.to < *o.from) throw UsageError("--to must not be before --from");
   o.video = args.get("--video");
   o.camera = args.get("--camera").value_or(o.camera);
+  if (const auto gl = args.get("--gl")) {
+    const auto backend = render::parse_gl_backend(*gl);
+    if (!backend) throw UsageError("--gl: expected egl, osmesa or auto, got '" + *gl + "'");
+    o.gl = *backend;
+  }
   return o;
 }
 

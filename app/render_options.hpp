@@ -6,11 +6,12 @@
 #include <string>
 #include <vector>
 
-#include "camera.hpp"
+#include "unfurl/render/camera.hpp"
+#include "unfurl/render/gl_context.hpp"
 #include "cli.hpp"
-#include "scene.hpp"
-#include "scene_view.hpp"
-#include "trajectory.hpp"
+#include "unfurl/sim/scene.hpp"
+#include "unfurl/render/scene_view.hpp"
+#include "unfurl/sim/trajectory.hpp"
 
 namespace unfurl::app {
 
@@ -20,9 +21,11 @@ struct RenderOptions {
   std::optional<double> from, to;
   std::optional<std::string> video;
   std::string camera = "iso";  // a preset or "AZ,EL,DIST"
+  render::GlBackend gl = render::GlBackend::automatic;
 };
 
-// From --fps, --size, --from, --to, --video, --camera; throws UsageError.
+// From --fps, --size, --from, --to, --video, --camera, --gl; throws
+// UsageError.
 RenderOptions parse_render_options(const Args& args);
 
 // t = T0 + k / fps for k = 0, 1, ... up to T1, within [t_begin, t_end].

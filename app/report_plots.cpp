@@ -1,8 +1,12 @@
 #include "report_plots.hpp"
 
+#include "png_file.hpp"
+#include "unfurl/render/gl_context.hpp"
+#include "unfurl/render/plot_renderer.hpp"
+
 #include <cmath>
 
-namespace unfurl::render {
+namespace unfurl::app {
 
 namespace {
 
@@ -17,8 +21,8 @@ double measured(const PrecisionPoint& p, PrecisionMeasure measure) {
 
 }  // namespace
 
-PlotSpec work_precision_plot(const WorkPrecision& report, PrecisionMeasure measure) {
-  PlotSpec spec;
+render::PlotSpec work_precision_plot(const WorkPrecision& report, PrecisionMeasure measure) {
+  render::PlotSpec spec;
   spec.log_x = spec.log_y = true;
   spec.x_label = "wall time, s (median)";
   switch (measure) {
@@ -37,9 +41,9 @@ PlotSpec work_precision_plot(const WorkPrecision& report, PrecisionMeasure measu
   }
   const auto& kinds = all_integrators();
   for (std::size_t k = 0; k < kinds.size(); ++k) {
-    Series s;
+    render::Series s;
     s.label = integrator_name(kinds[k]);
-    s.color = palette(static_cast<int>(k));
+    s.color = render::palette(static_cast<int>(k));
     s.markers = true;
     for (const PrecisionPoint& p : report.points) {
       const double y = measured(p, measure);
@@ -53,16 +57,30 @@ PlotSpec work_precision_plot(const WorkPrecision& report, PrecisionMeasure measu
   return spec;
 }
 
-std::vector<Series> marked_series(std::map<std::string, Series> curves) {
-  std::vector<Series> out;
+std::vector<render::Series> marked_series(std::map<std::string, render::Series> curves) {
+  std::vector<render::Series> out;
   int color = 0;
   for (auto& [label, s] : curves) {
     s.label = label;
-    s.color = palette(color++);
+    s.color = render::palette(color++);
     s.markers = true;
     out.push_back(std::move(s));
   }
   return out;
 }
 
-}  // namespace unfurl::render
+std::vector<std::string> write_plot_pngs(const std::vector<std::pair<render::PlotSpec, std::string>>& plots,
+                                         const std::string& dir) {
+  auto context = render::make_offscreen_context();
+  render::PlotRenderer plotter(1280, 720);
+  render::Image image;
+  std::vector<std::string> files;
+  for (const auto& [spec, name] : plots) {
+    plotter.draw(spec, image);
+    write_png(image, dir + "/" + name, 6);
+    files.push_back(name);
+  }
+  return files;
+}
+
+}  // namespace unfurl::app

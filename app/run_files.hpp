@@ -4,9 +4,9 @@
 
 #include <string>
 
-#include "scene.hpp"
-#include "simulation.hpp"
-#include "summary.hpp"
+#include "unfurl/sim/scene.hpp"
+#include "unfurl/sim/simulation.hpp"
+#include "unfurl/sim/summary.hpp"
 
 namespace unfurl::app {
 

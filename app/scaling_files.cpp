@@ -4,76 +4,11 @@
 #include <cstdio>
 #include <map>
 
-#include "gl_context.hpp"
 #include "markdown.hpp"
-#include "number_text.hpp"
+#include "unfurl/sim/number_text.hpp"
 #include "output_file.hpp"
-#include "plot_renderer.hpp"
-#include "png_file.hpp"
-#include "report_plots.hpp"
 
 namespace unfurl::app {
-
-namespace {
-
-std::string family_label(const ScalingScene& s) {
-  return s.family + (s.variant.empty() ? "" : " (" + s.variant + ")");
-}
-
-render::PlotSpec rhs_plot(const ScalingReport& report) {
-  render::PlotSpec spec;
-  spec.title = "right-hand side: time per body";
-  spec.y_label = "ns per body per call (median)";
-  spec.x_label = "bodies";
-  spec.log_x = spec.log_y = true;
-  std::map<std::string, render::Series> curves;
-  for (const RhsTiming& t : report.rhs) {
-    render::Series& s = curves[family_label(t.scene)];
-    s.x.push_back(t.bodies);
-    s.y.push_back(t.ns_per_body);
-  }
-  spec.series = render::marked_series(std::move(curves));
-  return spec;
-}
-
-render::PlotSpec run_plot(const ScalingReport& report) {
-  render::PlotSpec spec;
-  char title[128];
-  std::snprintf(title, sizeof title, "whole runs of %g s: wall time against size", report.run_t_end);
-  spec.title = title;
-  spec.y_label = "wall time, s (finished runs; rtol 1e-8)";
-  spec.x_label = "bodies";
-  spec.log_x = spec.log_y = true;
-  std::map<std::string, render::Series> curves;
-  for (const RunTiming& t : report.runs) {
-    if (t.status != RunStatus::finished) continue;
-    render::Series& s = curves[t.scene.family + ", " + t.method];
-    s.x.push_back(t.bodies);
-    s.y.push_back(t.wall_time_s);
-  }
-  spec.series = render::marked_series(std::move(curves));
-  return spec;
-}
-
-}  // namespace
-
-std::vector<std::string> write_scaling_plots(const ScalingReport& report, const std::string& dir) {
-  auto context = render::make_offscreen_context();
-  render::PlotRenderer plotter(1280, 720);
-  render::Image image;
-  std::vector<std::string> files;
-  if (!report.rhs.empty()) {
-    plotter.draw(rhs_plot(report), image);
-    write_png(image, dir + "/rhs_per_body.png", 6);
-    files.push_back("rhs_per_body.png");
-  }
-  if (!report.runs.empty()) {
-    plotter.draw(run_plot(report), image);
-    write_png(image, dir + "/run_wall_time.png", 6);
-    files.push_back("run_wall_time.png");
-  }
-  return files;
-}
 
 void write_scaling_csv(const ScalingReport& report, const std::string& dir) {
   OutputFile rhs(dir + "/rhs_scaling.csv");

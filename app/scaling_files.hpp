@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "scaling.hpp"
+#include "unfurl/studies/scaling.hpp"
 
 namespace unfurl::app {
 

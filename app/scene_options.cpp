@@ -2,7 +2,7 @@
 
 #include <filesystem>
 
-#include "scene_yaml.hpp"
+#include "unfurl/sim/scene_file.hpp"
 
 namespace unfurl::app {
 
@@ -29,9 +29,11 @@ const char* scene_flags_help() {
          "  --sample DT           output interval in seconds (run.sample, default 0.01)\n";
 }
 
-Scene load_scene(const std::optional<std::string>& argument, const Args& args) {
-  return load_scene_named(argument.value_or("pantograph"), overrides_from(args));
+SceneFile read_scene(const std::optional<std::string>& argument, const Args& args) {
+  return read_scene_named(argument.value_or("pantograph"), overrides_from(args));
 }
+
+Scene load_scene(const std::optional<std::string>& argument, const Args& args) { return read_scene(argument, args).scene; }
 
 std::vector<Override> overrides_from(const Args& args) {
   std::vector<Override> overrides;
@@ -45,12 +47,12 @@ std::vector<Override> overrides_from(const Args& args) {
   return overrides;
 }
 
-Scene load_scene_named(const std::string& name, const std::vector<Override>& overrides) {
+SceneFile read_scene_named(const std::string& name, const std::vector<Override>& overrides) {
   std::error_code ec;
-  if (std::filesystem::is_regular_file(name, ec)) return load_scene_file(name, overrides);
+  if (std::filesystem::is_regular_file(name, ec)) return read_scene_file(name, overrides);
   const auto builtins = builtin_scene_names();
   if (std::find(builtins.begin(), builtins.end(), name) != builtins.end())
-    return load_builtin_scene(name, overrides);
+    return read_builtin_scene(name, overrides);
   std::string known;
   for (const auto& n : builtins) known += (known.empty() ? "" : ", ") + n;
   throw SceneError(name + ": no such scene file, and no built-in scene of that name (built in: " + known + ")");

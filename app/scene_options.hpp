@@ -8,8 +8,8 @@
 #include <string>
 
 #include "cli.hpp"
-#include "scene.hpp"
-#include "scene_yaml.hpp"
+#include "unfurl/sim/scene.hpp"
+#include "unfurl/sim/scene_file.hpp"
 
 namespace unfurl::app {
 
@@ -21,12 +21,14 @@ const char* scene_flags_help();
 // The overrides the flags ask for: every --set, then the run flags.
 std::vector<Override> overrides_from(const Args& args);
 
-// Loads the scene named by `argument` (a path, or a built-in scene name) with
-// the --set overrides of `args`, then applies the run flags. Throws
-// SceneError (exit 2) or UsageError.
+// Reads the scene named by `argument` (a path, or a built-in scene name)
+// with the --set overrides of `args`, then applies the run flags: the Scene
+// and its visuals. Throws SceneError (exit 2) or UsageError.
+SceneFile read_scene(const std::optional<std::string>& argument, const Args& args);
+// The Scene alone.
 Scene load_scene(const std::optional<std::string>& argument, const Args& args);
 
 // The scene named `name` (a path, or a built-in scene) with overrides.
-Scene load_scene_named(const std::string& name, const std::vector<Override>& overrides);
+SceneFile read_scene_named(const std::string& name, const std::vector<Override>& overrides);
 
 }  // namespace unfurl::app

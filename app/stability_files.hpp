@@ -6,7 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "stability_suite.hpp"
+#include "unfurl/studies/gain_study.hpp"
+#include "unfurl/studies/stability_results.hpp"
+#include "unfurl/studies/stability_verdicts.hpp"
 
 namespace unfurl::app {
 

@@ -5,8 +5,8 @@
 
 #include <string>
 
-#include "scene.hpp"
-#include "trajectory.hpp"
+#include "unfurl/sim/scene.hpp"
+#include "unfurl/sim/trajectory.hpp"
 
 namespace unfurl::app {
 

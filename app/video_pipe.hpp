@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <string>
 
-#include "framebuffer.hpp"
+#include "unfurl/render/framebuffer.hpp"
 
 namespace unfurl::app {
 

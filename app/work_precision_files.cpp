@@ -3,13 +3,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "gl_context.hpp"
 #include "markdown.hpp"
-#include "number_text.hpp"
+#include "unfurl/sim/number_text.hpp"
 #include "output_file.hpp"
-#include "plot_renderer.hpp"
-#include "png_file.hpp"
-#include "report_plots.hpp"
 
 namespace unfurl::app {
 
@@ -112,26 +108,6 @@ void write_work_precision_markdown(const Scene& scene, const WorkPrecision& repo
     out << '\n';
   }
   file.commit();
-}
-
-std::vector<std::string> write_work_precision_plots(const Scene& scene, const WorkPrecision& report,
-                                                    const std::string& dir) {
-  std::vector<std::pair<render::PrecisionMeasure, std::string>> plots{
-      {render::PrecisionMeasure::angle_error, "work_precision.png"}};
-  if (!scene.latches.empty()) {
-    plots.emplace_back(render::PrecisionMeasure::latch_time_error, "work_precision_latch.png");
-    plots.emplace_back(render::PrecisionMeasure::final_error, "work_precision_final.png");
-  }
-  auto context = render::make_offscreen_context();
-  render::PlotRenderer plotter(1280, 720);
-  render::Image image;
-  std::vector<std::string> files;
-  for (const auto& [measure, name] : plots) {
-    plotter.draw(render::work_precision_plot(report, measure), image);
-    write_png(image, dir + "/" + name, 6);
-    files.push_back(name);
-  }
-  return files;
 }
 
 }  // namespace unfurl::app

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "scene.hpp"
-#include "work_precision.hpp"
+#include "unfurl/sim/scene.hpp"
+#include "unfurl/studies/work_precision.hpp"
 
 namespace unfurl::app {
 

@@ -4,17 +4,17 @@
 // per call and per body: flat per body is O(N).
 #include <benchmark/benchmark.h>
 
-#include "dynamics.hpp"
-#include "scene_generators.hpp"
-#include "scene_yaml.hpp"
+#include "unfurl/sim/dynamics.hpp"
+#include "unfurl/studies/rhs_timing.hpp"
+#include "unfurl/studies/scene_generators.hpp"
+#include "unfurl/sim/scene_file.hpp"
 
 namespace unfurl {
 namespace {
 
 void run_rhs(benchmark::State& state, const Scene& scene) {
   Dynamics dynamics(scene);
-  std::vector<double> y = dynamics.initial_state(), ydot(y.size());
-  for (double& x : y) x += 1e-3;  // moving, loops slightly open: the general case
+  std::vector<double> y = rhs_timing_state(dynamics), ydot(y.size());
   for (auto _ : state) {
     dynamics.rhs(0, y.data(), ydot.data());
     benchmark::DoNotOptimize(ydot.data());

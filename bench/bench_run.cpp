@@ -3,10 +3,10 @@
 // regulator at v_max = 2000): wall time, steps, right-hand sides.
 #include <benchmark/benchmark.h>
 
-#include "simulation.hpp"
-#include "scene_generators.hpp"
-#include "scene_yaml.hpp"
-#include "summary.hpp"
+#include "unfurl/sim/simulation.hpp"
+#include "unfurl/studies/scene_generators.hpp"
+#include "unfurl/sim/scene_file.hpp"
+#include "unfurl/sim/summary.hpp"
 
 namespace unfurl {
 namespace {

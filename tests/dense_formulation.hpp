@@ -9,7 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "scene.hpp"
+#include "unfurl/sim/loop.hpp"
+#include "unfurl/sim/scene.hpp"
 
 namespace unfurl::test {
 
@@ -164,6 +165,10 @@ inline VectorXd applied_forces(const Scene& scene, const VectorXd& q, const Vect
   return Q + dense_formulation(scene, q).ATTt * body_forces(scene, q, false);
 }
 
+inline double relative_error(const VectorXd& x, const VectorXd& reference) {
+  return (x - reference).norm() / std::max(reference.norm(), 1e-300);
+}
+
 inline Vec3 random_unit(std::mt19937& rng) {
   std::normal_distribution<double> n;
   return Vec3(n(rng), n(rng), n(rng)).normalized();
@@ -209,6 +214,22 @@ inline Scene random_tree(std::mt19937& rng, int N, bool moving_base) {
   for (double& x : scene.q0) x = 3 * U(rng);
   scene.dq0.assign(model.nq, 0.0);
   return scene;
+}
+
+// W = J Mtilde^-1 J^T with J = eps T A from the dense formulation.
+inline MatrixXd dense_mobility(const Scene& scene, const std::vector<LoopComponent>& components, const VectorXd& q) {
+  const Dense d = dense_formulation(scene, q);
+  const int m = static_cast<int>(components.size());
+  // eps T A = rows of (A^T T^T eps^T)^T; ATTt maps a body force to Q.
+  MatrixXd J(m, scene.model.nq);
+  for (int c = 0; c < m; ++c) {
+    const LoopComponent& lc = components[c];
+    VectorXd F = VectorXd::Zero(6 * scene.model.size());
+    F[6 * scene.loops[lc.loop].body + lc.axis] = 1;
+    F[6 * scene.loops[lc.loop].image + lc.axis] = -1;
+    J.row(c) = (d.ATTt * F).transpose();
+  }
+  return J * d.Mt.ldlt().solve(J.transpose());
 }
 
 }  // namespace unfurl::test

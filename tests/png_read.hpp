@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "framebuffer.hpp"
+#include "unfurl/render/framebuffer.hpp"
 
 namespace unfurl::test {
 

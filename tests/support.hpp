@@ -6,8 +6,8 @@
 #include <cstdio>
 #include <string>
 
-#include "scene_yaml.hpp"
-#include "simulation.hpp"
+#include "unfurl/sim/scene_file.hpp"
+#include "unfurl/sim/simulation.hpp"
 
 namespace unfurl::test {
 

@@ -10,7 +10,7 @@
 #include <cmath>
 #include <string>
 
-#include "number_text.hpp"
+#include "unfurl/sim/number_text.hpp"
 #include "support.hpp"
 
 namespace unfurl {

@@ -5,7 +5,7 @@
 #include <array>
 #include <cmath>
 
-#include "summary.hpp"
+#include "unfurl/sim/summary.hpp"
 #include "support.hpp"
 
 namespace unfurl {

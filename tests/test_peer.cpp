@@ -13,10 +13,10 @@
 #include <map>
 #include <sstream>
 
-#include "gl_context.hpp"
-#include "plot_renderer.hpp"
+#include "unfurl/render/gl_context.hpp"
+#include "unfurl/render/plot_renderer.hpp"
 #include "png_file.hpp"
-#include "summary.hpp"
+#include "unfurl/sim/summary.hpp"
 #include "support.hpp"
 
 namespace unfurl {

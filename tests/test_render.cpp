@@ -9,11 +9,11 @@
 #include <set>
 #include <sstream>
 
-#include "frame_renderer.hpp"
-#include "plot_renderer.hpp"
-#include "trajectory_plots.hpp"
-#include "gl_context.hpp"
-#include "mesh_generator.hpp"
+#include "unfurl/render/frame_renderer.hpp"
+#include "unfurl/render/plot_renderer.hpp"
+#include "unfurl/render/trajectory_plots.hpp"
+#include "unfurl/render/gl_context.hpp"
+#include "unfurl/render/mesh_generator.hpp"
 #include "render_options.hpp"
 #include "support.hpp"
 #include "video_pipe.hpp"
@@ -47,9 +47,10 @@ std::vector<Pose> deployed_poses(const Scene& scene) {
 }
 
 TEST_F(Render, DeployedPantographFromAbove) {
-  const Scene scene = test::scene_file("pantograph");
+  const SceneFile file = read_scene_file(test::asset("scenes/pantograph.yaml"));
+  const Scene& scene = file.scene;
   const int w = 320, h = 180;
-  render::FrameRenderer renderer(scene, w, h, {render::builtin_mesh_directory()});
+  render::FrameRenderer renderer(scene, file.visuals, w, h, {render::builtin_mesh_directory()});
   const std::vector<Pose> poses = deployed_poses(scene);
   const render::Camera camera = *render::camera_preset("top", renderer.view().bounds(poses), float(w) / h);
   Image image;
@@ -81,8 +82,9 @@ TEST_F(Render, DeployedPantographFromAbove) {
 }
 
 TEST_F(Render, SameFrameTwiceGivesIdenticalPixels) {
-  const Scene scene = test::scene_file("zfold");
-  render::FrameRenderer renderer(scene, 200, 120, {render::builtin_mesh_directory()});
+  const SceneFile file = read_scene_file(test::asset("scenes/zfold.yaml"));
+  const Scene& scene = file.scene;
+  render::FrameRenderer renderer(scene, file.visuals, 200, 120, {render::builtin_mesh_directory()});
   std::vector<double> q = scene.q0;
   std::vector<Pose> poses;
   body_poses(scene.model, q.data(), poses);
@@ -193,6 +195,36 @@ TEST_F(Render, LegendLeavesTheDataVisible) {
       seen += std::abs(p[0] - r) <= 12 && std::abs(p[1] - g) <= 12 && std::abs(p[2] - b) <= 12;
     }
   EXPECT_GT(seen, 3) << "the largest run's marker is hidden";
+}
+
+TEST(GlBackends, EglAndOsmesaDrawTheSameFrame) {
+  // Two independent GL stacks (both llvmpipe here, through different
+  // loaders): the same scene, pose and camera within a few grey levels.
+  const std::vector<render::GlBackend> backends = render::available_gl_backends();
+  ASSERT_FALSE(backends.empty());
+  if (backends.size() < 2) GTEST_SKIP() << "this build has one offscreen backend";
+  const SceneFile file = read_scene_file(test::asset("scenes/pantograph.yaml"));
+  std::vector<double> q(file.scene.model.nq);
+  for (int c = 0; c < file.scene.model.nq; ++c) q[c] = 0.5 * file.scene.q0[c];
+  std::vector<Pose> poses;
+  body_poses(file.scene.model, q.data(), poses);
+  Image frames[2];
+  for (int k = 0; k < 2; ++k) {
+    auto context = render::make_offscreen_context(backends[k]);
+    render::FrameRenderer renderer(file.scene, file.visuals, 320, 180, {render::builtin_mesh_directory()});
+    const render::Camera camera = *render::camera_preset("iso", renderer.view().bounds(poses), 320.0f / 180);
+    renderer.frame(poses, 1.0, camera, frames[k]);
+  }
+  ASSERT_EQ(frames[0].rgb.size(), frames[1].rgb.size());
+  long total = 0;
+  int largest = 0;
+  for (std::size_t i = 0; i < frames[0].rgb.size(); ++i) {
+    const int d = std::abs(int(frames[0].rgb[i]) - int(frames[1].rgb[i]));
+    largest = std::max(largest, d);
+    total += d;
+  }
+  EXPECT_LE(largest, 4) << "grey levels, the largest difference of any pixel channel";
+  EXPECT_LT(static_cast<double>(total) / frames[0].rgb.size(), 0.5) << "grey levels, mean";
 }
 
 TEST(FrameTimes, RangeAndRate) {

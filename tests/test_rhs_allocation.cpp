@@ -6,7 +6,7 @@
 #include <atomic>
 #include <cstdlib>
 
-#include "dynamics.hpp"
+#include "unfurl/sim/dynamics.hpp"
 #include "support.hpp"
 
 extern "C" {

@@ -5,8 +5,10 @@
 
 #include <cmath>
 
-#include "stability_suite.hpp"
-#include "summary.hpp"
+#include "unfurl/studies/gain_study.hpp"
+#include "unfurl/studies/stability_results.hpp"
+#include "unfurl/studies/stability_verdicts.hpp"
+#include "unfurl/sim/summary.hpp"
 #include "support.hpp"
 
 namespace unfurl {
@@ -27,7 +29,7 @@ class SmallCase : public ::testing::TestWithParam<StabilityCase> {};
 
 TEST_P(SmallCase, EndsAsExpected) {
   const StabilityResult r = run_stability_case(GetParam());
-  EXPECT_TRUE(r.as_expected()) << r.spec.group << " / " << r.spec.label << ": "
+  EXPECT_TRUE(as_expected(r)) << r.spec.group << " / " << r.spec.label << ": "
                                << (r.status == RunStatus::finished ? "finished" : r.failure);
   if (r.status == RunStatus::failed) {
     // Where and why: the time, the step and the check.

@@ -7,9 +7,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "exact_pendulum.hpp"
+#include "unfurl/studies/exact_pendulum.hpp"
 #include "support.hpp"
-#include "work_precision.hpp"
+#include "unfurl/studies/work_precision.hpp"
 
 namespace unfurl {
 namespace {

@@ -8,14 +8,15 @@
 
 namespace unfurl::app {
 
-ExportJob::ExportJob(const ExportRequest& request, const Scene& scene, const Trajectory& trajectory,
+ExportJob::ExportJob(const ExportRequest& request, const Scene& scene, const SceneVisuals& visuals,
+                     const Trajectory& trajectory,
                      const render::Camera& camera)
     : request_(request),
       scene_(scene),
       trajectory_(trajectory),
       camera_(camera),
       times_(frame_times(request.options, trajectory.t_begin(), trajectory.t_end())),
-      renderer_(std::make_unique<render::FrameRenderer>(scene_, request.options.width, request.options.height,
+      renderer_(std::make_unique<render::FrameRenderer>(scene_, visuals, request.options.width, request.options.height,
                                                         mesh_directories(scene_))) {
   if (request_.frames) make_directory(request_.dir);
   if (request_.options.video)

@@ -11,7 +11,7 @@
 #include <string>
 #include <thread>
 
-#include "frame_renderer.hpp"
+#include "unfurl/render/frame_renderer.hpp"
 #include "gui_state.hpp"
 #include "video_pipe.hpp"
 
@@ -20,7 +20,7 @@ namespace unfurl::app {
 class ExportJob {
  public:
   // Throws std::runtime_error when the renderer, directory or ffmpeg fail.
-  ExportJob(const ExportRequest& request, const Scene& scene, const Trajectory& trajectory,
+  ExportJob(const ExportRequest& request, const Scene& scene, const SceneVisuals& visuals, const Trajectory& trajectory,
             const render::Camera& camera);
   ~ExportJob();  // stops the encoder
   ExportJob(const ExportJob&) = delete;

@@ -1,10 +1,11 @@
 #include "glfw_window.hpp"
 
-#include "gl.hpp"
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
 #include <stdexcept>
+
+#include "unfurl/render/window_surface.hpp"
 
 namespace unfurl::app {
 
@@ -26,7 +27,7 @@ GlfwWindow::GlfwWindow(int width, int height, const std::string& title) {
     throw std::runtime_error("cannot create an OpenGL 3.3 window (" + last_glfw_error + ")");
   }
   make_current();
-  if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(glfwGetProcAddress))) {
+  if (!render::load_gl_functions(glfwGetProcAddress)) {
     glfwDestroyWindow(window_);
     glfwTerminate();
     throw std::runtime_error("cannot load the OpenGL functions");
@@ -40,6 +41,7 @@ GlfwWindow::~GlfwWindow() {
 }
 
 void GlfwWindow::make_current() { glfwMakeContextCurrent(window_); }
+std::string GlfwWindow::description() const { return "GLFW window"; }
 bool GlfwWindow::should_close() const { return glfwWindowShouldClose(window_) != 0; }
 void GlfwWindow::request_close() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
 void GlfwWindow::swap() { glfwSwapBuffers(window_); }

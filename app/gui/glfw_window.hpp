@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "gl_context.hpp"
+#include "unfurl/render/gl_context.hpp"
 
 struct GLFWwindow;
 
@@ -19,6 +19,7 @@ class GlfwWindow : public render::GlContext {
   GlfwWindow& operator=(const GlfwWindow&) = delete;
 
   void make_current() override;
+  std::string description() const override;
   GLFWwindow* handle() const { return window_; }
   bool should_close() const;
   void request_close();

@@ -9,8 +9,8 @@
 #include <cstdio>
 #include <thread>
 
-#include "imgui_layer.hpp"
-#include "json_writer.hpp"
+#include "unfurl/render/imgui_layer.hpp"
+#include "unfurl/render/window_surface.hpp"
 #include "output_file.hpp"
 #include "png_file.hpp"
 #include "gui_panels.hpp"
@@ -71,11 +71,13 @@ bool GuiApp::load_and_run(const std::string& name) {
   try {
     std::vector<Override> overrides = state_.command_line_set;
     overrides.insert(overrides.end(), state_.edits.begin(), state_.edits.end());
-    Scene scene = load_scene_named(name, overrides);
+    SceneFile file = read_scene_named(name, overrides);
+    Scene& scene = file.scene;
     auto meshes = std::make_unique<render::MeshLibrary>(mesh_directories(scene));
-    auto view = std::make_unique<render::SceneView>(scene, *meshes);
+    auto view = std::make_unique<render::SceneView>(scene, file.visuals, *meshes);
     const bool same_scene = name == state_.scene_name && scene.name == state_.scene.name;
     state_.scene = std::move(scene);
+    state_.visuals = std::move(file.visuals);
     state_.scene_name = name;
     state_.scene_mtime = modification_time(name);
     state_.scene_error.clear();
@@ -185,8 +187,7 @@ void GuiApp::draw_plots_texture() {
   plot_frames_.clear();
   plots_->bind();
   const ImVec4 background = ImGui::GetStyle().Colors[ImGuiCol_WindowBg];
-  glClearColor(background.x, background.y, background.z, 1);
-  glClear(GL_COLOR_BUFFER_BIT);
+  render::clear_bound_framebuffer(background.x, background.y, background.z);
   plots_layer_->begin_frame(w, h);
   const std::vector<render::PlotKind> kinds = shown_plots(state_);
   const Trajectory* ghost = state_.ghost.empty() ? nullptr : &state_.ghost;
@@ -294,7 +295,8 @@ void GuiApp::apply(const Requests& r) {
   if (r.export_range && !export_job_) {
     try {
       if (state_.trajectory.empty()) throw std::runtime_error("nothing computed yet");
-      export_job_ = std::make_unique<ExportJob>(*r.export_range, state_.scene, state_.trajectory, state_.camera);
+      export_job_ = std::make_unique<ExportJob>(*r.export_range, state_.scene, state_.visuals, state_.trajectory,
+                                                state_.camera);
       state_.export_progress = {true, 0, export_job_->total(), ""};
     } catch (const std::exception& e) {
       state_.export_progress = {false, 0, 0, std::string("export failed: ") + e.what()};
@@ -319,105 +321,16 @@ void GuiApp::screenshot(const std::string& path) {
   int W = 0, H = 0;
   window_.framebuffer_size(W, H);
   render::Image image;
-  image.width = W;
-  image.height = H;
-  image.rgb.resize(static_cast<std::size_t>(W) * H * 3);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-  glReadBuffer(GL_BACK);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, W, H, GL_RGB, GL_UNSIGNED_BYTE, image.rgb.data());
-  std::vector<std::uint8_t> flipped(image.rgb.size());
-  const std::size_t row = static_cast<std::size_t>(W) * 3;
-  for (int y = 0; y < H; ++y) std::copy_n(&image.rgb[(H - 1 - y) * row], row, &flipped[y * row]);
-  image.rgb.swap(flipped);
+  render::read_window(W, H, image);
   const std::string dir = std::filesystem::path(path).parent_path().string();
   if (!dir.empty()) make_directory(dir);
   write_png(image, path, 6);
 }
 
-void GuiApp::write_report(const std::string& path) const {
-  OutputFile file(path);
-  JsonWriter json(file.stream());
-  json.begin_object();
-  json.value("scene", state_.scene.name).value("generation", state_.generation);
-  auto run = [&](const char* key, const Trajectory& tr) {
-    json.begin_object(key);
-    json.value("samples", static_cast<long>(tr.samples.size()));
-    json.value("t_end", tr.empty() ? 0.0 : tr.t_end());
-    json.begin_object("latch_times");
-    for (const LatchEvent& e : tr.events) json.value(state_.scene.model.joints[e.joint].name, e.t);
-    json.end_object();
-    json.end_object();
-  };
-  run("current", state_.trajectory);
-  run("previous", state_.ghost);
-  json.value("status", state_.progress.running ? "running" : run_status_name(state_.progress.status));
-  json.value("play_time", state_.play_time);
-  json.value("fps", state_.fps);
-  json.value("frames_while_running", state_.frames_while_running);
-  json.value("fps_while_running",
-             state_.seconds_while_running > 0 ? state_.frames_while_running / state_.seconds_while_running : 0.0);
-  json.value("worst_frame_ms_while_running", 1000 * state_.worst_frame_while_running);
-  json.begin_array("edits");
-  for (const Override& o : state_.edits) json.value("", o.path + "=" + o.value);
-  json.end_array();
-  json.end_object();
-  file.commit();
-}
-
-void GuiApp::run_script() {
-  while (script_next_ < script_.size()) {
-    const ScriptCommand& c = script_[script_next_];
-    const auto arg = [&](std::size_t i) { return c.args[i]; };
-    const double now = now_seconds();
-    if (c.name == "wait") {
-      if (script_wait_until_ == 0) script_wait_until_ = now + std::stod(arg(0));
-      if (now < script_wait_until_) return;
-      script_wait_until_ = 0;
-    } else if (c.name == "wait_run") {
-      if (state_.progress.running || state_.generation < state_.requested_generation) return;
-    } else if (c.name == "wait_export") {
-      if (export_job_) return;
-    } else if (c.name == "play") {
-      state_.playing = true;
-    } else if (c.name == "pause") {
-      state_.playing = false;
-    } else if (c.name == "speed") {
-      state_.speed = std::stof(arg(0));
-    } else if (c.name == "loop") {
-      state_.loop = arg(0) == "on";
-    } else if (c.name == "scrub") {
-      state_.play_time = std::stod(arg(0));
-    } else if (c.name == "camera") {
-      if (const auto cam = render::camera_preset(arg(0), swept_bounds(),
-                                                 float(state_.viewport_width) / std::max(1, state_.viewport_height)))
-        state_.camera = *cam, state_.camera_fitted = true;
-    } else if (c.name == "set") {
-      Requests r;
-      r.edit = Override{arg(0), arg(1)};
-      apply(r);
-    } else if (c.name == "screenshot") {
-      screenshot(arg(0));
-    } else if (c.name == "save_frame") {
-      save_view_png(arg(0));
-    } else if (c.name == "export") {
-      Requests r;
-      ExportRequest e;
-      e.dir = arg(0);
-      e.options.from = std::stod(arg(1));
-      e.options.to = std::stod(arg(2));
-      e.options.fps = std::stod(arg(3));
-      if (c.args.size() > 4) e.options.video = arg(4);
-      r.export_range = e;
-      apply(r);
-    } else if (c.name == "report") {
-      write_report(arg(0));
-    } else if (c.name == "quit") {
-      quit_ = true;
-    }
-    ++script_next_;
-    if (c.name == "screenshot") return;  // one per frame: the next one shows the script's effect
-  }
+void GuiApp::camera_preset(const std::string& name) {
+  if (const auto cam = render::camera_preset(name, swept_bounds(),
+                                             float(state_.viewport_width) / std::max(1, state_.viewport_height)))
+    state_.camera = *cam, state_.camera_fitted = true;
 }
 
 void GuiApp::record_frame_time(double seconds) {
@@ -455,15 +368,12 @@ void GuiApp::frame() {
   ImGui::Render();
   int W = 0, H = 0;
   window_.framebuffer_size(W, H);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glViewport(0, 0, W, H);
   const ImVec4 background = ImGui::GetStyle().Colors[ImGuiCol_WindowBg];
-  glClearColor(background.x, background.y, background.z, 1);
-  glClear(GL_COLOR_BUFFER_BIT);
+  render::begin_window_frame(W, H, background.x, background.y, background.z);
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   // The script runs here, between drawing and showing, so a screenshot
   // reads back the frame just drawn.
-  run_script();
+  script_.step(*this, now_seconds());
   window_.swap();
   apply(requests);
 }

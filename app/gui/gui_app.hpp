@@ -11,19 +11,19 @@
 #include <vector>
 
 #include "export_job.hpp"
-#include "framebuffer.hpp"
+#include "unfurl/render/framebuffer.hpp"
 #include "glfw_window.hpp"
-#include "gui_script.hpp"
+#include "script_runner.hpp"
 #include "gui_state.hpp"
-#include "imgui_layer.hpp"
-#include "plot.hpp"
-#include "mesh_library.hpp"
-#include "scene_view.hpp"
+#include "unfurl/render/imgui_layer.hpp"
+#include "unfurl/render/plot.hpp"
+#include "unfurl/render/mesh_library.hpp"
+#include "unfurl/render/scene_view.hpp"
 #include "simulation_worker.hpp"
 
 namespace unfurl::app {
 
-class GuiApp {
+class GuiApp : private ScriptTarget {
  public:
   GuiApp(const std::string& scene_name, std::vector<Override> command_line_set,
          std::vector<ScriptCommand> script);
@@ -43,8 +43,16 @@ class GuiApp {
   void draw_plots_texture();
   void layout_and_panels(Requests& requests);
   void apply(const Requests& requests);
-  void run_script();
   void record_frame_time(double seconds);
+
+  // ScriptTarget.
+  GuiState& state() override { return state_; }
+  void request(const Requests& requests) override { apply(requests); }
+  bool exporting() const override { return export_job_ != nullptr; }
+  void camera_preset(const std::string& name) override;
+  void screenshot(const std::string& path) override;
+  void save_frame(const std::string& path) override { save_view_png(path); }
+  void quit() override { quit_ = true; }
 
   // Loads the scene with the command-line and panel edits; on success swaps
   // it in (and its meshes) and starts a run. Errors go to state_.scene_error.
@@ -53,8 +61,6 @@ class GuiApp {
   Eigen::AlignedBox3f swept_bounds() const;
   void current_poses(std::vector<Pose>& poses) const;
   void save_view_png(const std::string& path);
-  void screenshot(const std::string& path);
-  void write_report(const std::string& path) const;
 
   GlfwWindow window_;
   GuiState state_;
@@ -70,9 +76,7 @@ class GuiApp {
   std::unique_ptr<ExportJob> export_job_;
   SimulationWorker worker_;
 
-  std::vector<ScriptCommand> script_;
-  std::size_t script_next_ = 0;
-  double script_wait_until_ = 0;
+  ScriptRunner script_;
   bool quit_ = false;
   int exit_code_ = 0;
   double last_file_check_ = 0;

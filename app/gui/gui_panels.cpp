@@ -4,9 +4,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "number_text.hpp"
+#include "unfurl/sim/number_text.hpp"
 #include "output_file.hpp"
-#include "trajectory_plots.hpp"
+#include "unfurl/render/trajectory_plots.hpp"
 
 namespace unfurl::app {
 

@@ -5,8 +5,8 @@
 #include <imgui.h>
 
 #include "gui_state.hpp"
-#include "plot.hpp"
-#include "trajectory_plots.hpp"
+#include "unfurl/render/plot.hpp"
+#include "unfurl/render/trajectory_plots.hpp"
 
 namespace unfurl::app {
 

@@ -12,12 +12,12 @@
 #include <string>
 #include <vector>
 
-#include "camera.hpp"
+#include "unfurl/render/camera.hpp"
 #include "render_options.hpp"
-#include "scene.hpp"
-#include "scene_yaml.hpp"
+#include "unfurl/sim/scene.hpp"
+#include "unfurl/sim/scene_file.hpp"
 #include "simulation_worker.hpp"
-#include "trajectory.hpp"
+#include "unfurl/sim/trajectory.hpp"
 
 namespace unfurl::app {
 
@@ -61,6 +61,7 @@ struct GuiState {
   std::vector<Override> command_line_set;  // --set from the command line
   std::vector<Override> edits;             // from the parameters panel
   Scene scene;
+  SceneVisuals visuals;
   std::string scene_error;                 // why the last load failed
   std::optional<std::filesystem::file_time_type> scene_mtime;
 

@@ -13,8 +13,8 @@
 #include <string>
 #include <thread>
 
-#include "scene.hpp"
-#include "simulation.hpp"
+#include "unfurl/sim/scene.hpp"
+#include "unfurl/sim/simulation.hpp"
 
 namespace unfurl::app {
 

@@ -1,4 +1,4 @@
-#include "camera.hpp"
+#include "unfurl/render/camera.hpp"
 
 #include <cmath>
 

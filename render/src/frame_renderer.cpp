@@ -1,14 +1,15 @@
-#include "frame_renderer.hpp"
+#include "unfurl/render/frame_renderer.hpp"
 
 #include <cstdio>
 
 namespace unfurl::render {
 
-FrameRenderer::FrameRenderer(const Scene& scene, int width, int height, std::vector<std::string> mesh_directories)
+FrameRenderer::FrameRenderer(const Scene& scene, const SceneVisuals& visuals, int width, int height,
+                             std::vector<std::string> mesh_directories)
     : scene_name_(scene.name),
       meshes_(std::move(mesh_directories)),
       framebuffer_(width, height),
-      view_(std::make_unique<SceneView>(scene, meshes_)),
+      view_(std::make_unique<SceneView>(scene, visuals, meshes_)),
       imgui_(std::max(14.0f, height / 40.0f)) {}
 
 void draw_overlay(ImDrawList* draw, const std::string& scene_name, double t) {

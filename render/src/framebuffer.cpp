@@ -1,4 +1,6 @@
-#include "framebuffer.hpp"
+#include "unfurl/render/framebuffer.hpp"
+
+#include "gl.hpp"
 
 #include <algorithm>
 #include <cstring>

@@ -1,4 +1,4 @@
-#include "imgui_layer.hpp"
+#include "unfurl/render/imgui_layer.hpp"
 
 #include <imgui_impl_opengl3.h>
 

@@ -1,4 +1,4 @@
-#include "mesh_generator.hpp"
+#include "unfurl/render/mesh_generator.hpp"
 
 #include <Eigen/Geometry>
 #include <array>

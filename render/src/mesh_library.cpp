@@ -1,4 +1,6 @@
-#include "mesh_library.hpp"
+#include "unfurl/render/mesh_library.hpp"
+
+#include "gl.hpp"
 
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -9,7 +11,12 @@
 
 namespace unfurl::render {
 
-std::string builtin_mesh_directory() { return std::string(UNFURL_SOURCE_DIR) + "/assets/meshes"; }
+std::string builtin_mesh_directory() {
+  // The source tree's meshes in a build tree, the installed ones otherwise.
+  std::error_code ec;
+  if (std::filesystem::is_directory(UNFURL_MESH_DIR, ec)) return UNFURL_MESH_DIR;
+  return UNFURL_INSTALLED_MESH_DIR;
+}
 
 MeshLibrary::MeshLibrary(std::vector<std::string> directories) : directories_(std::move(directories)) {}
 
@@ -65,7 +72,7 @@ const MeshModel& MeshLibrary::load(const std::string& name, const std::string& p
     if (aiGetMaterialColor(material, AI_MATKEY_BASE_COLOR, &color) == AI_SUCCESS ||
         aiGetMaterialColor(material, AI_MATKEY_COLOR_DIFFUSE, &color) == AI_SUCCESS)
       part.color = Eigen::Vector3f(color.r, color.g, color.b);
-    part.index_count = static_cast<GLsizei>(indices.size());
+    part.index_count = static_cast<int>(indices.size());
     glGenVertexArrays(1, &part.vao);
     glBindVertexArray(part.vao);
     glGenBuffers(1, &part.vbo);

@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <fstream>
 
-#include "mesh_generator.hpp"
+#include "unfurl/render/mesh_generator.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 2) {

@@ -5,9 +5,10 @@
 // clang-format on
 
 #include <stdexcept>
+#include <string>
 #include <vector>
 
-#include "gl_context.hpp"
+#include "offscreen_contexts.hpp"
 
 namespace unfurl::render {
 
@@ -35,6 +36,10 @@ class OsmesaContext : public GlContext {
   }
   ~OsmesaContext() override { OSMesaDestroyContext(context_); }
 
+  std::string description() const override {
+    return std::string("OSMesa, ") + reinterpret_cast<const char*>(glGetString(GL_VERSION));
+  }
+
   void make_current() override {
     // The renderer draws into its own framebuffers; the context's own buffer
     // only has to exist.
@@ -50,6 +55,6 @@ class OsmesaContext : public GlContext {
 
 }  // namespace
 
-std::unique_ptr<GlContext> make_offscreen_context() { return std::make_unique<OsmesaContext>(); }
+std::unique_ptr<GlContext> make_osmesa_context() { return std::make_unique<OsmesaContext>(); }
 
 }  // namespace unfurl::render

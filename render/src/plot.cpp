@@ -1,4 +1,4 @@
-#include "plot.hpp"
+#include "unfurl/render/plot.hpp"
 
 #include <algorithm>
 #include <cmath>

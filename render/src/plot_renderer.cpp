@@ -1,4 +1,6 @@
-#include "plot_renderer.hpp"
+#include "unfurl/render/plot_renderer.hpp"
+
+#include "gl.hpp"
 
 #include <algorithm>
 

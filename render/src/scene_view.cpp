@@ -1,4 +1,7 @@
-#include "scene_view.hpp"
+#include "unfurl/render/scene_view.hpp"
+
+#include "gl.hpp"
+#include "shader.hpp"
 
 #include <cmath>
 #include <set>
@@ -84,23 +87,24 @@ Eigen::Affine3f visual_transform(const Visual& v) {
 
 }  // namespace
 
-SceneView::SceneView(const Scene& scene, MeshLibrary& meshes)
+SceneView::SceneView(const Scene& scene, const SceneVisuals& visuals, MeshLibrary& meshes)
     : shader_(std::make_unique<Shader>(kVertex, kFragment)),
       background_(std::make_unique<Shader>(kBackgroundVertex, kBackgroundFragment)) {
   glGenVertexArrays(1, &background_vao_);
   std::set<int> images;
   for (const Loop& loop : scene.loops) images.insert(loop.image);
-  if (!scene.base_visual.mesh.empty())
-    items_.push_back({kBase, &meshes.get(scene.base_visual.mesh), visual_transform(scene.base_visual)});
+  if (!visuals.base.mesh.empty()) items_.push_back({kBase, &meshes.get(visuals.base.mesh), visual_transform(visuals.base)});
   for (int i = 0; i < scene.model.size(); ++i) {
-    const Visual& v = scene.visuals[i];
+    const Visual& v = visuals.bodies[i];
     if (v.mesh.empty() || images.count(i)) continue;
     items_.push_back({i, &meshes.get(v.mesh), visual_transform(v)});
   }
-  add_pins(scene, meshes);
+  add_pins(scene, visuals, meshes);
 }
 
-void SceneView::add_pins(const Scene& scene, MeshLibrary& meshes) {
+SceneView::~SceneView() = default;
+
+void SceneView::add_pins(const Scene& scene, const SceneVisuals& visuals, MeshLibrary& meshes) {
   // Two short pins near the ends of a hinge line as wide as the child's
   // mesh; one pin where the child is not drawn (a cross pivot to an image).
   const MeshModel& pin = meshes.get("pin");
@@ -112,7 +116,7 @@ void SceneView::add_pins(const Scene& scene, MeshLibrary& meshes) {
     const Eigen::Vector3f axis = joint.axis.cast<float>();
     const Eigen::Quaternionf turn = Eigen::Quaternionf::FromTwoVectors(Eigen::Vector3f::UnitZ(), axis);
     std::vector<float> stations{0.0f};
-    const Visual& v = scene.visuals[i];
+    const Visual& v = visuals.bodies[i];
     if (!v.mesh.empty() && !images.count(i)) {
       const Eigen::Vector3f size = meshes.get(v.mesh).bounds.sizes().cwiseProduct(v.scale.cast<float>());
       const float width = size.dot(axis.cwiseAbs());

@@ -1,4 +1,4 @@
-#include "trajectory_plots.hpp"
+#include "unfurl/render/trajectory_plots.hpp"
 
 #include <functional>
 

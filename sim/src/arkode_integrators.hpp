@@ -8,7 +8,7 @@
 #include <optional>
 
 #include "arkode_api.hpp"
-#include "integrator.hpp"
+#include "unfurl/sim/integrator.hpp"
 #include "sundials_support.hpp"
 
 namespace unfurl {

@@ -4,8 +4,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "closure_solver.hpp"
-#include "mobility.hpp"
+#include "unfurl/sim/closure_solver.hpp"
+#include "unfurl/sim/mobility.hpp"
 
 namespace unfurl {
 

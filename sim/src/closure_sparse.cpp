@@ -19,7 +19,7 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
-#include "closure_solver.hpp"
+#include "unfurl/sim/closure_solver.hpp"
 
 namespace unfurl {
 

@@ -6,7 +6,7 @@
 
 #include <optional>
 
-#include "integrator.hpp"
+#include "unfurl/sim/integrator.hpp"
 #include "sundials_support.hpp"
 
 namespace unfurl {

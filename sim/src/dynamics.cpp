@@ -1,4 +1,4 @@
-#include "dynamics.hpp"
+#include "unfurl/sim/dynamics.hpp"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "forces.hpp"
+#include "unfurl/sim/forces.hpp"
 
 namespace unfurl {
 

@@ -1,4 +1,4 @@
-#include "integrator.hpp"
+#include "unfurl/sim/integrator.hpp"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "joint.hpp"
+#include "unfurl/sim/joint.hpp"
 
 namespace unfurl {
 

@@ -1,4 +1,4 @@
-#include "kinematics.hpp"
+#include "unfurl/sim/kinematics.hpp"
 
 namespace unfurl {
 

@@ -1,4 +1,4 @@
-#include "latch.hpp"
+#include "unfurl/sim/latch.hpp"
 
 namespace unfurl {
 

@@ -17,8 +17,8 @@
 
 #include <vector>
 
-#include "dynamics.hpp"
-#include "integrator.hpp"
+#include "unfurl/sim/dynamics.hpp"
+#include "unfurl/sim/integrator.hpp"
 
 namespace unfurl {
 

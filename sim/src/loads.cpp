@@ -1,4 +1,4 @@
-#include "loads.hpp"
+#include "unfurl/sim/loads.hpp"
 
 namespace unfurl {
 

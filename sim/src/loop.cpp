@@ -1,6 +1,6 @@
 #include <cmath>
 
-#include "loop.hpp"
+#include "unfurl/sim/loop.hpp"
 
 namespace unfurl {
 

@@ -1,4 +1,4 @@
-#include "loop_components.hpp"
+#include "unfurl/sim/loop_components.hpp"
 
 #include <cmath>
 #include <random>

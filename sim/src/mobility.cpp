@@ -1,4 +1,4 @@
-#include "mobility.hpp"
+#include "unfurl/sim/mobility.hpp"
 
 #include <cmath>
 #include <stdexcept>

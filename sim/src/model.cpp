@@ -1,4 +1,4 @@
-#include "model.hpp"
+#include "unfurl/sim/model.hpp"
 
 #include <stdexcept>
 

@@ -1,6 +1,6 @@
 #include "newton_preconditioner.hpp"
 
-#include "dynamics.hpp"
+#include "unfurl/sim/dynamics.hpp"
 
 namespace unfurl {
 

@@ -17,7 +17,7 @@
 
 #include <vector>
 
-#include "sweep.hpp"
+#include "unfurl/sim/sweep.hpp"
 
 namespace unfurl {
 

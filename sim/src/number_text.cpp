@@ -1,4 +1,4 @@
-#include "number_text.hpp"
+#include "unfurl/sim/number_text.hpp"
 
 #include <charconv>
 

@@ -1,4 +1,4 @@
-#include "regulator.hpp"
+#include "unfurl/sim/regulator.hpp"
 
 #include <limits>
 

@@ -6,7 +6,7 @@
 // at the earliest crossing; the simulation restarts the method there.
 #pragma once
 
-#include "integrator.hpp"
+#include "unfurl/sim/integrator.hpp"
 
 namespace unfurl {
 

@@ -8,8 +8,8 @@
 #include <limits>
 #include <vector>
 
-#include "dynamics.hpp"
-#include "loads.hpp"
+#include "unfurl/sim/dynamics.hpp"
+#include "unfurl/sim/loads.hpp"
 
 namespace unfurl {
 

@@ -1,4 +1,4 @@
-#include "run_settings.hpp"
+#include "unfurl/sim/run_settings.hpp"
 
 namespace unfurl {
 

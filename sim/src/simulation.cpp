@@ -1,4 +1,4 @@
-#include "simulation.hpp"
+#include "unfurl/sim/simulation.hpp"
 
 #include <algorithm>
 #include <chrono>

@@ -1,4 +1,4 @@
-#include "summary.hpp"
+#include "unfurl/sim/summary.hpp"
 
 #include <algorithm>
 #include <limits>

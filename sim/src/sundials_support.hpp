@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "dynamics.hpp"
+#include "unfurl/sim/dynamics.hpp"
 
 namespace unfurl::sundials {
 

@@ -1,4 +1,4 @@
-#include "sweep.hpp"
+#include "unfurl/sim/sweep.hpp"
 
 namespace unfurl {
 

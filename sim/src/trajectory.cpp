@@ -1,4 +1,4 @@
-#include "trajectory.hpp"
+#include "unfurl/sim/trajectory.hpp"
 
 #include <algorithm>
 

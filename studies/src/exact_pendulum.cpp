@@ -1,4 +1,4 @@
-#include "exact_pendulum.hpp"
+#include "unfurl/studies/exact_pendulum.hpp"
 
 #include <cmath>
 #include <vector>

@@ -1,15 +1,19 @@
-#include "scaling.hpp"
+#include "unfurl/studies/scaling.hpp"
 
 #include <algorithm>
 #include <chrono>
-#include <stdexcept>
 
-#include "dynamics.hpp"
-#include "scene_generators.hpp"
-#include "scene_yaml.hpp"
-#include "summary.hpp"
+#include "unfurl/sim/dynamics.hpp"
+#include "unfurl/studies/rhs_timing.hpp"
+#include "unfurl/studies/scene_generators.hpp"
+#include "unfurl/sim/scene_file.hpp"
+#include "unfurl/sim/summary.hpp"
 
 namespace unfurl {
+
+std::string family_label(const ScalingScene& s) {
+  return s.family + (s.variant.empty() ? "" : " (" + s.variant + ")");
+}
 
 Scene load_scaling_scene(const ScalingScene& s) {
   std::vector<Override> overrides;
@@ -28,10 +32,7 @@ RhsTiming time_right_hand_side(const ScalingScene& s, double seconds) {
   using Clock = std::chrono::steady_clock;
   const Scene scene = load_scaling_scene(s);
   Dynamics dynamics(scene);
-  std::vector<double> y = dynamics.initial_state(), ydot(y.size());
-  for (double& x : y) x += 1e-3;  // moving, loops slightly open: the general case
-  if (!dynamics.rhs(0, y.data(), ydot.data()))
-    throw std::runtime_error(scene.name + ": the right-hand side is not finite at the timing state");
+  std::vector<double> y = rhs_timing_state(dynamics), ydot(y.size());
   RhsTiming t;
   t.scene = s;
   t.bodies = scene.model.size();

@@ -1,11 +1,11 @@
-#include "scene_generators.hpp"
+#include "unfurl/studies/scene_generators.hpp"
 
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 
-#include "number_text.hpp"
+#include "unfurl/sim/number_text.hpp"
 
 namespace unfurl {
 

@@ -1,4 +1,4 @@
-#include "work_precision.hpp"
+#include "unfurl/studies/work_precision.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <optional>
 #include <sstream>
 
-#include "exact_pendulum.hpp"
+#include "unfurl/studies/exact_pendulum.hpp"
 
 namespace unfurl {
 

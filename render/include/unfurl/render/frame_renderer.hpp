@@ -6,18 +6,19 @@
 #include <memory>
 #include <string>
 
-#include "camera.hpp"
-#include "framebuffer.hpp"
-#include "imgui_layer.hpp"
-#include "mesh_library.hpp"
-#include "scene_view.hpp"
+#include "unfurl/render/camera.hpp"
+#include "unfurl/render/framebuffer.hpp"
+#include "unfurl/render/imgui_layer.hpp"
+#include "unfurl/render/mesh_library.hpp"
+#include "unfurl/render/scene_view.hpp"
 
 namespace unfurl::render {
 
 class FrameRenderer {
  public:
   // Throws std::runtime_error when a mesh is missing or GL fails.
-  FrameRenderer(const Scene& scene, int width, int height, std::vector<std::string> mesh_directories);
+  FrameRenderer(const Scene& scene, const SceneVisuals& visuals, int width, int height,
+                std::vector<std::string> mesh_directories);
 
   const SceneView& view() const { return *view_; }
   int width() const { return framebuffer_.width(); }

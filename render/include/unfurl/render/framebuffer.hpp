@@ -5,7 +5,6 @@
 #include <cstdint>
 #include <vector>
 
-#include "gl.hpp"
 
 namespace unfurl::render {
 
@@ -31,12 +30,12 @@ class Framebuffer {
   void resolve();
   // Reads the resolved image (after resolve()).
   void read(Image& image);
-  GLuint texture() const { return texture_; }
+  unsigned texture() const { return texture_; }
 
  private:
   int width_, height_;
-  GLuint msaa_fbo_ = 0, color_rb_ = 0, depth_rb_ = 0;
-  GLuint resolve_fbo_ = 0, texture_ = 0;
+  unsigned msaa_fbo_ = 0, color_rb_ = 0, depth_rb_ = 0;
+  unsigned resolve_fbo_ = 0, texture_ = 0;
 };
 
 }  // namespace unfurl::render

@@ -8,13 +8,12 @@
 #include <string>
 #include <vector>
 
-#include "gl.hpp"
 
 namespace unfurl::render {
 
 struct MeshPart {
-  GLuint vao = 0, vbo = 0, ebo = 0;
-  GLsizei index_count = 0;
+  unsigned vao = 0, vbo = 0, ebo = 0;
+  int index_count = 0;
   Eigen::Vector3f color{0.7f, 0.7f, 0.7f};
 };
 

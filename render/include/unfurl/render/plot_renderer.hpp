@@ -2,9 +2,9 @@
 // read back. Needs a current GL context; knows nothing of scenes.
 #pragma once
 
-#include "framebuffer.hpp"
-#include "imgui_layer.hpp"
-#include "plot.hpp"
+#include "unfurl/render/framebuffer.hpp"
+#include "unfurl/render/imgui_layer.hpp"
+#include "unfurl/render/plot.hpp"
 
 namespace unfurl::render {
 

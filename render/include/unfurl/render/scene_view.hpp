@@ -1,5 +1,5 @@
 // Draws a scene's bodies at given poses: each body's mesh (scaled, offset,
-// turned as the scene says) placed by its pose, hinge pins at the joints, a
+// turned as the scene's visuals say) placed by its pose, hinge pins at the joints, a
 // sun-like light with ambient fill, over a gradient background. Images of
 // split bodies are not drawn (they coincide with their originals).
 #pragma once
@@ -8,19 +8,22 @@
 #include <memory>
 #include <vector>
 
-#include "camera.hpp"
-#include "kinematics.hpp"
-#include "mesh_library.hpp"
-#include "scene.hpp"
-#include "shader.hpp"
+#include "unfurl/render/camera.hpp"
+#include "unfurl/sim/kinematics.hpp"
+#include "unfurl/render/mesh_library.hpp"
+#include "unfurl/sim/scene.hpp"
+#include "unfurl/sim/visuals.hpp"
 
 namespace unfurl::render {
+
+class Shader;
 
 class SceneView {
  public:
   // Loads the meshes the scene names (throws std::runtime_error when one is
   // missing). Needs a current GL context.
-  SceneView(const Scene& scene, MeshLibrary& meshes);
+  SceneView(const Scene& scene, const SceneVisuals& visuals, MeshLibrary& meshes);
+  ~SceneView();
 
   // Draws into the bound framebuffer of size width x height.
   void draw(const std::vector<Pose>& poses, const Camera& camera, int width, int height) const;
@@ -36,11 +39,11 @@ class SceneView {
   };
 
   Eigen::Affine3f placement(const Item& item, const std::vector<Pose>& poses) const;
-  void add_pins(const Scene& scene, MeshLibrary& meshes);
+  void add_pins(const Scene& scene, const SceneVisuals& visuals, MeshLibrary& meshes);
 
   std::vector<Item> items_;
   std::unique_ptr<Shader> shader_, background_;
-  GLuint background_vao_ = 0;
+  unsigned background_vao_ = 0;
 };
 
 }  // namespace unfurl::render

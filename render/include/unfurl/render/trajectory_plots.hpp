@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "plot.hpp"
-#include "scene.hpp"
-#include "trajectory.hpp"
+#include "unfurl/render/plot.hpp"
+#include "unfurl/sim/scene.hpp"
+#include "unfurl/sim/trajectory.hpp"
 
 namespace unfurl::render {
 

@@ -13,9 +13,9 @@
 #include <memory>
 #include <vector>
 
-#include "loop_components.hpp"
-#include "regulator_settings.hpp"
-#include "sweep.hpp"
+#include "unfurl/sim/loop_components.hpp"
+#include "unfurl/sim/regulator_settings.hpp"
+#include "unfurl/sim/sweep.hpp"
 
 namespace unfurl {
 

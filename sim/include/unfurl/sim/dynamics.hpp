@@ -11,13 +11,13 @@
 #include <memory>
 #include <vector>
 
-#include "energy.hpp"
-#include "latch.hpp"
-#include "loads.hpp"
-#include "regulator.hpp"
-#include "scene.hpp"
-#include "state_layout.hpp"
-#include "sweep.hpp"
+#include "unfurl/sim/energy.hpp"
+#include "unfurl/sim/latch.hpp"
+#include "unfurl/sim/loads.hpp"
+#include "unfurl/sim/regulator.hpp"
+#include "unfurl/sim/scene.hpp"
+#include "unfurl/sim/state_layout.hpp"
+#include "unfurl/sim/sweep.hpp"
 
 namespace unfurl {
 

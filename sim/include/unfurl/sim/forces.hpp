@@ -4,8 +4,8 @@
 
 #include <vector>
 
-#include "kinematics.hpp"
-#include "model.hpp"
+#include "unfurl/sim/kinematics.hpp"
+#include "unfurl/sim/model.hpp"
 
 namespace unfurl {
 

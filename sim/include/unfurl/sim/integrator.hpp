@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "dynamics.hpp"
-#include "scene.hpp"
+#include "unfurl/sim/dynamics.hpp"
+#include "unfurl/sim/scene.hpp"
 
 namespace unfurl {
 

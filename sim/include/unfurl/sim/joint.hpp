@@ -8,7 +8,7 @@
 
 #include <string>
 
-#include "spatial.hpp"
+#include "unfurl/sim/spatial.hpp"
 
 namespace unfurl {
 

@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "model.hpp"
+#include "unfurl/sim/model.hpp"
 
 namespace unfurl {
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "spatial.hpp"
+#include "unfurl/sim/spatial.hpp"
 
 namespace unfurl {
 

@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "kinematics.hpp"
+#include "unfurl/sim/kinematics.hpp"
 
 namespace unfurl {
 

@@ -6,9 +6,9 @@
 
 #include <vector>
 
-#include "loop.hpp"
-#include "model.hpp"
-#include "sweep.hpp"
+#include "unfurl/sim/loop.hpp"
+#include "unfurl/sim/model.hpp"
+#include "unfurl/sim/sweep.hpp"
 
 namespace unfurl {
 

@@ -6,8 +6,8 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "loop_components.hpp"
-#include "sweep.hpp"
+#include "unfurl/sim/loop_components.hpp"
+#include "unfurl/sim/sweep.hpp"
 
 namespace unfurl {
 

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "joint.hpp"
-#include "spatial.hpp"
+#include "unfurl/sim/joint.hpp"
+#include "unfurl/sim/spatial.hpp"
 
 namespace unfurl {
 

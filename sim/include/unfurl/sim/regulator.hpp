@@ -40,11 +40,11 @@
 #include <memory>
 #include <vector>
 
-#include "closure_solver.hpp"
-#include "loop_components.hpp"
-#include "mobility.hpp"
-#include "regulator_settings.hpp"
-#include "sweep.hpp"
+#include "unfurl/sim/closure_solver.hpp"
+#include "unfurl/sim/loop_components.hpp"
+#include "unfurl/sim/mobility.hpp"
+#include "unfurl/sim/regulator_settings.hpp"
+#include "unfurl/sim/sweep.hpp"
 
 namespace unfurl {
 

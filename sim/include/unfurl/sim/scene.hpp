@@ -6,12 +6,12 @@
 #include <string>
 #include <vector>
 
-#include "forces.hpp"
-#include "latch.hpp"
-#include "loop.hpp"
-#include "model.hpp"
-#include "regulator_settings.hpp"
-#include "run_settings.hpp"
+#include "unfurl/sim/forces.hpp"
+#include "unfurl/sim/latch.hpp"
+#include "unfurl/sim/loop.hpp"
+#include "unfurl/sim/model.hpp"
+#include "unfurl/sim/regulator_settings.hpp"
+#include "unfurl/sim/run_settings.hpp"
 
 namespace unfurl {
 

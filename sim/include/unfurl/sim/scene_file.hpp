@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "scene.hpp"
-#include "visuals.hpp"
+#include "unfurl/sim/scene.hpp"
+#include "unfurl/sim/visuals.hpp"
 
 namespace unfurl {
 

@@ -8,10 +8,10 @@
 #include <functional>
 #include <string>
 
-#include "integrator.hpp"
-#include "loads.hpp"
-#include "scene.hpp"
-#include "trajectory.hpp"
+#include "unfurl/sim/integrator.hpp"
+#include "unfurl/sim/loads.hpp"
+#include "unfurl/sim/scene.hpp"
+#include "unfurl/sim/trajectory.hpp"
 
 namespace unfurl {
 

@@ -9,9 +9,9 @@
 
 #include <vector>
 
-#include "kinematics.hpp"
-#include "model.hpp"
-#include "spatial.hpp"
+#include "unfurl/sim/kinematics.hpp"
+#include "unfurl/sim/model.hpp"
+#include "unfurl/sim/spatial.hpp"
 
 namespace unfurl {
 

@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "energy.hpp"
-#include "loads.hpp"
-#include "loop.hpp"
-#include "state_layout.hpp"
+#include "unfurl/sim/energy.hpp"
+#include "unfurl/sim/loads.hpp"
+#include "unfurl/sim/loop.hpp"
+#include "unfurl/sim/state_layout.hpp"
 
 namespace unfurl {
 

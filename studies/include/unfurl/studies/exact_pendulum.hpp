@@ -9,7 +9,7 @@
 
 #include <optional>
 
-#include "scene.hpp"
+#include "unfurl/sim/scene.hpp"
 
 namespace unfurl {
 

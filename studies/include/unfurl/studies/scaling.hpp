@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "simulation.hpp"
+#include "unfurl/sim/simulation.hpp"
 
 namespace unfurl {
 
@@ -20,6 +20,8 @@ struct ScalingScene {
   std::vector<std::pair<std::string, std::string>> overrides;
 };
 Scene load_scaling_scene(const ScalingScene& s);
+// "pantograph" or "pantograph (dense gains)": the family and its variant.
+std::string family_label(const ScalingScene& s);
 
 struct RhsTiming {
   ScalingScene scene;

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "simulation.hpp"
+#include "unfurl/sim/simulation.hpp"
 
 namespace unfurl {
 

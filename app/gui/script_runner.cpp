@@ -1,0 +1,60 @@
+#include "script_runner.hpp"
+
+#include "session_report.hpp"
+
+namespace unfurl::app {
+
+void ScriptRunner::step(ScriptTarget& target, double now) {
+  GuiState& state = target.state();
+  while (next_ < script_.size()) {
+    const ScriptCommand& c = script_[next_];
+    const auto arg = [&](std::size_t i) { return c.args[i]; };
+    if (c.name == "wait") {
+      if (wait_until_ == 0) wait_until_ = now + std::stod(arg(0));
+      if (now < wait_until_) return;
+      wait_until_ = 0;
+    } else if (c.name == "wait_run") {
+      if (state.progress.running || state.generation < state.requested_generation) return;
+    } else if (c.name == "wait_export") {
+      if (target.exporting()) return;
+    } else if (c.name == "play") {
+      state.playing = true;
+    } else if (c.name == "pause") {
+      state.playing = false;
+    } else if (c.name == "speed") {
+      state.speed = std::stof(arg(0));
+    } else if (c.name == "loop") {
+      state.loop = arg(0) == "on";
+    } else if (c.name == "scrub") {
+      state.play_time = std::stod(arg(0));
+    } else if (c.name == "camera") {
+      target.camera_preset(arg(0));
+    } else if (c.name == "set") {
+      Requests r;
+      r.edit = Override{arg(0), arg(1)};
+      target.request(r);
+    } else if (c.name == "screenshot") {
+      target.screenshot(arg(0));
+    } else if (c.name == "save_frame") {
+      target.save_frame(arg(0));
+    } else if (c.name == "export") {
+      Requests r;
+      ExportRequest e;
+      e.dir = arg(0);
+      e.options.from = std::stod(arg(1));
+      e.options.to = std::stod(arg(2));
+      e.options.fps = std::stod(arg(3));
+      if (c.args.size() > 4) e.options.video = arg(4);
+      r.export_range = e;
+      target.request(r);
+    } else if (c.name == "report") {
+      write_session_report(state, arg(0));
+    } else if (c.name == "quit") {
+      target.quit();
+    }
+    ++next_;
+    if (c.name == "screenshot") return;
+  }
+}
+
+}  // namespace unfurl::app

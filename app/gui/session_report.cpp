@@ -1,0 +1,38 @@
+#include "session_report.hpp"
+
+#include "json_writer.hpp"
+#include "output_file.hpp"
+
+namespace unfurl::app {
+
+void write_session_report(const GuiState& state, const std::string& path) {
+  OutputFile file(path);
+  JsonWriter json(file.stream());
+  json.begin_object();
+  json.value("scene", state.scene.name).value("generation", state.generation);
+  auto run = [&](const char* key, const Trajectory& tr) {
+    json.begin_object(key);
+    json.value("samples", static_cast<long>(tr.samples.size()));
+    json.value("t_end", tr.empty() ? 0.0 : tr.t_end());
+    json.begin_object("latch_times");
+    for (const LatchEvent& e : tr.events) json.value(state.scene.model.joints[e.joint].name, e.t);
+    json.end_object();
+    json.end_object();
+  };
+  run("current", state.trajectory);
+  run("previous", state.ghost);
+  json.value("status", state.progress.running ? "running" : run_status_name(state.progress.status));
+  json.value("play_time", state.play_time);
+  json.value("fps", state.fps);
+  json.value("frames_while_running", state.frames_while_running);
+  json.value("fps_while_running",
+             state.seconds_while_running > 0 ? state.frames_while_running / state.seconds_while_running : 0.0);
+  json.value("worst_frame_ms_while_running", 1000 * state.worst_frame_while_running);
+  json.begin_array("edits");
+  for (const Override& o : state.edits) json.value("", o.path + "=" + o.value);
+  json.end_array();
+  json.end_object();
+  file.commit();
+}
+
+}  // namespace unfurl::app

@@ -1,0 +1,36 @@
+// Checks a closure solver's R^-1 b against the dense formulation's W.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+
+#include "dense_formulation.hpp"
+#include "unfurl/sim/closure_solver.hpp"
+#include "unfurl/sim/dynamics.hpp"
+
+namespace unfurl::test {
+
+// R^-1 b = (W + delta I)^-1 b by a closure solver at q, and densely.
+inline void expect_closure_solve_matches_dense(const Scene& scene, ClosureSolverKind kind, const VectorXd& q,
+                                        double delta) {
+  Dynamics dynamics(scene);
+  const std::vector<LoopComponent>& components = dynamics.regulator()->components();
+  const int m = static_cast<int>(components.size());
+  const auto solver = make_closure_solver(kind, scene.model, scene.loops, components);
+  Sweep sweep(scene.model);
+  sweep.set_configuration(q.data());
+  ASSERT_TRUE(solver->factorize(sweep, delta));
+  // Two right-hand sides at once, as the regulator solves them.
+  MatrixXd B(m, 2);
+  B.col(0) = VectorXd::LinSpaced(m, -1, 1) + VectorXd::Constant(m, 0.25);
+  B.col(1) = VectorXd::LinSpaced(m, 2, -0.5);
+  MatrixXd X(m, 2);
+  solver->solve(B.data(), X.data(), 2);
+  MatrixXd R = dense_mobility(scene, components, q);
+  R.diagonal().array() += delta;
+  for (int c = 0; c < 2; ++c)
+    EXPECT_LT(relative_error(X.col(c), R.ldlt().solve(B.col(c))), 1e-9) << m << " components, delta " << delta;
+}
+
+}  // namespace unfurl::test

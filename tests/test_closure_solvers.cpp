@@ -1,0 +1,36 @@
+// The closure solvers (solves with R = W + delta I) against the dense
+// formulation's W: the dense and sparse ones, away from and at the deployed
+// branch point where W loses rank.
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+
+#include "closure_check.hpp"
+#include "support.hpp"
+#include "unfurl/sim/closure_solver.hpp"
+#include "unfurl/sim/dynamics.hpp"
+
+namespace unfurl {
+namespace {
+
+using Eigen::VectorXd;
+using test::expect_closure_solve_matches_dense;
+
+TEST(ClosureSolver, DenseAndSparseSolveWithWPlusDelta) {
+  const Scene scene = test::scene_file("pantograph");
+  VectorXd q(scene.model.nq);
+  for (int k = 0; k < q.size(); ++k) q[k] = 0.7 * scene.q0[k];
+  for (const auto kind : {ClosureSolverKind::dense, ClosureSolverKind::sparse})
+    expect_closure_solve_matches_dense(scene, kind, q, 1e-5);
+}
+
+TEST(ClosureSolver, SparseHoldsAtTheDeployedBranchPoint) {
+  // At q = 0 W loses rank: R = W + delta I is what keeps the solve defined.
+  const Scene scene = test::scene_file("pantograph");
+  const VectorXd q = VectorXd::Zero(scene.model.nq);
+  for (const double delta : {1e-3, 1e-5, 1e-7})
+    expect_closure_solve_matches_dense(scene, ClosureSolverKind::sparse, q, delta);
+}
+
+}  // namespace
+}  // namespace unfurl

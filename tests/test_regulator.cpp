@@ -1,0 +1,75 @@
+// The loop regulator: an open start closes, max_closure fails a run on the
+// geometric gap, and only the loop components some motion can excite carry
+// a regulator state.
+#include <gtest/gtest.h>
+
+#include "support.hpp"
+#include "unfurl/sim/dynamics.hpp"
+
+namespace unfurl {
+namespace {
+
+TEST(LoopRegulator, ResidualOfAnOpenStartDecays) {
+  // Start the four-bar about 1 mm / 1 mrad open: the restoring loop force
+  // must pull it shut within a few regulator time constants (1/v_max).
+  Scene scene = test::scene_file("fourbar", {{"closure_tolerance", "0.01"},
+                                             {"initial.q.crank_pivot", "1.5717963267948966"},
+                                             {"run.t_end", "0.05"},
+                                             {"run.sample", "0.001"}});
+  const RunResult run = simulate(scene, scene.run);
+  ASSERT_EQ(run.status, RunStatus::finished);
+  const auto& samples = run.trajectory.samples;
+  EXPECT_GT(samples.front().closure[0].distance, 1e-4);
+  // The regulator acts on the geometric gap itself: it closes to round-off
+  // of the regulator's designed error, not only to first order.
+  EXPECT_LT(samples.back().closure[0].distance, 1e-9);
+  EXPECT_LT(samples.back().closure[0].angle, 1e-9);
+}
+
+TEST(LoopRegulator, MaxClosureFailsARunOnTheGeometricGap) {
+  // The pantograph's gap, held at the integrator's tolerance, reaches about
+  // 1e-11 m: a limit below that stops the run where it is first exceeded,
+  // at a step's end, with what was computed kept.
+  const Scene scene = test::scene_file("pantograph", {{"run.max_closure", "5e-12"}});
+  const RunResult run = simulate(scene, scene.run);
+  ASSERT_EQ(run.status, RunStatus::failed);
+  EXPECT_EQ(run.failure.check, "closure");
+  EXPECT_GT(run.failure.t, 0.0);
+  EXPECT_GT(run.peaks.gap_m.value, 5e-12);
+  EXPECT_NE(run.failure.reason.find("a loop opened by"), std::string::npos);
+  EXPECT_LE(run.trajectory.t_end(), run.failure.t);
+}
+
+TEST(LeaveOut, TreeSceneCarriesNoRegulatorState) {
+  const Scene scene = test::scene_file("zfold");
+  Dynamics dynamics(scene);
+  EXPECT_EQ(dynamics.layout().m, 0);
+  EXPECT_EQ(dynamics.size(), 2 * scene.model.nq);
+  EXPECT_EQ(dynamics.regulator(), nullptr);
+}
+
+TEST(LeaveOut, PlanarLoopCarriesThreeComponents) {
+  const Scene scene = test::scene_file("fourbar");
+  Dynamics dynamics(scene);
+  ASSERT_NE(dynamics.regulator(), nullptr);
+  EXPECT_EQ(dynamics.layout().m, 3);  // v_y, v_z, w_x: the in-plane ones
+  for (const LoopComponent& c : dynamics.regulator()->components()) EXPECT_TRUE(c.axis == 1 || c.axis == 2 || c.axis == 3);
+  EXPECT_EQ(dynamics.size(), 2 * scene.model.nq + 3);  // (q, p, u)
+}
+
+TEST(LeaveOut, PantographCarriesNineComponents) {
+  Dynamics dynamics(test::scene_file("pantograph"));
+  EXPECT_EQ(dynamics.layout().m, 9);
+  EXPECT_EQ(dynamics.size(), 31);  // (q, p, u): 11 + 11 + 9
+}
+
+TEST(LeaveOut, SceneWithoutLatchesHasNoEvents) {
+  const Scene scene = test::scene_file("double_pendulum");
+  Dynamics dynamics(scene);
+  EXPECT_EQ(dynamics.latch_count(), 0);
+  const RunResult run = simulate(scene, scene.run);
+  EXPECT_TRUE(run.trajectory.events.empty());
+}
+
+}  // namespace
+}  // namespace unfurl

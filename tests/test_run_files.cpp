@@ -1,0 +1,45 @@
+// The files a run writes and reads back: loads.csv has the columns the
+// scene has and reads back beside trajectory.csv into the same loads.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "run_files.hpp"
+#include "support.hpp"
+#include "trajectory_csv.hpp"
+
+namespace unfurl {
+namespace {
+
+TEST(LoadsFile, HasTheColumnsTheSceneHasAndReadsBack) {
+  // The pantograph: springs and latches on j1..j8 only, reactions on every
+  // joint, nine loop-force components.
+  namespace fs = std::filesystem;
+  const Scene scene = test::scene_file("pantograph", {{"run.t_end", "0.2"}, {"run.sample", "0.05"}});
+  const RunResult run = simulate(scene, scene.run);
+  const fs::path dir = fs::temp_directory_path() / ("unfurl_loads_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  app::write_trajectory_csv(scene, run.trajectory, (dir / "trajectory.csv").string());
+  app::write_loads_csv(scene, run.trajectory, (dir / "loads.csv").string());
+  std::ifstream in(dir / "loads.csv");
+  std::string header;
+  std::getline(in, header);
+  EXPECT_EQ(header.find("t,tau_spring.j1,tau_damper.j1,tau_latch.j1,reaction.j1.fx,"), 0u) << header;
+  EXPECT_EQ(header.find("tau_spring.j9"), std::string::npos) << "no spring on a cross pivot";
+  EXPECT_NE(header.find(",reaction.j9.mz,"), std::string::npos);
+  EXPECT_NE(header.find(",loop_force.A1.fy,loop_force.A1.fz,loop_force.A1.mx,"), std::string::npos) << header;
+  const Trajectory back = app::read_trajectory_csv(scene, (dir / "trajectory.csv").string());
+  ASSERT_EQ(back.samples.size(), run.trajectory.samples.size());
+  EXPECT_EQ(back.loop_components.size(), 9u);
+  for (std::size_t k = 0; k < back.samples.size(); ++k)
+    for (int j = 0; j < scene.model.size(); ++j) {
+      EXPECT_EQ(back.samples[k].loads.joints[j].reaction, run.trajectory.samples[k].loads.joints[j].reaction);
+      EXPECT_EQ(back.samples[k].loads.joints[j].spring, run.trajectory.samples[k].loads.joints[j].spring);
+    }
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace unfurl
