@@ -109,7 +109,10 @@ int command_render(const std::vector<std::string>& argv) {
                                               static_cast<float>(options.width) / options.height);
 
   std::unique_ptr<VideoPipe> video;
-  if (options.video) video = std::make_unique<VideoPipe>(*options.video, options.width, options.height, options.fps);
+  if (options.video) {
+    video = std::make_unique<VideoPipe>(*options.video, options.width, options.height, options.fps);
+    if (!video->note().empty()) std::fprintf(stderr, "unfurl render: %s\n", video->note().c_str());
+  }
   const bool write_frames = !args.has("--no-frames");
   Progress progress("rendering " + std::to_string(times.size()) + " frames", static_cast<double>(times.size()));
   render::Image image;

@@ -6,6 +6,7 @@
 
 #include "cli.hpp"
 #include "commands.hpp"
+#include "interrupt.hpp"
 #include "output_file.hpp"
 #include "progress.hpp"
 #include "run_files.hpp"
@@ -85,7 +86,9 @@ int command_simulate(const std::vector<std::string>& argv) {
   make_directory(dir);
 
   Progress progress("simulating " + scene.name, scene.run.t_end);
+  const InterruptScope interrupt;
   RunObserver observer;
+  observer.cancel = &interrupt.flag();
   if (!args.has("--quiet")) observer.on_progress = [&](const StepProgress& p) { progress.update(p.t); };
   const RunResult result = simulate(scene, scene.run, observer);
   progress.finish();
@@ -100,6 +103,11 @@ int command_simulate(const std::vector<std::string>& argv) {
     std::fprintf(stderr, "unfurl simulate: %s\n(the results up to t = %g s are written)\n",
                  describe(result.failure).c_str(), summary.t_reached);
     return 1;
+  }
+  if (result.status == RunStatus::cancelled) {
+    std::fprintf(stderr, "unfurl simulate: interrupted by %s at t = %g s\n(the results up to there are written)\n",
+                 interrupt.signal_name(), summary.t_reached);
+    return interrupt.exit_status();
   }
   return 0;
 }

@@ -1,5 +1,6 @@
 // unfurl: deployment simulator for spacecraft solar arrays and other jointed
 // mechanisms. `unfurl COMMAND --help` documents each command.
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -7,6 +8,7 @@
 
 #include "cli.hpp"
 #include "commands.hpp"
+#include "output_file.hpp"
 #include "unfurl/sim/scene_file.hpp"
 
 namespace {
@@ -34,6 +36,9 @@ int list_scenes() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Writes to a pipe whose reader died (ffmpeg) fail with EPIPE and become
+  // an error message instead of ending the process without one.
+  std::signal(SIGPIPE, SIG_IGN);
   std::vector<std::string> args(argv + 1, argv + argc);
   if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
     std::printf("%s", kUsage);
@@ -57,6 +62,9 @@ int main(int argc, char** argv) {
   } catch (const unfurl::app::UsageError& e) {
     std::fprintf(stderr, "unfurl %s: %s\n", command.c_str(), e.what());
     return 64;
+  } catch (const unfurl::app::OutputError& e) {
+    std::fprintf(stderr, "unfurl %s: %s\n", command.c_str(), e.what());
+    return 73;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "unfurl %s: %s\n", command.c_str(), e.what());
     return 1;

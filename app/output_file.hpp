@@ -3,9 +3,15 @@
 #pragma once
 
 #include <fstream>
+#include <stdexcept>
 #include <string>
 
 namespace unfurl::app {
+
+// An output file or directory that cannot be written (exit status 73).
+struct OutputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 class OutputFile {
  public:
@@ -15,7 +21,7 @@ class OutputFile {
   OutputFile& operator=(const OutputFile&) = delete;
 
   std::ostream& stream() { return out_; }
-  // Flushes and renames into place; throws std::runtime_error on failure.
+  // Flushes and renames into place; throws OutputError on failure.
   void commit();
 
  private:

@@ -20,9 +20,14 @@ class VideoPipe {
   void add(const render::Image& frame);
   // Waits for ffmpeg and moves the video into place; throws on failure.
   void finish();
+  // What the caller should tell the user about the video ("" or the padding
+  // of an odd size).
+  const std::string& note() const { return note_; }
 
  private:
-  std::string path_, temp_, log_;
+  std::string encoder_log() const;
+
+  std::string path_, temp_, log_, note_;
   FILE* pipe_ = nullptr;
 };
 

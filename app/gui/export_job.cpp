@@ -108,6 +108,7 @@ std::string ExportJob::result() {
   std::string what = std::to_string(times_.size()) + " frames";
   if (request_.frames) what += " in " + request_.dir;
   if (request_.options.video) what += ", video " + *request_.options.video;
+  if (video_ && !video_->note().empty()) what += " (" + video_->note() + ")";
   return "exported " + what;
 }
 

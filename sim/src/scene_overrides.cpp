@@ -27,7 +27,7 @@ void apply_override(YAML::Node& root, const Override& o, YamlFields& fields) {
       const bool numeric = !part.empty() && part.find_first_not_of("0123456789") == std::string::npos;
       for (std::size_t i = 0; i < cur.size(); ++i) {
         const YAML::Node item = cur[i];
-        if (numeric ? std::stoul(part) == i
+        if (numeric ? part == std::to_string(i)
                     : item.IsMap() && ((item["name"] && item["name"].Scalar() == part) ||
                                        (item["joint"] && item["joint"].Scalar() == part) ||
                                        (item["body"] && item["body"].Scalar() == part))) {
@@ -35,7 +35,9 @@ void apply_override(YAML::Node& root, const Override& o, YamlFields& fields) {
           break;
         }
       }
-      if (index == cur.size()) throw SceneError(origin + ": no element '" + part + "' in the list");
+      if (index == cur.size())
+        throw SceneError(origin + ": no element '" + part + "' in the list (it has " + std::to_string(cur.size()) +
+                         (numeric ? ", numbered from 0)" : "; give an index or a name)"));
       if (last) {
         cur[index] = value;
       } else {

@@ -10,6 +10,7 @@
 
 #include "scene_overrides.hpp"
 #include "scene_validation.hpp"
+#include "unfurl/sim/number_text.hpp"
 #include "unfurl/sim/scene_file.hpp"
 #include "yaml_fields.hpp"
 
@@ -19,6 +20,20 @@ namespace {
 
 // Reads one scene document into a Scene and its visuals, checking every
 // key and value.
+// Limits of what a scene may ask for (each error message names them).
+constexpr long kMostSteps = 1'000'000'000'000;
+constexpr double kLargestClosureTolerance = 0.05;
+
+// Whether one of two bodies is an ancestor of the other.
+bool on_one_branch(const Model& model, int a, int b) {
+  auto descends = [&](int child, int ancestor) {
+    for (int i = child; i >= 0; i = model.parent[i])
+      if (i == ancestor) return true;
+    return false;
+  };
+  return descends(a, b) || descends(b, a);
+}
+
 class SceneReader : private YamlFields {
  public:
   explicit SceneReader(std::string source) : YamlFields(std::move(source)) {}
@@ -38,6 +53,7 @@ class SceneReader : private YamlFields {
   void read_regulator(const YAML::Node& node, Scene& scene) const;
   void read_initial(const YAML::Node& node, Scene& scene) const;
   void read_run(const YAML::Node& node, RunSettings& run) const;
+  void check_run_size(const YAML::Node& node, const RunSettings& run) const;
 
   int joint_by_name(const YAML::Node& node, const Scene& scene, const std::string& field,
                     bool needs_coordinate) const;
@@ -76,7 +92,7 @@ Visual SceneReader::read_visual(const YAML::Node& node, const std::string& field
 
 void SceneReader::read_base(const YAML::Node& node, Scene& scene) {
   check_keys(node, {"name", "mesh", "velocity"}, "base");
-  if (node["name"]) scene.model.base_name = text(node["name"], "base.name");
+  if (node["name"]) scene.model.base_name = name(node["name"], "base.name");
   if (node["mesh"]) visuals_.base = read_visual(node["mesh"], "base.mesh");
   if (const YAML::Node v = node["velocity"]) {
     const std::vector<double> x = numbers(v, "base.velocity");
@@ -108,7 +124,7 @@ Joint SceneReader::read_joint(const YAML::Node& node, const std::string& field) 
   }
   j.parent_point = vec3(require(node, "parent_point", field), field + ".parent_point");
   j.child_point = vec3(require(node, "child_point", field), field + ".child_point");
-  if (node["name"]) j.name = text(node["name"], field + ".name");
+  if (node["name"]) j.name = name(node["name"], field + ".name");
   return j;
 }
 
@@ -116,7 +132,7 @@ void SceneReader::read_body(const YAML::Node& node, int index, const YAML::Node&
   std::string field = index_field("bodies", index);
   check_keys(node, {"name", "parent", "mass", "com", "inertia", "mesh", "joint"}, field);
   Body b;
-  b.name = text(require(node, "name", field), field + ".name");
+  b.name = name(require(node, "name", field), field + ".name");
   field += " (" + b.name + ")";
   Model& model = scene.model;
   if (model.find_body(b.name) != -2) fail(node["name"], field, "a body named '" + b.name + "' already exists");
@@ -149,10 +165,18 @@ void SceneReader::read_body(const YAML::Node& node, int index, const YAML::Node&
     b.inertia_com(0, 2) = b.inertia_com(2, 0) = I[4];
     b.inertia_com(1, 2) = b.inertia_com(2, 1) = I[5];
   }
-  const double smallest = Eigen::SelfAdjointEigenSolver<Mat3>(b.inertia_com).eigenvalues().minCoeff();
-  if (!(smallest > 0)) {
+  const Vec3 principal = Eigen::SelfAdjointEigenSolver<Mat3>(b.inertia_com).eigenvalues();
+  if (!(principal.minCoeff() > 0)) {
     std::ostringstream s;
-    s << "the inertia is not positive definite (smallest principal moment " << smallest << ")";
+    s << "the inertia is not positive definite (smallest principal moment " << principal.minCoeff() << ")";
+    fail(inertia, field + ".inertia", s.str());
+  }
+  // Every mass distribution has I1 + I2 >= I3 for its principal moments
+  // (equality for a flat body); allow round-off of the scene's digits.
+  if (principal[0] + principal[1] < principal[2] * (1 - 1e-6)) {
+    std::ostringstream s;
+    s << "no body has these principal moments (" << principal[0] << ", " << principal[1] << ", " << principal[2]
+      << "): the two smaller must add up to at least the largest";
     fail(inertia, field + ".inertia", s.str());
   }
 
@@ -260,10 +284,17 @@ void SceneReader::read_loops(const YAML::Node& list, Scene& scene) {
     Loop loop;
     loop.body = body_by_name(require(l, "body", field), scene, field + ".body");
     loop.image = body_by_name(require(l, "image", field), scene, field + ".image");
-    loop.name = l["name"] ? text(l["name"], field + ".name") : scene.model.bodies[loop.body].name;
+    loop.name = l["name"] ? name(l["name"], field + ".name") : scene.model.bodies[loop.body].name;
     if (loop.body == loop.image) fail(l["image"], field + ".image", "a body cannot be its own image");
-    for (const Loop& other : scene.loops)
+    if (on_one_branch(scene.model, loop.body, loop.image))
+      fail(l["image"], field + ".image",
+           "'" + scene.model.bodies[loop.image].name + "' and '" + scene.model.bodies[loop.body].name +
+               "' lie on one branch of the tree (one is the other's ancestor): they do not close a loop");
+    for (const Loop& other : scene.loops) {
       if (other.name == loop.name) fail(l, field + ".name", "a loop named '" + loop.name + "' already exists");
+      if (other.body == loop.body || other.image == loop.image || other.body == loop.image || other.image == loop.body)
+        fail(l, field, "this loop shares a split body with loop '" + other.name + "' (each loop splits a body of its own)");
+    }
     scene.loops.push_back(loop);
     loop_nodes_.push_back(l);
   }
@@ -322,7 +353,7 @@ void SceneReader::read_initial(const YAML::Node& node, Scene& scene) const {
 void SceneReader::read_run(const YAML::Node& node, RunSettings& run) const {
   check_keys(node,
              {"t_end", "integrator", "linear_solver", "rtol", "atol", "dt", "sample", "max_closure", "event_window",
-              "max_steps", "max_wall_time"},
+              "max_steps", "max_samples", "max_wall_time"},
              "run");
   if (node["t_end"]) run.t_end = positive(node["t_end"], "run.t_end");
   if (const YAML::Node integrator = node["integrator"]) {
@@ -351,17 +382,33 @@ void SceneReader::read_run(const YAML::Node& node, RunSettings& run) const {
   if (node["max_closure"]) run.max_closure = positive(node["max_closure"], "run.max_closure");
   if (node["event_window"]) run.event_window = non_negative(node["event_window"], "run.event_window");
   if (node["max_wall_time"]) run.max_wall_time = positive(node["max_wall_time"], "run.max_wall_time");
-  if (node["max_steps"]) run.max_steps = static_cast<long>(positive(node["max_steps"], "run.max_steps"));
+  if (node["max_steps"]) run.max_steps = count(node["max_steps"], "run.max_steps", 1, kMostSteps);
+  if (node["max_samples"]) run.max_samples = count(node["max_samples"], "run.max_samples", 1, kMostSteps);
+  check_run_size(node, run);
+}
+
+// Refuses up front what cannot finish or cannot be stored: more samples
+// than max_samples, or more fixed RK4 steps than max_steps.
+void SceneReader::check_run_size(const YAML::Node& node, const RunSettings& run) const {
+  const YAML::Node at = node["sample"] ? node["sample"] : node;
+  if (run.sample > run.t_end)
+    fail(at, "run.sample",
+         "the output interval " + format_number(run.sample) + " s is longer than the run (t_end " +
+             format_number(run.t_end) + " s)");
+  const double samples = run.t_end / run.sample + 1;
+  if (samples > static_cast<double>(run.max_samples))
+    fail(at, "run.sample",
+         "t_end / sample makes " + format_number(samples) + " samples, more than run.max_samples (" +
+             std::to_string(run.max_samples) + "); raise it if the memory is there");
+  const double steps = run.t_end / run.dt;
+  if (run.integrator == IntegratorKind::rk4 && steps > static_cast<double>(run.max_steps))
+    fail(node["dt"] ? node["dt"] : node, "run.dt",
+         "t_end / dt makes " + format_number(steps) + " fixed steps, more than run.max_steps (" +
+             std::to_string(run.max_steps) + ")");
 }
 
 SceneFile SceneReader::read(const std::string& text_in, const std::vector<Override>& overrides) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(text_in);
-  } catch (const YAML::ParserException& e) {
-    throw SceneError(source() + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) +
-                     ": YAML syntax error: " + e.msg);
-  }
+  YAML::Node root = load_document(text_in);
   if (!root.IsMap()) throw SceneError(source() + ": a scene file is a YAML mapping (name, bodies, ...)");
   for (const Override& o : overrides) apply_override(root, o, *this);
 
@@ -383,6 +430,9 @@ SceneFile SceneReader::read(const std::string& text_in, const std::vector<Overri
   if (!bodies.IsSequence() || bodies.size() == 0) fail(bodies, "bodies", "expected a non-empty list of bodies");
   for (std::size_t i = 0; i < bodies.size(); ++i) read_body(bodies[i], static_cast<int>(i), bodies, scene);
   scene.model.finalize();
+  if (scene.model.nq == 0)
+    fail(bodies, "bodies", "every joint is fixed: there is nothing to move or integrate (give a joint a type "
+                           "that moves)");
 
   if (root["springs"]) read_springs(root["springs"], scene);
   scene.dampers_from = scene.springs.size();
@@ -395,9 +445,14 @@ SceneFile SceneReader::read(const std::string& text_in, const std::vector<Overri
   scene.dq0.assign(scene.model.nq, 0.0);
   if (root["initial"]) read_initial(root["initial"], scene);
   if (scene.dq0.size() != static_cast<std::size_t>(scene.model.nq)) scene.dq0.assign(scene.model.nq, 0.0);
-  if (root["closure_tolerance"])
+  if (root["closure_tolerance"]) {
     scene.closure_tolerance = positive(root["closure_tolerance"], "closure_tolerance");
-  if (root["run"]) read_run(root["run"], scene.run);
+    if (scene.closure_tolerance > kLargestClosureTolerance)
+      fail(root["closure_tolerance"], "closure_tolerance",
+           "at most " + format_number(kLargestClosureTolerance) +
+               " m or rad: a loop opener than that is not a loop (the regulator would snap it shut)");
+  }
+  read_run(root["run"] ? root["run"] : YAML::Node(YAML::NodeType::Map), scene.run);
   check_loops_close(scene, loop_nodes_, *this);
   return {scene, visuals_};
 }

@@ -1,6 +1,7 @@
 #include "yaml_fields.hpp"
 
 #include <cmath>
+#include <set>
 
 #include "unfurl/sim/scene_file.hpp"
 
@@ -19,6 +20,19 @@ bool contains(const YAML::Node& haystack, const YAML::Node& needle) {
   return false;
 }
 
+// Throws at the second occurrence of a key in any mapping under `node`.
+void check_unique_keys(const YAML::Node& node, const YamlFields& fields) {
+  if (node.IsSequence())
+    for (const YAML::Node& item : node) check_unique_keys(item, fields);
+  if (!node.IsMap()) return;
+  std::set<std::string> seen;
+  for (const auto& item : node) {
+    if (item.first.IsScalar() && !seen.insert(item.first.Scalar()).second)
+      fields.fail(item.first, "", "the key '" + item.first.Scalar() + "' is given twice in one mapping");
+    check_unique_keys(item.second, fields);
+  }
+}
+
 }  // namespace
 
 std::string index_field(const std::string& list, std::size_t i) {
@@ -35,6 +49,21 @@ std::string YamlFields::where(const YAML::Node& at) const {
 
 void YamlFields::fail(const YAML::Node& at, const std::string& field, const std::string& what) const {
   throw SceneError(where(at) + ": " + (field.empty() ? "" : field + ": ") + what);
+}
+
+YAML::Node YamlFields::load_document(const std::string& text) const {
+  std::vector<YAML::Node> documents;
+  try {
+    documents = YAML::LoadAll(text);
+  } catch (const YAML::ParserException& e) {
+    throw SceneError(source_ + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) +
+                     ": YAML syntax error: " + e.msg);
+  }
+  if (documents.empty()) throw SceneError(source_ + ": the scene file is empty");
+  if (documents.size() > 1)
+    fail(documents[1], "", "a second YAML document; a scene file holds one (remove the '---' line or split the file)");
+  check_unique_keys(documents[0], *this);
+  return documents[0];
 }
 
 void YamlFields::check_map(const YAML::Node& node, const std::string& field) const {
@@ -70,7 +99,17 @@ double YamlFields::number(const YAML::Node& node, const std::string& field) cons
     fail(node, field, "expected a number, got '" + node.Scalar() + "'");
   }
   if (!std::isfinite(x)) fail(node, field, "must be a finite number, got '" + node.Scalar() + "'");
+  if (std::abs(x) > kLargestMagnitude)
+    fail(node, field, node.Scalar() + " is beyond +-1e15, where products of the scene's values overflow");
   return x;
+}
+
+long YamlFields::count(const YAML::Node& node, const std::string& field, long lo, long hi) const {
+  const double x = number(node, field);
+  if (x != std::floor(x) || x < static_cast<double>(lo) || x > static_cast<double>(hi))
+    fail(node, field,
+         "expected a whole number from " + std::to_string(lo) + " to " + std::to_string(hi) + ", got " + node.Scalar());
+  return static_cast<long>(x);
 }
 
 double YamlFields::number_or(const YAML::Node& map, const char* key, double fallback,
@@ -89,6 +128,15 @@ double YamlFields::non_negative(const YAML::Node& node, const std::string& field
   const double x = number(node, field);
   if (x < 0) fail(node, field, "must not be negative, got " + node.Scalar());
   return x;
+}
+
+std::string YamlFields::name(const YAML::Node& node, const std::string& field) const {
+  const std::string n = text(node, field);
+  if (n.empty() || n.size() > 64 ||
+      n.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-") != std::string::npos)
+    fail(node, field,
+         "the name '" + n + "' has characters other than letters, digits, '_' and '-' (or is empty or over 64)");
+  return n;
 }
 
 std::string YamlFields::text(const YAML::Node& node, const std::string& field) const {

@@ -18,6 +18,10 @@ namespace unfurl {
 // "list[i]".
 std::string index_field(const std::string& list, std::size_t i);
 
+// Numbers beyond this magnitude are refused: products of a few of them (a
+// mass, a gravity, an offset, an inertia) would overflow a double.
+inline constexpr double kLargestMagnitude = 1e15;
+
 class YamlFields {
  public:
   using Keys = std::initializer_list<const char*>;
@@ -32,6 +36,11 @@ class YamlFields {
   std::string where(const YAML::Node& at) const;
   const std::string& source() const { return source_; }
 
+  // The one YAML document in `text`. Throws SceneError with the line for a
+  // syntax error, a second document, or a key given twice in one mapping
+  // (YAML leaves both to the reader; one would silently win).
+  YAML::Node load_document(const std::string& text) const;
+
   void check_keys(const YAML::Node& map, Keys allowed, const std::string& field) const;
   void check_map(const YAML::Node& node, const std::string& field) const;
   YAML::Node require(const YAML::Node& map, const char* key, const std::string& field) const;
@@ -40,6 +49,11 @@ class YamlFields {
   double positive(const YAML::Node& node, const std::string& field) const;
   double non_negative(const YAML::Node& node, const std::string& field) const;
   std::string text(const YAML::Node& node, const std::string& field) const;
+  // A body, joint or loop name: letters, digits, '_' and '-', so that it can
+  // stand in a CSV header, a --set path and a file name as it is.
+  std::string name(const YAML::Node& node, const std::string& field) const;
+  // A whole number in [lo, hi].
+  long count(const YAML::Node& node, const std::string& field, long lo, long hi) const;
   bool flag(const YAML::Node& node, const std::string& field) const;
   std::vector<double> numbers(const YAML::Node& node, const std::string& field) const;
   Vec3 vec3(const YAML::Node& node, const std::string& field) const;

@@ -31,6 +31,9 @@ struct RunSettings {
   double dt = 1e-4;     // step of the fixed-step RK4
   double sample = 0.01; // output interval
   long max_steps = 50'000'000;
+  // A run that would store more samples (t_end / sample) is refused before
+  // it starts: a sample of a large array holds kilobytes.
+  long max_samples = 1'000'000;
   // The run fails ("time budget") when it has taken longer than this, in
   // seconds of wall time; 0: no limit.
   double max_wall_time = 0;
