@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <set>
+#include <sstream>
 
 #include "unfurl/sim/scene_file.hpp"
 
@@ -33,6 +34,29 @@ void check_unique_keys(const YAML::Node& node, const YamlFields& fields) {
   }
 }
 
+// A document marker at the start of a line ("---" or "...", then a space or
+// the line's end) after some content starts a second document. Found on the
+// text because yaml-cpp 0.7's LoadAll never returns on some inputs (",0").
+// (Inside a block scalar such a line would be indented; in a quoted scalar
+// YAML forbids it.)
+void check_single_document(const std::string& text, const std::string& source) {
+  std::istringstream lines(text);
+  bool content = false, ended = false;
+  int number = 0;
+  for (std::string line; std::getline(lines, line);) {
+    ++number;
+    const bool start = line.rfind("---", 0) == 0, end = line.rfind("...", 0) == 0;
+    const bool marker = (start || end) && (line.size() == 3 || line[3] == ' ' || line[3] == '\t' || line[3] == '\r');
+    const auto first = line.find_first_not_of(" \t\r");
+    const bool blank = first == std::string::npos || line[first] == '#';
+    if ((marker && start && content) || (!marker && !blank && ended))
+      throw SceneError(source + ":" + std::to_string(number) +
+                       ":1: a second YAML document; a scene file holds one (remove the '---' line or split the file)");
+    if (marker && end) ended = content;
+    if (!marker && !blank && line[first] != '%') content = true;
+  }
+}
+
 }  // namespace
 
 std::string index_field(const std::string& list, std::size_t i) {
@@ -52,18 +76,17 @@ void YamlFields::fail(const YAML::Node& at, const std::string& field, const std:
 }
 
 YAML::Node YamlFields::load_document(const std::string& text) const {
-  std::vector<YAML::Node> documents;
+  check_single_document(text, source_);
+  YAML::Node document;
   try {
-    documents = YAML::LoadAll(text);
+    document = YAML::Load(text);
   } catch (const YAML::ParserException& e) {
     throw SceneError(source_ + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) +
                      ": YAML syntax error: " + e.msg);
   }
-  if (documents.empty()) throw SceneError(source_ + ": the scene file is empty");
-  if (documents.size() > 1)
-    fail(documents[1], "", "a second YAML document; a scene file holds one (remove the '---' line or split the file)");
-  check_unique_keys(documents[0], *this);
-  return documents[0];
+  if (!document || document.IsNull()) throw SceneError(source_ + ": the scene file is empty or holds no YAML mapping");
+  check_unique_keys(document, *this);
+  return document;
 }
 
 void YamlFields::check_map(const YAML::Node& node, const std::string& field) const {
