@@ -98,5 +98,36 @@ TEST(Gui, ScriptedSessionPlaysScrubsChangesAPreloadAndReruns) {
   std::printf("%s\n", report.c_str());
 }
 
+// Opening another scene while a run of the first is still going: the old
+// run is neither drawn with the new scene's indices nor kept as its ghost
+// (it crashed the loop-gap and energy plots).
+TEST(Gui, OpeningAnotherSceneDropsThePreviousScenesRuns) {
+  if (!app::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
+  const fs::path dir = fs::temp_directory_path() / ("unfurl_gui_open_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "session.txt") << "wait_run\n"
+                                        "plot energy\n"
+                                        "set springs.0.free_position 1.0\n"
+                                        "open pantograph\n"
+                                        "plot loop\n"
+                                        "wait 0.3\n"
+                                        "plot energy\n"
+                                        "wait 0.3\n"
+                                        "plot all\n"
+                                        "wait_run\n"
+                                        "wait 0.3\n"
+                                        "report " << (dir / "opened.json").string() << "\n"
+                                        "quit\n";
+  const std::string command = "timeout 300 xvfb-run -a -s '-screen 0 1280x800x24' " + std::string(UNFURL_BINARY) +
+                              " gui zfold --script " + (dir / "session.txt").string() + " > " +
+                              (dir / "log.txt").string() + " 2>&1";
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << slurp(dir / "log.txt");
+  const std::string report = slurp(dir / "opened.json");
+  EXPECT_FALSE(std::isnan(latch_time(report, "current", "j8"))) << report;  // the pantograph's own run
+  EXPECT_TRUE(std::isnan(latch_time(report, "previous", "j1"))) << "the z-fold's run became the ghost: " << report;
+}
+
 }  // namespace
 }  // namespace unfurl

@@ -83,12 +83,14 @@ bool GuiApp::load_and_run(const std::string& name) {
     state_.scene_error.clear();
     view_ = std::move(view);
     meshes_ = std::move(meshes);
+    start_run();
     if (!same_scene) {
       state_.camera_fitted = false;
       state_.play_time = 0;
+      state_.scene_first_generation = state_.requested_generation;
+      state_.trajectory = Trajectory{};
       state_.ghost = Trajectory{};
     }
-    start_run();
     return true;
   } catch (const std::exception& e) {
     state_.scene_error = e.what();
@@ -101,6 +103,12 @@ void GuiApp::start_run() { state_.requested_generation = worker_.run(state_.scen
 void GuiApp::sync_run() {
   const long before = state_.generation;
   state_.progress = worker_.sync(state_.generation, state_.trajectory, state_.ghost);
+  if (state_.generation < state_.scene_first_generation) {
+    // The previous scene's run, still winding down: not this scene's.
+    state_.trajectory = Trajectory{};
+    state_.ghost = Trajectory{};
+    return;
+  }
   if (state_.generation != before && state_.ghost.samples.size() < 2) state_.ghost = Trajectory{};
 }
 

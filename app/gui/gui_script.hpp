@@ -14,6 +14,8 @@
 //   export DIR FROM TO FPS [VIDEO.mp4]   frames (and video) of a range
 //   wait_export           until the export has finished
 //   report FILE.json      the state: runs and their latch times, frame rate
+//   open SCENE            another scene (a path or a built-in name)
+//   plot NAME             the plot tab whose name starts with NAME, or all
 //   quit
 //
 // Blank lines and lines starting with # are skipped.

@@ -68,6 +68,10 @@ struct GuiState {
   // The runs: the current one as far as computed, and the previous one.
   long generation = -1;
   long requested_generation = 0;
+  // The first run of the scene on show: runs before it belong to another
+  // scene (other bodies, other coordinates) and are neither drawn nor kept
+  // as the ghost.
+  long scene_first_generation = 0;
   Trajectory trajectory;
   Trajectory ghost;
   RunProgress progress;

@@ -1,6 +1,7 @@
 #include "script_runner.hpp"
 
 #include "session_report.hpp"
+#include "unfurl/render/trajectory_plots.hpp"
 
 namespace unfurl::app {
 
@@ -47,6 +48,17 @@ void ScriptRunner::step(ScriptTarget& target, double now) {
       if (c.args.size() > 4) e.options.video = arg(4);
       r.export_range = e;
       target.request(r);
+    } else if (c.name == "open") {
+      Requests r;
+      r.open = arg(0);
+      target.request(r);
+    } else if (c.name == "plot") {
+      // The tab whose name starts with the word ("loop" for "loop gaps"), or
+      // "all".
+      const std::vector<render::PlotKind> kinds = render::plot_kinds(state.scene);
+      state.plot_tab = static_cast<int>(kinds.size());
+      for (std::size_t k = 0; k < kinds.size(); ++k)
+        if (std::string(render::plot_kind_name(kinds[k])).rfind(arg(0), 0) == 0) state.plot_tab = static_cast<int>(k);
     } else if (c.name == "report") {
       write_session_report(state, arg(0));
     } else if (c.name == "quit") {
