@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "unfurl/render/frame_renderer.hpp"
 #include "unfurl/render/gl_context.hpp"
+#include "interrupt.hpp"
 #include "output_file.hpp"
 #include "png_file.hpp"
 #include "progress.hpp"
@@ -85,12 +86,16 @@ int command_render(const std::vector<std::string>& argv) {
   const bool quiet = args.has("--quiet");
 
   int exit_code = 0;
+  // Ctrl+C stops the simulation or the frames where they are; what was
+  // computed is drawn and the video is finished with the frames so far.
+  const InterruptScope interrupt;
   Trajectory trajectory;
   if (const auto path = args.get("--trajectory")) {
     trajectory = read_trajectory_csv(scene, *path);
   } else {
     Progress progress("simulating " + scene.name, scene.run.t_end);
     RunObserver observer;
+    observer.cancel = &interrupt.flag();
     if (!quiet) observer.on_progress = [&](const StepProgress& p) { progress.update(p.t); };
     RunResult run = simulate(scene, scene.run, observer);
     progress.finish();
@@ -119,7 +124,8 @@ int command_render(const std::vector<std::string>& argv) {
   std::vector<double> q;
   std::vector<Pose> poses;
   const auto start = std::chrono::steady_clock::now();
-  for (std::size_t k = 0; k < times.size(); ++k) {
+  std::size_t drawn = 0;
+  for (std::size_t k = 0; k < times.size() && !interrupt.flag().load(); ++k, ++drawn) {
     trajectory.coordinates_at(times[k], q);
     body_poses(scene.model, q.data(), poses);
     renderer.frame(poses, times[k], camera, image);
@@ -132,7 +138,7 @@ int command_render(const std::vector<std::string>& argv) {
     if (!quiet) progress.update(static_cast<double>(k + 1));
   }
   progress.finish();
-  if (write_frames) remove_stale_frames(dir, times.size());
+  if (write_frames) remove_stale_frames(dir, drawn);
   if (video) video->finish();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -155,6 +161,11 @@ int command_render(const std::vector<std::string>& argv) {
                 write_frames ? (", " + dir + "/frame_*.png").c_str() : " (not written)");
     if (video) std::printf("video        %s\n", options.video->c_str());
     for (const std::string& p : plots) std::printf("plot         %s\n", p.c_str());
+  }
+  if (interrupt.signal()) {
+    std::fprintf(stderr, "unfurl render: interrupted by %s (%zu of %zu frames drawn, up to t = %g s computed)\n",
+                 interrupt.signal_name(), drawn, times.size(), trajectory.t_end());
+    return interrupt.exit_status();
   }
   return exit_code;
 }
