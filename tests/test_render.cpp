@@ -286,5 +286,27 @@ TEST(RenderCommand, WritesFramesPlotsAndAVideoWithTheExpectedFrameCount) {
   EXPECT_EQ(std::atoi(buf), 11);
 }
 
+// H.264 needs even sizes: an odd one is padded by a pixel and said so, not a
+// silent exit 141 (SIGPIPE) with .partial files left behind.
+TEST(RenderCommand, OddVideoSizeIsPaddedAndSaid) {
+  if (!app::on_path("ffmpeg") || !app::on_path("ffprobe")) GTEST_SKIP() << "ffmpeg is not installed";
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("unfurl_render_odd_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  const std::string video = (dir / "odd.mp4").string();
+  const test::CommandOutcome o = test::run_command(std::string(UNFURL_BINARY) +
+                                                   " render pendulum --t-end 0.5 --fps 10 --size 641x361 --no-frames"
+                                                   " --quiet --video " + video + " --out " + dir.string());
+  ASSERT_EQ(o.code, 0) << o.output;
+  EXPECT_NE(o.output.find("the video is 642x362"), std::string::npos) << o.output;
+  FILE* pipe = popen(("ffprobe -v error -show_entries stream=width,height -of csv=p=0 " + video).c_str(), "r");
+  char buf[64] = {0};
+  ASSERT_NE(std::fgets(buf, sizeof buf, pipe), nullptr);
+  pclose(pipe);
+  EXPECT_EQ(std::string(buf), "642,362\n");
+  for (const auto& entry : fs::directory_iterator(dir))
+    EXPECT_EQ(entry.path().string().find(".partial"), std::string::npos) << entry.path();
+}
+
 }  // namespace
 }  // namespace unfurl
