@@ -20,7 +20,6 @@ class ArkodeIntegrator : public Integrator {
   ~ArkodeIntegrator() override;
 
   StepOutcome step(double t_stop) override;
-  double span_begin() const override { return span_end() - last_step(); }
   double span_end() const override;
   void interpolate(double t, double* y) override;
   void interpolate_rate(double t, double* ydot) override;

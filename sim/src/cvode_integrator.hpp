@@ -18,7 +18,6 @@ class CvodeIntegrator : public Integrator {
   ~CvodeIntegrator() override;
 
   StepOutcome step(double t_stop) override;
-  double span_begin() const override { return span_end() - last_step(); }
   double span_end() const override;
   void interpolate(double t, double* y) override;
   void interpolate_rate(double t, double* ydot) override;

@@ -50,7 +50,7 @@ class Integrator {
   virtual StepOutcome step(double t_stop) = 0;
   // The span over which the interpolant serves: the last step taken (after
   // a root return it reaches past the root).
-  virtual double span_begin() const = 0;
+  virtual double span_begin() const { return span_end() - last_step(); }
   virtual double span_end() const = 0;
   // The state at a time inside the span, by the method's interpolant, and
   // its time derivative.
