@@ -4,6 +4,7 @@
 
 #include "scaling_files.hpp"
 #include "stability_files.hpp"
+#include "study_files.hpp"
 #include "work_precision_files.hpp"
 
 namespace unfurl::app {
@@ -12,7 +13,7 @@ namespace {
 
 std::vector<std::string> no_plots() {
   static bool said = false;
-  if (!said) std::fprintf(stderr, "unfurl report: no plots: this unfurl was built without the renderer\n");
+  if (!said) std::fprintf(stderr, "unfurl: no plots: this unfurl was built without the renderer\n");
   said = true;
   return {};
 }
@@ -24,5 +25,6 @@ std::vector<std::string> write_work_precision_plots(const Scene&, const WorkPrec
 }
 std::vector<std::string> write_scaling_plots(const ScalingReport&, const std::string&) { return no_plots(); }
 std::vector<std::string> write_stability_plots(const StabilityReport&, const std::string&) { return no_plots(); }
+std::vector<std::string> write_study_plots(const StudyReport&, const std::string&) { return no_plots(); }
 
 }  // namespace unfurl::app

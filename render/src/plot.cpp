@@ -341,7 +341,7 @@ PlotFrame draw_plot(ImDrawList* draw, ImVec2 origin, ImVec2 size, const PlotSpec
       if (s.markers)
         for (std::size_t k = 0; k < s.x.size(); ++k)
           if (plottable(s.x[k], s.y[k], f.log_x, f.log_y)) draw->AddCircleFilled(f.to_screen(s.x[k], s.y[k]), 0.3f * font, color);
-      if (points.size() < 2) continue;
+      if (!s.lines || points.size() < 2) continue;
       if (s.dashed)
         dashed_polyline(draw, points, color, s.ghost ? 1.5f : 2.0f, 0.5f * font);
       else

@@ -18,6 +18,7 @@ struct Series {
   bool ghost = false;  // a previous run, drawn faint, not in the legend
   bool dashed = false;  // a second quantity of the same thing (an angle beside a distance)
   bool markers = false;  // a dot at every point (a few measured points, not a signal)
+  bool lines = true;     // false: the dots alone (a scatter plot)
 };
 
 struct PlotSpec {

@@ -27,6 +27,15 @@ struct Override {
 // Parses "path=value"; throws SceneError when there is no '='.
 Override parse_override(const std::string& assignment);
 
+// The paths a pattern stands for: each `*` in `path` ranges over the
+// elements of a list, named as a --set path names them ("springs.*.stiffness"
+// -> "springs.j1.stiffness", ...). Throws SceneError when none exists.
+std::vector<std::string> expand_scene_path(const std::string& text, const std::string& source,
+                                           const std::string& path);
+// The number at a --set path of a scene's text; throws SceneError when
+// there is none.
+double scene_number(const std::string& text, const std::string& source, const std::string& path);
+
 struct SceneFile {
   Scene scene;
   SceneVisuals visuals;

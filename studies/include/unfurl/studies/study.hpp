@@ -1,0 +1,69 @@
+// A deployment study (`unfurl sweep`): one scene, the values that vary (by
+// their --set paths) and the failures to inject, each case one independent
+// run. The file format is documented in assets/studies/README.md.
+#pragma once
+
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "unfurl/sim/scene_file.hpp"
+
+namespace unfurl {
+
+// One varied scene value. Lists and grids give its values; distributions
+// draw it per case. A `scale` variable multiplies the scene's value.
+struct StudyVariable {
+  enum class Kind { values, grid, uniform, normal, lognormal };
+  std::string path;    // a --set path; springs.J.preload is the preload factor
+  Kind kind = Kind::values;
+  std::vector<double> values;  // values, or the grid's points
+  double a = 0, b = 0;         // uniform: min, max; normal: mean, sigma; lognormal: mu, sigma of ln
+  double lo = -std::numeric_limits<double>::infinity();  // truncation (normal, lognormal)
+  double hi = std::numeric_limits<double>::infinity();
+  bool scale = false;
+  double nominal = 0;  // the scene's value (1 for a preload factor)
+
+  bool random() const { return kind == Kind::uniform || kind == Kind::normal || kind == Kind::lognormal; }
+  // The column name in cases.csv.
+  std::string label() const;
+  // Whether the path is the virtual preload factor of a spring.
+  bool is_preload() const;
+};
+
+// A fault injected into the nominal scene, one case each.
+struct StudyFailure {
+  enum class Kind { latch_fails, spring_breaks, preload_loss, stuck };
+  Kind kind = Kind::latch_fails;
+  std::string joint;
+  double fraction = 0;  // preload_loss: the part of the preload lost
+
+  // "latch-j3-fails", used in the case id.
+  std::string id() const;
+  // "latch j3 never engages", for the tables.
+  std::string describe() const;
+};
+
+struct Study {
+  std::string source;        // the study file
+  std::string scene;         // as the file names it
+  std::string scene_text;    // the scene's YAML
+  std::string scene_source;  // where it came from (a path, or "built-in NAME")
+  std::vector<Override> settings;  // the study's fixed --set values (run settings, ...)
+  std::vector<StudyVariable> variables;  // `*` paths expanded
+  bool zip = false;          // lists and grids: element by element, not every combination
+  unsigned long seed = 1;
+  long runs = 0;             // random cases
+  std::vector<StudyFailure> failures;
+  std::string overlay_joint; // the joint whose angle every case draws on one plot
+};
+
+// Reads a study file; errors (SceneError) name the file, line, column and
+// field, as for scenes.
+Study read_study_file(const std::string& path);
+Study read_study_text(const std::string& text, const std::string& source, const std::string& directory);
+
+// The nominal scene with the study's settings.
+SceneFile nominal_scene(const Study& study);
+
+}  // namespace unfurl

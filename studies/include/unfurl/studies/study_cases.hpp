@@ -1,0 +1,28 @@
+// The cases of a study: the nominal case first, then every combination (or
+// zip) of the lists and grids, or `runs` random draws, then one case per
+// failure. A case's id and values depend only on the study file, never on
+// the order in which cases run: random case k draws from its own generator
+// seeded by (seed, k), so a study can be resumed or spread over processes.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "unfurl/studies/study.hpp"
+
+namespace unfurl {
+
+struct StudyCase {
+  std::string id;              // "nominal", "case-0042", "fail-latch-j3"
+  std::vector<double> inputs;  // per variable, the value it takes
+  std::optional<StudyFailure> failure;
+};
+
+std::vector<StudyCase> study_cases(const Study& study);
+
+// The scene of one case: the study's scene with its settings, the case's
+// values and its failure applied.
+Scene case_scene(const Study& study, const StudyCase& c);
+
+}  // namespace unfurl

@@ -1,0 +1,147 @@
+#include "unfurl/studies/case_result.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace unfurl {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr std::size_t kOverlayPoints = 400;
+
+std::vector<std::string> latch_joints(const Scene& scene) {
+  std::vector<std::string> names;
+  for (const Latch& l : scene.latches) names.push_back(scene.model.joints[l.joint].name);
+  return names;
+}
+
+// The case scene's latch on `joint` that the nominal scene also has (a
+// stuck hinge's stop comes after them), or -1.
+int case_latch(const Scene& scene, const std::string& joint) {
+  for (int l = 0; l < static_cast<int>(scene.latches.size()); ++l)
+    if (scene.model.joints[scene.latches[l].joint].name == joint) return l;
+  return -1;
+}
+
+double engagement_time(const Trajectory& tr, int latch) {
+  for (const LatchEvent& e : tr.events)
+    if (e.latch == latch) return e.t;
+  return kNaN;
+}
+
+void record_overlay(const Study& study, const Scene& scene, const Trajectory& tr, CaseResult& r) {
+  int joint = 0;
+  while (scene.model.joints[joint].name != study.overlay_joint) ++joint;
+  const int index = tr.layout.q() + scene.model.coordinate[joint];
+  const std::size_t stride = std::max<std::size_t>(1, (tr.samples.size() + kOverlayPoints - 1) / kOverlayPoints);
+  for (std::size_t k = 0; k < tr.samples.size(); k += stride) {
+    r.angle_t.push_back(tr.samples[k].t);
+    r.angle.push_back(tr.samples[k].y[index]);
+  }
+}
+
+}  // namespace
+
+const char* case_status_name(CaseStatus status) {
+  switch (status) {
+    case CaseStatus::deployed: return "deployed";
+    case CaseStatus::not_deployed: return "not deployed";
+    case CaseStatus::failed: return "failed";
+  }
+  return "?";
+}
+
+const std::vector<std::string>& CaseColumns::headline() {
+  static const std::vector<std::string> names{"deployment_time_s", "peak_latch_torque_Nm", "peak_hinge_force_N",
+                                              "peak_hinge_moment_Nm", "max_gap_m", "final_energy_J"};
+  return names;
+}
+
+CaseColumns case_columns(const Study& study, const Scene& nominal) {
+  CaseColumns c;
+  for (const StudyVariable& v : study.variables) c.inputs.push_back(v.label());
+  c.outputs = CaseColumns::headline();
+  c.outputs.push_back("max_gap_rad");
+  for (const std::string& j : latch_joints(nominal)) c.outputs.push_back("latch_time_s." + j);
+  for (const std::string& j : latch_joints(nominal)) c.outputs.push_back("latch_torque_Nm." + j);
+  for (const Joint& j : nominal.model.joints) c.outputs.push_back("hinge_force_N." + j.name);
+  for (const Joint& j : nominal.model.joints) c.outputs.push_back("hinge_moment_Nm." + j.name);
+  c.outputs.push_back("steps");
+  c.outputs.push_back("wall_time_s");
+  return c;
+}
+
+CaseRun simulate_case(const Study& study, const StudyCase& c, const std::atomic<bool>* cancel) {
+  CaseRun out{case_scene(study, c), {}};
+  RunObserver observer;
+  observer.cancel = cancel;
+  out.run = simulate(out.scene, out.scene.run, observer);
+  return out;
+}
+
+CaseResult case_result(const Study& study, const Scene& nominal, const StudyCase& c, const CaseRun& run) {
+  const Scene& scene = run.scene;
+  const RunResult& rr = run.run;
+  const Trajectory& tr = rr.trajectory;
+  CaseResult r;
+  r.id = c.id;
+  r.failure = c.failure ? c.failure->describe() : "";
+  r.inputs = c.inputs;
+
+  std::vector<double> times, torques;
+  std::string unlatched;
+  for (const std::string& joint : latch_joints(nominal)) {
+    const int l = case_latch(scene, joint);
+    times.push_back(l < 0 ? kNaN : engagement_time(tr, l));
+    torques.push_back(l < 0 ? kNaN : rr.peaks.latch_torque[l].value);
+    if (std::isnan(times.back())) unlatched += (unlatched.empty() ? "" : ", ") + joint;
+  }
+  if (rr.status == RunStatus::failed) {
+    r.status = CaseStatus::failed;
+    r.reason = describe(rr.failure);
+  } else if (!unlatched.empty()) {
+    r.status = CaseStatus::not_deployed;
+    r.reason = "never latched: " + unlatched;
+  } else {
+    r.status = CaseStatus::deployed;
+  }
+
+  const auto largest = [](const std::vector<double>& x) {
+    double m = kNaN;
+    for (double v : x)
+      if (!std::isnan(v) && !(v <= m)) m = v;
+    return m;
+  };
+  std::vector<double> forces, moments;
+  for (std::size_t j = 0; j < nominal.model.joints.size(); ++j) {
+    forces.push_back(j < rr.peaks.hinge_force.size() ? rr.peaks.hinge_force[j].value : kNaN);
+    moments.push_back(j < rr.peaks.hinge_moment.size() ? rr.peaks.hinge_moment[j].value : kNaN);
+  }
+  const double deployment = r.status == CaseStatus::deployed && !times.empty() ? largest(times) : kNaN;
+  r.outputs = {deployment,
+               largest(torques),
+               largest(forces),
+               largest(moments),
+               scene.loops.empty() ? kNaN : rr.peaks.gap_m.value,
+               tr.empty() ? kNaN : tr.samples.back().energy.total(),
+               scene.loops.empty() ? kNaN : rr.peaks.gap_rad.value};
+  r.outputs.insert(r.outputs.end(), times.begin(), times.end());
+  r.outputs.insert(r.outputs.end(), torques.begin(), torques.end());
+  r.outputs.insert(r.outputs.end(), forces.begin(), forces.end());
+  r.outputs.insert(r.outputs.end(), moments.begin(), moments.end());
+  r.outputs.push_back(static_cast<double>(rr.stats.steps));
+  r.outputs.push_back(rr.wall_time_s);
+  if (!tr.empty()) record_overlay(study, scene, tr, r);
+  return r;
+}
+
+double output_value(const CaseColumns& columns, const CaseResult& r, const std::string& name) {
+  const auto it = std::find(columns.outputs.begin(), columns.outputs.end(), name);
+  if (it == columns.outputs.end()) return kNaN;
+  const auto i = static_cast<std::size_t>(it - columns.outputs.begin());
+  return i < r.outputs.size() ? r.outputs[i] : kNaN;
+}
+
+}  // namespace unfurl

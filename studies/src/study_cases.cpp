@@ -1,0 +1,158 @@
+#include "unfurl/studies/study_cases.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+#include <random>
+
+namespace unfurl {
+
+namespace {
+
+std::string numbered_id(long k, long count) {
+  const std::size_t width = std::max<std::size_t>(4, std::to_string(count).size());
+  const std::string digits = std::to_string(k);
+  return "case-" + std::string(width - std::min(width, digits.size()), '0') + digits;
+}
+
+std::vector<double> nominal_inputs(const Study& study) {
+  std::vector<double> x;
+  for (const StudyVariable& v : study.variables) x.push_back(v.nominal);
+  return x;
+}
+
+// One draw of a random variable; a truncated one is drawn again until it
+// falls within its bounds (the bounds enclose the centre, so this ends).
+double draw(const StudyVariable& v, std::mt19937_64& engine) {
+  double x = 0;
+  for (int attempt = 0; attempt < 10000; ++attempt) {
+    switch (v.kind) {
+      case StudyVariable::Kind::uniform: x = std::uniform_real_distribution<double>(v.a, v.b)(engine); break;
+      case StudyVariable::Kind::normal: x = std::normal_distribution<double>(v.a, v.b)(engine); break;
+      case StudyVariable::Kind::lognormal: x = std::lognormal_distribution<double>(v.a, v.b)(engine); break;
+      default: return v.nominal;
+    }
+    if (x >= v.lo && x <= v.hi) break;
+  }
+  x = std::clamp(x, v.lo, v.hi);
+  return v.scale ? v.nominal * x : x;
+}
+
+void add_random_cases(const Study& study, std::vector<StudyCase>& cases) {
+  for (long k = 1; k <= study.runs; ++k) {
+    std::seed_seq seed{static_cast<unsigned long>(study.seed >> 32), static_cast<unsigned long>(study.seed & 0xffffffffUL),
+                       static_cast<unsigned long>(k)};
+    std::mt19937_64 engine(seed);
+    StudyCase c{numbered_id(k, study.runs), {}, std::nullopt};
+    for (const StudyVariable& v : study.variables) c.inputs.push_back(draw(v, engine));
+    cases.push_back(std::move(c));
+  }
+}
+
+double listed_value(const StudyVariable& v, std::size_t i) { return v.scale ? v.nominal * v.values[i] : v.values[i]; }
+
+void add_listed_cases(const Study& study, std::vector<StudyCase>& cases) {
+  const auto& vars = study.variables;
+  if (vars.empty()) return;
+  if (study.zip) {
+    const long n = static_cast<long>(vars.front().values.size());
+    for (long i = 0; i < n; ++i) {
+      StudyCase c{numbered_id(i + 1, n), {}, std::nullopt};
+      for (const StudyVariable& v : vars) c.inputs.push_back(listed_value(v, static_cast<std::size_t>(i)));
+      cases.push_back(std::move(c));
+    }
+    return;
+  }
+  long n = 1;
+  for (const StudyVariable& v : vars) n *= static_cast<long>(v.values.size());
+  std::vector<std::size_t> digit(vars.size(), 0);  // the last variable turns fastest
+  for (long k = 1; k <= n; ++k) {
+    StudyCase c{numbered_id(k, n), {}, std::nullopt};
+    for (std::size_t i = 0; i < vars.size(); ++i) c.inputs.push_back(listed_value(vars[i], digit[i]));
+    cases.push_back(std::move(c));
+    for (std::size_t i = vars.size(); i-- > 0;) {
+      if (++digit[i] < vars[i].values.size()) break;
+      digit[i] = 0;
+    }
+  }
+}
+
+int joint_named(const Model& model, const std::string& name) {
+  for (int j = 0; j < static_cast<int>(model.joints.size()); ++j)
+    if (model.joints[j].name == name) return j;
+  throw SceneError("no joint " + name + " in the scene");
+}
+
+JointSpring& spring_of(Scene& scene, int joint) {
+  for (std::size_t s = 0; s < scene.dampers_from; ++s)
+    if (scene.springs[s].joint == joint) return scene.springs[s];
+  throw SceneError("no spring on joint " + scene.model.joints[joint].name);
+}
+
+double initial_q(const Scene& scene, int joint) { return scene.q0[scene.model.coordinate[joint]]; }
+
+// The spring's twist at the start scaled by `factor`: the preload torque
+// k (q_free - q(0)) scales with it at the same stiffness.
+void scale_preload(Scene& scene, int joint, double factor) {
+  JointSpring& s = spring_of(scene, joint);
+  const double q0 = initial_q(scene, joint);
+  s.free_position = q0 + factor * (s.free_position - q0);
+}
+
+// A stuck hinge is held where it starts by a stop as stiff as the scene's
+// stiffest latch, engaged from t = 0 (it starts at its position).
+void make_stuck(Scene& scene, int joint) {
+  Latch stop{joint, initial_q(scene, joint), 1000.0, 10.0};
+  for (const Latch& l : scene.latches)
+    if (l.stiffness > stop.stiffness) stop.stiffness = l.stiffness, stop.damping = l.damping;
+  scene.latches.push_back(stop);
+}
+
+void apply_failure(Scene& scene, const StudyFailure& f) {
+  const int joint = joint_named(scene.model, f.joint);
+  switch (f.kind) {
+    case StudyFailure::Kind::latch_fails:
+      scene.latches.erase(std::remove_if(scene.latches.begin(), scene.latches.end(),
+                                         [&](const Latch& l) { return l.joint == joint; }),
+                          scene.latches.end());
+      break;
+    case StudyFailure::Kind::spring_breaks: spring_of(scene, joint).stiffness = 0; break;
+    case StudyFailure::Kind::preload_loss: scale_preload(scene, joint, 1 - f.fraction); break;
+    case StudyFailure::Kind::stuck: make_stuck(scene, joint); break;
+  }
+}
+
+std::string spring_joint_of_preload(const std::string& path) {
+  // springs.J.preload
+  return path.substr(8, path.size() - 8 - 8);
+}
+
+}  // namespace
+
+std::vector<StudyCase> study_cases(const Study& study) {
+  std::vector<StudyCase> cases{{"nominal", nominal_inputs(study), std::nullopt}};
+  if (study.runs > 0)
+    add_random_cases(study, cases);
+  else
+    add_listed_cases(study, cases);
+  for (const StudyFailure& f : study.failures) cases.push_back({"fail-" + f.id(), nominal_inputs(study), f});
+  return cases;
+}
+
+Scene case_scene(const Study& study, const StudyCase& c) {
+  std::vector<Override> overrides = study.settings;
+  for (std::size_t i = 0; i < study.variables.size(); ++i) {
+    if (study.variables[i].is_preload()) continue;
+    char text[64];
+    std::snprintf(text, sizeof text, "%.17g", c.inputs[i]);
+    overrides.push_back({study.variables[i].path, text});
+  }
+  Scene scene = load_scene_text(study.scene_text, study.scene_source, overrides);
+  for (std::size_t i = 0; i < study.variables.size(); ++i)
+    if (study.variables[i].is_preload())
+      scale_preload(scene, joint_named(scene.model, spring_joint_of_preload(study.variables[i].path)), c.inputs[i]);
+  if (c.failure) apply_failure(scene, *c.failure);
+  return scene;
+}
+
+}  // namespace unfurl

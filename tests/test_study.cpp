@@ -1,0 +1,179 @@
+// Studies: the study file (its errors name file, line, column and field),
+// the cases it expands to, the injected failures, and the statistics.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numeric>
+
+#include "support.hpp"
+#include "unfurl/studies/case_result.hpp"
+#include "unfurl/studies/study_statistics.hpp"
+
+namespace unfurl {
+namespace {
+
+Study study_from(const std::string& text) { return read_study_text(text, "study.yaml", ""); }
+
+std::string error_of(const std::string& text) {
+  try {
+    study_from(text);
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(StudyStatistics, PercentilesInterpolateBetweenRanks) {
+  std::vector<double> x(101);
+  std::iota(x.begin(), x.end(), 0.0);
+  EXPECT_DOUBLE_EQ(percentile(x, 1), 1);
+  EXPECT_DOUBLE_EQ(percentile(x, 50), 50);
+  EXPECT_DOUBLE_EQ(percentile(x, 99), 99);
+  EXPECT_DOUBLE_EQ(percentile({1, 2}, 50), 1.5);
+}
+
+TEST(StudyStatistics, SpearmanSeesMonotoneRelationsAndTies) {
+  const std::vector<double> x{1, 2, 3, 4, 5};
+  EXPECT_DOUBLE_EQ(spearman(x, {1, 8, 27, 64, 125}), 1.0);   // any increasing function
+  EXPECT_DOUBLE_EQ(spearman(x, {5, 4, 3, 2, 1}), -1.0);
+  // Ties share their rank: ranks (1, 2.5, 2.5, 4) against (1, 2, 3, 4).
+  EXPECT_NEAR(spearman({1, 2, 3, 4}, {1, 2, 2, 3}), 4.5 / std::sqrt(5.0 * 4.5), 1e-15);
+  EXPECT_TRUE(std::isnan(spearman(x, {2, 2, 2, 2, 2})));
+}
+
+TEST(StudyFile, ErrorsNameTheFileLineColumnAndField) {
+  EXPECT_NE(error_of("scene: pantograph\nsurprise: 1\n").find("study.yaml:2:1"), std::string::npos);
+  EXPECT_NE(error_of("scene: nowhere\n").find("study.yaml:1:8: scene"), std::string::npos);
+  const std::string bad_path = error_of("scene: pantograph\nvary:\n  - {path: springs.j99.stiffness, values: [1]}\n");
+  EXPECT_NE(bad_path.find("vary[0].path"), std::string::npos) << bad_path;
+  const std::string mixed = error_of(
+      "scene: pantograph\nruns: 3\nvary:\n  - {path: springs.j1.stiffness, values: [0.1]}\n"
+      "  - {path: springs.j2.stiffness, uniform: {min: 0.09, max: 0.11}}\n");
+  EXPECT_NE(mixed.find("not both"), std::string::npos) << mixed;
+  const std::string invalid = error_of("scene: pantograph\nvary:\n  - {path: bodies.panel_A1.mass, values: [2, -1]}\n");
+  EXPECT_NE(invalid.find("study.yaml:3:5: vary[0]"), std::string::npos) << invalid;
+  EXPECT_NE(invalid.find("mass"), std::string::npos) << invalid;
+  const std::string joint = error_of("scene: pantograph\nfailures:\n  - {latch_fails: j9}\n");
+  EXPECT_NE(joint.find("failures[0].latch_fails"), std::string::npos) << joint;
+  const std::string zip = error_of(
+      "scene: pantograph\ncombine: zip\nvary:\n  - {path: springs.j1.stiffness, values: [0.1, 0.2]}\n"
+      "  - {path: springs.j2.stiffness, values: [0.1]}\n");
+  EXPECT_NE(zip.find("one length"), std::string::npos) << zip;
+}
+
+TEST(StudyCases, ProductAndZipOfLists) {
+  const std::string vary =
+      "vary:\n  - {path: springs.j1.stiffness, values: [0.09, 0.11]}\n"
+      "  - {path: springs.j2.stiffness, grid: {from: 0.08, to: 0.12, steps: 2}}\n";
+  const auto product = study_cases(study_from("scene: pantograph\n" + vary));
+  ASSERT_EQ(product.size(), 5u);  // nominal + 2 x 2
+  EXPECT_EQ(product[0].id, "nominal");
+  EXPECT_EQ(product[0].inputs, (std::vector<double>{0.1, 0.1}));
+  EXPECT_EQ(product[2].inputs, (std::vector<double>{0.09, 0.12}));  // the last variable turns fastest
+  EXPECT_EQ(product[3].inputs, (std::vector<double>{0.11, 0.08}));
+  const auto zip = study_cases(study_from("scene: pantograph\ncombine: zip\n" + vary));
+  ASSERT_EQ(zip.size(), 3u);
+  EXPECT_EQ(zip[2].inputs, (std::vector<double>{0.11, 0.12}));
+}
+
+// A random case's values depend on the seed and its number only: the same
+// draws whatever the study's size, and always within the bounds.
+TEST(StudyCases, RandomDrawsAreReproducibleAndTruncated) {
+  const std::string vary =
+      "vary:\n  - {path: springs.*.stiffness, scale: true, normal: {mean: 1, sigma: 0.05, min: 0.9, max: 1.1}}\n"
+      "  - {path: bodies.panel_B1.mass, lognormal: {mu: 1.386, sigma: 0.1}}\n";
+  const auto small = study_cases(study_from("scene: pantograph\nseed: 4\nruns: 5\n" + vary));
+  const auto large = study_cases(study_from("scene: pantograph\nseed: 4\nruns: 400\n" + vary));
+  const auto other = study_cases(study_from("scene: pantograph\nseed: 5\nruns: 5\n" + vary));
+  ASSERT_EQ(small.size(), 6u);
+  ASSERT_EQ(small[1].inputs.size(), 9u);  // 8 springs, 1 mass
+  for (std::size_t k = 0; k < small.size(); ++k) EXPECT_EQ(small[k].inputs, large[k].inputs);
+  EXPECT_NE(small[1].inputs, other[1].inputs);
+  EXPECT_EQ(large[1].id, "case-0001");
+  double mean = 0;
+  for (std::size_t k = 1; k < large.size(); ++k) {
+    for (int s = 0; s < 8; ++s) {
+      EXPECT_GE(large[k].inputs[s], 0.09 - 1e-15);
+      EXPECT_LE(large[k].inputs[s], 0.11 + 1e-15);
+      mean += large[k].inputs[s] / (8.0 * 400);
+    }
+  }
+  EXPECT_NEAR(mean, 0.1, 0.001);
+}
+
+// The failures change the scene as they say: a latch gone, a spring without
+// stiffness, half the preload, a hinge held where it starts.
+TEST(StudyCases, FailuresChangeTheSceneAsNamed) {
+  const Study study = study_from(
+      "scene: pantograph\nfailures:\n  - {latch_fails: j3}\n  - {spring_breaks: j1}\n"
+      "  - {preload_loss: j2, fraction: 0.5}\n  - {stuck: \"*\"}\n");
+  const auto cases = study_cases(study);
+  ASSERT_EQ(cases.size(), 1u + 3 + 11);
+  EXPECT_EQ(cases[1].id, "fail-latch-j3-fails");
+  const Scene nominal = nominal_scene(study).scene;
+  const Scene no_latch = case_scene(study, cases[1]);
+  EXPECT_EQ(no_latch.latches.size(), 7u);
+  for (const Latch& l : no_latch.latches) EXPECT_NE(nominal.model.joints[l.joint].name, "j3");
+  EXPECT_EQ(case_scene(study, cases[2]).springs[0].stiffness, 0.0);
+  const Scene half = case_scene(study, cases[3]);
+  const double q0 = nominal.q0[nominal.model.coordinate[1]];
+  EXPECT_DOUBLE_EQ(half.springs[1].free_position - q0, 0.5 * (nominal.springs[1].free_position - q0));
+  const Scene stuck = case_scene(study, cases[4]);  // j1
+  ASSERT_EQ(stuck.latches.size(), 9u);
+  EXPECT_EQ(stuck.latches.back().joint, 0);
+  EXPECT_EQ(stuck.latches.back().position, nominal.q0[0]);
+}
+
+// The runs of injected failures: the array deploys without one spring; a
+// stuck root hinge holds the whole (one-degree-of-freedom) array stowed; a
+// failed latch leaves its joint unlatched and the case not deployed.
+TEST(StudyCases, FailedCasesReportWhatHappened) {
+  const Study study = study_from(
+      "scene: pantograph\nset: {run.rtol: 1.0e-6, run.atol: 1.0e-9, run.t_end: 9}\n"
+      "failures:\n  - {latch_fails: j3}\n  - {stuck: j1}\n");
+  const Scene nominal = nominal_scene(study).scene;
+  const CaseColumns columns = case_columns(study, nominal);
+  const auto cases = study_cases(study);
+  const CaseResult ok = case_result(study, nominal, cases[0], simulate_case(study, cases[0]));
+  EXPECT_EQ(ok.status, CaseStatus::deployed);
+  EXPECT_NEAR(output_value(columns, ok, "deployment_time_s"), 7.3921759, 1e-5);
+  const CaseResult latch = case_result(study, nominal, cases[1], simulate_case(study, cases[1]));
+  EXPECT_EQ(latch.status, CaseStatus::not_deployed);
+  EXPECT_EQ(latch.reason, "never latched: j3");
+  EXPECT_TRUE(std::isnan(output_value(columns, latch, "latch_time_s.j3")));
+  EXPECT_FALSE(std::isnan(output_value(columns, latch, "latch_time_s.j2")));
+  const CaseResult stuck = case_result(study, nominal, cases[2], simulate_case(study, cases[2]));
+  EXPECT_EQ(stuck.status, CaseStatus::not_deployed);
+  // j1 (the overlay joint) stays stowed: its stop, as stiff as a latch
+  // (1000 N m/rad), yields 0.01 rad to the other seven springs, against the
+  // 1.56 rad it travels when free.
+  EXPECT_LT(std::abs(stuck.angle.back() - stuck.angle.front()), 0.02);
+}
+
+TEST(StudyStatistics, CountsAndDriversOverDeployedCasesWithoutInjectedFailures) {
+  const Study study = study_from("scene: pantograph\nvary:\n  - {path: springs.j1.stiffness, values: [1, 2, 3, 4]}\n");
+  const CaseColumns columns = case_columns(study, nominal_scene(study).scene);
+  std::vector<CaseResult> rows;
+  for (int k = 0; k < 6; ++k) {
+    CaseResult r;
+    r.inputs = {static_cast<double>(k)};
+    r.outputs.assign(columns.outputs.size(), 1.0);
+    r.outputs[0] = 10.0 - k * k;  // deployment time falls as the input grows
+    r.status = k == 5 ? CaseStatus::failed : CaseStatus::deployed;
+    if (k == 4) r.failure = "spring j1 broken";
+    rows.push_back(r);
+  }
+  const StudyStatistics st = study_statistics(columns, rows);
+  EXPECT_EQ(st.cases, 6);
+  EXPECT_EQ(st.deployed, 5);
+  EXPECT_EQ(st.failed, 1);
+  EXPECT_EQ(st.outputs[0].n, 4);
+  EXPECT_DOUBLE_EQ(st.outputs[0].min, 1.0);
+  EXPECT_DOUBLE_EQ(st.outputs[0].max, 10.0);
+  ASSERT_FALSE(st.drivers.empty());
+  EXPECT_EQ(st.drivers[0].output, "deployment_time_s");
+  EXPECT_DOUBLE_EQ(st.drivers[0].rho, -1.0);
+}
+
+}  // namespace
+}  // namespace unfurl

@@ -1,0 +1,125 @@
+// `unfurl sweep` end to end: the tables, a resumed study, an interrupted
+// one, and the same study over two MPI ranks, each giving the same
+// cases.csv (but for the wall times) as one uninterrupted local run.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "support.hpp"
+
+namespace unfurl {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kSmall = std::string(UNFURL_SOURCE_DIR) + "/tests/studies/small_monte_carlo.yaml";
+const std::string kLonger = std::string(UNFURL_SOURCE_DIR) + "/tests/studies/longer_monte_carlo.yaml";
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("unfurl_study_" + name);
+  fs::remove_all(dir);
+  return dir;
+}
+
+test::CommandOutcome sweep(const std::string& study, const fs::path& out, const std::string& more = "") {
+  return test::run_command(std::string(UNFURL_BINARY) + " sweep " + study + " --out " + out.string() + " --quiet " + more);
+}
+
+// cases.csv without its last column (the wall time, which differs run to run).
+std::vector<std::string> table_without_wall_time(const fs::path& csv) {
+  std::ifstream in(csv);
+  std::vector<std::string> rows;
+  for (std::string line; std::getline(in, line);) rows.push_back(line.substr(0, line.rfind(',')));
+  return rows;
+}
+
+std::string text_of(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(SweepCommand, WritesTheTablesTheReportAndThePlots) {
+  const fs::path out = fresh_dir("tables");
+  const test::CommandOutcome o = sweep(kSmall, out, "--jobs 2");
+  ASSERT_EQ(o.code, 0) << o.output;
+  const auto rows = table_without_wall_time(out / "cases.csv");
+  ASSERT_EQ(rows.size(), 7u);  // header + nominal + 4 draws + 1 failure
+  EXPECT_EQ(rows[1].rfind("nominal,,deployed,", 0), 0u) << rows[1];
+  EXPECT_EQ(rows[6].rfind("fail-latch-j3-fails,latch j3 never engages,not deployed,never latched: j3,", 0), 0u) << rows[6];
+  // Every row parses to the header's columns with Python's csv module.
+  const test::CommandOutcome py = test::run_command(
+      "python3 -c \"import csv,sys; r=list(csv.reader(open(sys.argv[1]))); "
+      "assert all(len(x)==len(r[0]) for x in r), 'ragged'; print(len(r))\" " + (out / "cases.csv").string());
+  EXPECT_EQ(py.output, "7\n");
+  const std::string summary = text_of(out / "summary.json");
+  EXPECT_NE(summary.find("\"deployed\": 5"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"not_deployed\": 1"), std::string::npos) << summary;
+  const std::string report = text_of(out / "STUDY.md");
+  EXPECT_NE(report.find("is driven most by `springs."), std::string::npos) << report;
+#ifdef UNFURL_WITH_RENDER
+  for (const char* png : {"hist_deployment_time.png", "hist_peak_latch_torque.png", "overlay_angles.png",
+                          "scatter_deployment_time_s.png"})
+    EXPECT_TRUE(fs::is_regular_file(out / png)) << png;
+#endif
+}
+
+TEST(SweepCommand, ResumesWhereItStoppedAndRefusesAnotherStudysDirectory) {
+  const fs::path whole = fresh_dir("whole"), resumed = fresh_dir("resumed");
+  ASSERT_EQ(sweep(kSmall, whole, "--jobs 1").code, 0);
+  fs::copy(whole, resumed, fs::copy_options::recursive);
+  fs::remove_all(resumed / "cases" / "case-0002");
+  fs::remove_all(resumed / "cases" / "fail-latch-j3-fails");
+  fs::remove(resumed / "cases.csv");
+  const test::CommandOutcome again = sweep(kSmall, resumed, "--jobs 1");
+  ASSERT_EQ(again.code, 0) << again.output;
+  EXPECT_EQ(table_without_wall_time(resumed / "cases.csv"), table_without_wall_time(whole / "cases.csv"));
+  const test::CommandOutcome other = sweep(kLonger, resumed);
+  EXPECT_EQ(other.code, 64) << other.output;
+  EXPECT_NE(other.output.find("another study"), std::string::npos) << other.output;
+}
+
+// SIGINT stops the study within a second: the finished cases are kept (and
+// their table written), and the same command then finishes the rest.
+TEST(SweepCommand, InterruptedStudyKeepsFinishedCasesAndResumes) {
+  const fs::path whole = fresh_dir("uninterrupted"), cut = fresh_dir("interrupted");
+  ASSERT_EQ(sweep(kLonger, whole, "--jobs 1").code, 0);
+  const std::string run = std::string(UNFURL_BINARY) + " sweep " + kLonger + " --jobs 1 --quiet --out " + cut.string();
+  const test::CommandOutcome o = test::run_command(
+      "{ (" + run + ") & pid=$!; sleep 1; kill -INT $pid; start=$(date +%s%N); wait $pid; code=$?; "
+      "echo \"exit $code after $(( ($(date +%s%N) - start) / 1000000 )) ms\"; }");
+  std::istringstream said(o.output.substr(o.output.rfind("exit ")));
+  std::string word;
+  int code = -1;
+  long ms = -1;
+  said >> word >> code >> word >> ms;
+  EXPECT_EQ(code, 130) << o.output;
+  EXPECT_LT(ms, 1000) << o.output;
+  const auto partial = table_without_wall_time(cut / "cases.csv");
+  EXPECT_GT(partial.size(), 1u) << o.output;
+  EXPECT_LT(partial.size(), 33u) << o.output;
+  for (const std::string& row : partial) EXPECT_EQ(row.find("nan"), std::string::npos) << row;
+  ASSERT_EQ(sweep(kLonger, cut, "--jobs 1").code, 0);
+  EXPECT_EQ(table_without_wall_time(cut / "cases.csv"), table_without_wall_time(whole / "cases.csv"));
+}
+
+TEST(SweepCommand, TwoMpiRanksGiveTheSameTableAsOneLocalRun) {
+#ifndef UNFURL_WITH_MPI
+  GTEST_SKIP() << "built without MPI";
+#else
+  const fs::path local = fresh_dir("local"), ranks = fresh_dir("mpi");
+  ASSERT_EQ(sweep(kSmall, local, "--jobs 1").code, 0);
+  const test::CommandOutcome o = test::run_command(
+      "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 mpirun -n 2 " +
+      std::string(UNFURL_BINARY) + " sweep " + kSmall + " --quiet --out " + ranks.string());
+  ASSERT_EQ(o.code, 0) << o.output;
+  EXPECT_EQ(table_without_wall_time(ranks / "cases.csv"), table_without_wall_time(local / "cases.csv"));
+  EXPECT_NE(text_of(ranks / "STUDY.md").find("2 processes"), std::string::npos);
+#endif
+}
+
+}  // namespace
+}  // namespace unfurl
