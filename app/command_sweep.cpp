@@ -30,7 +30,7 @@ const char* kHelp =
     "                   cases, and the input that drives each output most\n"
     "  STUDY.md         the same as a report, with the plots (*.png)\n"
     "  cases/ID/        each case's record (and with --keep-runs its run files, which\n"
-    "                   `unfurl gui --trajectory DIR/cases/ID/trajectory.csv` opens)\n"
+    "                   `unfurl render --trajectory DIR/cases/ID/trajectory.csv` draws)\n"
     "\n"
     "Rerunning the same command on the same DIR skips the cases already finished.\n"
     "\n"
