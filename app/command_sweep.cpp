@@ -3,8 +3,6 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <thread>
 
 #include "cli.hpp"
@@ -45,20 +43,13 @@ const char* kHelp =
     "64 bad usage, 73 DIR cannot be written, 128+N stopped by signal N (the finished\n"
     "cases are kept; rerun to go on).\n";
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 // A directory holds one study's cases: another study's would be mixed in.
 void claim_directory(const std::string& dir, const std::string& study_text) {
   make_directory(dir);
   const std::string copy = dir + "/study.yaml";
   std::error_code ec;
   if (std::filesystem::exists(copy, ec)) {
-    if (read_text(copy) != study_text)
+    if (read_text_file(copy) != study_text)
       throw UsageError(dir + " holds the cases of another study (its study.yaml differs); use another --out or remove it");
     return;
   }
@@ -90,7 +81,7 @@ int command_sweep(const std::vector<std::string>& argv) {
   const std::string path = args.positionals()[0];
   const Study study = read_study_file(path);
   SweepOptions options{*args.get("--out"), static_cast<int>(jobs), args.has("--keep-runs"), args.has("--quiet")};
-  claim_directory(options.dir, read_text(path));
+  claim_directory(options.dir, read_text_file(path));
 
   const auto start = std::chrono::steady_clock::now();
   const InterruptScope interrupt;
@@ -107,6 +98,7 @@ int command_sweep(const std::vector<std::string>& argv) {
   for (const auto& r : run.results())
     if (r) results.push_back(*r);
   StudyReport report{study, run.columns(), results, static_cast<long>(run.cases().size()),
+                     static_cast<long>(run.cases().size() - run.pending().size()),
                      study_statistics(run.columns(), results),
                      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                      processes, options.jobs, command_line(argv)};

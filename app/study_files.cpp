@@ -77,13 +77,6 @@ void parse_angle_csv(const std::string& text, CaseResult& r) {
   }
 }
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 void write_text(const std::string& path, const std::string& text) {
   OutputFile out(path);
   out.stream() << text;
@@ -91,6 +84,13 @@ void write_text(const std::string& path, const std::string& text) {
 }
 
 const char* kNumberFormat = "%.6g";
+
+// A table cell's text: '|' would end the cell.
+std::string cell(const std::string& s) {
+  std::string out;
+  for (char c : s) out += c == '|' ? std::string("\\|") : std::string(1, c);
+  return out;
+}
 
 std::string fmt(double x) {
   if (!std::isfinite(x)) return "-";
@@ -100,6 +100,13 @@ std::string fmt(double x) {
 }
 
 }  // namespace
+
+std::string read_text_file(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
 
 std::string cases_header(const CaseColumns& columns) {
   std::string h = "case,failure,status,reason";
@@ -157,7 +164,7 @@ std::optional<CaseResult> read_case_record(const CaseColumns& columns, const std
   const std::string case_dir = dir + "/cases/" + id;
   std::error_code ec;
   if (!std::filesystem::is_regular_file(case_dir + "/case.csv", ec)) return std::nullopt;
-  return parse_case_record(columns, read_text(case_dir + "/case.csv") + "\f" + read_text(case_dir + "/angle.csv"));
+  return parse_case_record(columns, read_text_file(case_dir + "/case.csv") + "\f" + read_text_file(case_dir + "/angle.csv"));
 }
 
 void write_cases_csv(const StudyReport& report, const std::string& path) {
@@ -176,7 +183,7 @@ void write_study_summary_json(const StudyReport& report, const std::string& path
   json.value("cases", static_cast<long>(report.total_cases)).value("finished", st.cases);
   json.begin_object("status").value("deployed", st.deployed).value("not_deployed", st.not_deployed).value("failed", st.failed).end_object();
   json.value("fraction_deployed", st.cases ? static_cast<double>(st.deployed) / static_cast<double>(st.cases) : 0.0);
-  json.value("wall_time_s", report.wall_time_s).value("processes", report.processes).value("jobs", report.jobs);
+  json.value("resumed", report.resumed).value("wall_time_s", report.wall_time_s).value("processes", report.processes).value("jobs", report.jobs);
   json.begin_object("outputs");
   for (const OutputStatistics& o : st.outputs) {
     json.begin_object(o.output).value("n", o.n).value("min", o.min).value("max", o.max).value("mean", o.mean);
@@ -206,7 +213,9 @@ void write_study_markdown(const StudyReport& report, const std::vector<std::stri
   if (!report.study.failures.empty()) md << ", " << report.study.failures.size() << " of them injected failures";
   md << ". Made by `" << report.command << "` in " << fmt(report.wall_time_s) << " s (" << report.processes
      << (report.processes == 1 ? " process, " : " processes, ") << report.jobs << (report.jobs == 1 ? " job" : " jobs")
-     << (report.processes == 1 ? "" : " each") << ").\n\n";
+     << (report.processes == 1 ? "" : " each") << ")";
+  if (report.resumed > 0) md << "; " << report.resumed << " cases were read back from an earlier run of the same command";
+  md << ".\n\n";
   if (st.cases < report.total_cases) md << "**Incomplete:** " << st.cases << " of " << report.total_cases << " cases finished.\n\n";
   md << "| status | cases | fraction |\n|---|---:|---:|\n";
   const auto row = [&](const char* name, long n) {
@@ -239,7 +248,7 @@ void write_study_markdown(const StudyReport& report, const std::vector<std::stri
     for (const CaseResult& r : report.results) {
       if (r.failure.empty() && r.status == CaseStatus::deployed) continue;
       md << "| " << r.id << " | " << (r.failure.empty() ? "-" : r.failure) << " | " << case_status_name(r.status) << " | "
-         << (r.reason.empty() ? "-" : r.reason) << " | " << fmt(output_value(report.columns, r, "deployment_time_s"))
+         << (r.reason.empty() ? "-" : cell(r.reason)) << " | " << fmt(output_value(report.columns, r, "deployment_time_s"))
          << " | " << fmt(output_value(report.columns, r, "peak_latch_torque_Nm")) << " |\n";
     }
   }

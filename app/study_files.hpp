@@ -13,6 +13,9 @@
 
 namespace unfurl::app {
 
+// The whole of a text file ("" when it cannot be read).
+std::string read_text_file(const std::string& path);
+
 // The header line of cases.csv (and of each case record).
 std::string cases_header(const CaseColumns& columns);
 // One row of cases.csv; numbers round-trip exactly, NaN is empty.
@@ -34,6 +37,7 @@ struct StudyReport {
   const CaseColumns& columns;
   const std::vector<CaseResult>& results;  // in case order
   long total_cases = 0;
+  long resumed = 0;  // cases read back from an earlier, interrupted run
   StudyStatistics statistics;
   double wall_time_s = 0;
   int processes = 1, jobs = 1;

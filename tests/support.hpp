@@ -35,6 +35,25 @@ inline CommandOutcome run_command(const std::string& command) {
   return o;
 }
 
+// A command sent SIGINT after `seconds`: its exit status and how long it
+// took to end after the signal.
+struct InterruptedOutcome {
+  int code = -1;
+  long ms_to_end = -1;
+  std::string output;
+};
+
+inline InterruptedOutcome interrupt_after(const std::string& command, double seconds) {
+  const CommandOutcome o = run_command("{ (" + command + ") & pid=$!; sleep " + std::to_string(seconds) +
+                                      "; kill -INT $pid; start=$(date +%s%N); wait $pid; code=$?; "
+                                      "echo \"exit $code after $(( ($(date +%s%N) - start) / 1000000 )) ms\"; }");
+  InterruptedOutcome r;
+  r.output = o.output;
+  const auto at = o.output.rfind("exit ");
+  if (at != std::string::npos) std::sscanf(o.output.c_str() + at, "exit %d after %ld ms", &r.code, &r.ms_to_end);
+  return r;
+}
+
 // Value of coordinate c of the joint named `joint` in a sample.
 inline double q_of(const Scene& scene, const Sample& s, const std::string& joint) {
   for (int c = 0; c < scene.model.nq; ++c)

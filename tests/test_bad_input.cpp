@@ -103,16 +103,9 @@ TEST(OutputFiles, HeadersParseWithPythonsCsvModule) {
 TEST(Interruption, SigintKeepsCompleteFilesAndSaysWhy) {
   const fs::path out = scratch("sigint");
   const std::string run = std::string(UNFURL_BINARY) + " simulate fourbar --t-end 10000 --sample 0.1 --quiet --out " + out.string();
-  const test::CommandOutcome o = test::run_command(
-      "{ (" + run + ") & pid=$!; sleep 1.5; kill -INT $pid; start=$(date +%s%N); wait $pid; code=$?; "
-      "echo \"exit $code after $(( ($(date +%s%N) - start) / 1000000 )) ms\"; }");
-  std::istringstream said(o.output.substr(o.output.rfind("exit ")));
-  std::string word;
-  int code = -1;
-  long ms = -1;
-  said >> word >> code >> word >> ms;
-  EXPECT_EQ(code, 130) << o.output;
-  EXPECT_LT(ms, 1000) << o.output;
+  const test::InterruptedOutcome o = test::interrupt_after(run, 1.5);
+  EXPECT_EQ(o.code, 130) << o.output;
+  EXPECT_LT(o.ms_to_end, 1000) << o.output;
   EXPECT_NE(o.output.find("interrupted by SIGINT"), std::string::npos) << o.output;
   for (const char* name : {"trajectory.csv", "loads.csv"}) {
     std::ifstream in(out / name);

@@ -60,6 +60,9 @@ TEST(Layers, SolverIncludesNoHigherLayer) {
 TEST(Layers, StudiesIncludeNoRendererOrApplication) {
   for (const Include& i : includes_under("studies", false)) {
     EXPECT_FALSE(starts_with(i.target, "unfurl/render/")) << i.file << " includes " << i.target;
+    // Study files are read with the solver's own checked YAML access (sim's
+    // private yaml_fields.hpp, see studies/CMakeLists.txt): a lower layer.
+    if (i.target == "yaml_fields.hpp") continue;
     if (i.target.find('/') == std::string::npos && i.target.find(".hpp") != std::string::npos)
       ADD_FAILURE() << i.file << " includes an application header " << i.target;
   }

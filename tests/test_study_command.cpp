@@ -88,16 +88,9 @@ TEST(SweepCommand, InterruptedStudyKeepsFinishedCasesAndResumes) {
   const fs::path whole = fresh_dir("uninterrupted"), cut = fresh_dir("interrupted");
   ASSERT_EQ(sweep(kLonger, whole, "--jobs 1").code, 0);
   const std::string run = std::string(UNFURL_BINARY) + " sweep " + kLonger + " --jobs 1 --quiet --out " + cut.string();
-  const test::CommandOutcome o = test::run_command(
-      "{ (" + run + ") & pid=$!; sleep 1; kill -INT $pid; start=$(date +%s%N); wait $pid; code=$?; "
-      "echo \"exit $code after $(( ($(date +%s%N) - start) / 1000000 )) ms\"; }");
-  std::istringstream said(o.output.substr(o.output.rfind("exit ")));
-  std::string word;
-  int code = -1;
-  long ms = -1;
-  said >> word >> code >> word >> ms;
-  EXPECT_EQ(code, 130) << o.output;
-  EXPECT_LT(ms, 1000) << o.output;
+  const test::InterruptedOutcome o = test::interrupt_after(run, 1);
+  EXPECT_EQ(o.code, 130) << o.output;
+  EXPECT_LT(o.ms_to_end, 1000) << o.output;
   const auto partial = table_without_wall_time(cut / "cases.csv");
   EXPECT_GT(partial.size(), 1u) << o.output;
   EXPECT_LT(partial.size(), 33u) << o.output;

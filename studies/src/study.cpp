@@ -16,6 +16,12 @@ bool ends_with(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
 
+std::string percent(double fraction) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", 100 * fraction);
+  return text;
+}
+
 std::string scalar_text(const YamlFields& fields, const YAML::Node& node, const std::string& field) {
   if (!node.IsScalar()) fields.fail(node, field, "expected a single value");
   return node.Scalar();
@@ -300,11 +306,7 @@ std::string StudyFailure::id() const {
   switch (kind) {
     case Kind::latch_fails: return "latch-" + joint + "-fails";
     case Kind::spring_breaks: return "spring-" + joint + "-breaks";
-    case Kind::preload_loss: {
-      char pct[32];
-      std::snprintf(pct, sizeof pct, "%g", 100 * fraction);
-      return "spring-" + joint + "-loses-" + pct + "pc";
-    }
+    case Kind::preload_loss: return "spring-" + joint + "-loses-" + percent(fraction) + "pc";
     case Kind::stuck: return "hinge-" + joint + "-stuck";
   }
   return "";
@@ -314,11 +316,7 @@ std::string StudyFailure::describe() const {
   switch (kind) {
     case Kind::latch_fails: return "latch " + joint + " never engages";
     case Kind::spring_breaks: return "spring " + joint + " broken";
-    case Kind::preload_loss: {
-      char pct[32];
-      std::snprintf(pct, sizeof pct, "%g", 100 * fraction);
-      return "spring " + joint + " loses " + pct + " % of its preload";
-    }
+    case Kind::preload_loss: return "spring " + joint + " loses " + percent(fraction) + " % of its preload";
     case Kind::stuck: return "hinge " + joint + " stuck";
   }
   return "";
