@@ -66,12 +66,6 @@ void StudyRun::record(std::size_t i, const std::string& text) {
   show_progress();
 }
 
-long StudyRun::finished() const {
-  long n = 0;
-  for (const auto& r : results_) n += r.has_value();
-  return n;
-}
-
 // A line redrawn in place on a terminal; elsewhere (a batch job's log) a
 // line at every tenth of the study.
 void StudyRun::show_progress() {

@@ -45,7 +45,6 @@ class StudyRun {
 
   // Every case's result, in case order (nullopt: not finished).
   const std::vector<std::optional<CaseResult>>& results() const { return results_; }
-  long finished() const;
   void finish_progress();
 
  private:

@@ -40,7 +40,12 @@ class StudyReader {
     study.source = fields_.source();
     read_scene(fields_.require(root, "scene", "scene"), study);
     if (root["set"]) read_settings(root["set"], study);
-    nominal_ = nominal_scene(study).scene;
+    try {
+      nominal_ = nominal_scene(study).scene;
+    } catch (const SceneError& e) {
+      if (!root["set"]) throw;
+      fields_.fail(root["set"], "set", std::string("the scene does not accept it: ") + e.what());
+    }
     if (root["vary"]) read_variables(root["vary"], study);
     if (root["combine"]) read_combine(root["combine"], study);
     if (root["seed"]) study.seed = static_cast<unsigned long>(fields_.count(root["seed"], "seed", 0, 1L << 62));
@@ -76,11 +81,6 @@ class StudyReader {
     for (const auto& item : node) {
       const std::string path = fields_.text(item.first, "set");
       study.settings.push_back({path, scalar_text(fields_, item.second, "set." + path)});
-    }
-    try {
-      nominal_scene(study);
-    } catch (const SceneError& e) {
-      fields_.fail(node, "set", std::string("the scene does not accept it: ") + e.what());
     }
   }
 
