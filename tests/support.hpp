@@ -43,8 +43,12 @@ struct InterruptedOutcome {
   std::string output;
 };
 
-inline InterruptedOutcome interrupt_after(const std::string& command, double seconds) {
-  const CommandOutcome o = run_command("{ (" + command + ") & pid=$!; sleep " + std::to_string(seconds) +
+// `ready`, when given, is a shell condition polled every 50 ms after that
+// (for up to ten minutes) before the signal: what the command must have
+// done first, however slow the build (a sanitizer's) makes it.
+inline InterruptedOutcome interrupt_after(const std::string& command, double seconds, const std::string& ready = "") {
+  const std::string wait_ready = ready.empty() ? "" : "; for i in $(seq 12000); do " + ready + " && break; sleep 0.05; done";
+  const CommandOutcome o = run_command("{ (" + command + ") & pid=$!; sleep " + std::to_string(seconds) + wait_ready +
                                       "; kill -INT $pid; start=$(date +%s%N); wait $pid; code=$?; "
                                       "echo \"exit $code after $(( ($(date +%s%N) - start) / 1000000 )) ms\"; }");
   InterruptedOutcome r;
