@@ -64,7 +64,8 @@ void print_summary(const Scene& scene, const RunResult& result, const RunSummary
   if (latch)
     std::printf("loads        peak latch torque %.4g N m at %s, t = %.6f s\n", latch->peak.value, latch->joint.c_str(),
                 latch->peak.t);
-  std::printf("energy       %.9g J at t = 0, %.9g J at t = %g s\n", s.energy_initial, s.energy_final, s.t_reached);
+  std::printf("energy       %.9g J at t = 0, %.9g J at t = %g s, %.9g J dissipated\n", s.energy_initial,
+              s.energy_final, s.t_reached, s.energy_dissipated);
   std::printf("files        %s/{trajectory,loads,events}.csv, %s/summary.json\n", dir.c_str(), dir.c_str());
 }
 

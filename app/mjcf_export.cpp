@@ -147,11 +147,17 @@ class Writer {
     double k = 0, k_free = 0, damping = 0;
     for (const JointSpring& s : scene_.springs)
       if (s.joint == i) k += s.stiffness, k_free += s.stiffness * s.free_position, damping += s.damping;
+    // Coulomb friction becomes MuJoCo's frictionloss, a dry-friction
+    // constraint that sticks exactly where ours (tanh, friction.hpp) creeps.
+    double frictionloss = 0;
+    for (const JointFriction& f : scene_.friction)
+      if (f.joint == i) frictionloss += f.coulomb, damping += f.viscous;
     out_ << pad << "<joint name=\"" << j.name << "\" type=\"" << (j.type == JointType::revolute ? "hinge" : "slide")
          << "\" axis=\"" << vec(j.axis) << "\" pos=\"" << vec(j.type == JointType::revolute ? j.child_point : Vec3::Zero())
          << "\" ref=\"" << num(scene_.q0[c]) << "\"";
     if (k > 0) out_ << " stiffness=\"" << num(k) << "\" springref=\"" << num(k_free / k) << "\"";
     if (damping > 0) out_ << " damping=\"" << num(damping) << "\"";
+    if (frictionloss > 0) out_ << " frictionloss=\"" << num(frictionloss) << "\"";
     out_ << "/>\n";
   }
 
@@ -172,6 +178,9 @@ class Writer {
       for (const JointSpring& s : scene_.springs)
         if (s.joint == loop.image)
           unsupported("a spring or damper on the loop joint '" + pivot.name + "' (it became a connect constraint)");
+      for (const JointFriction& f : scene_.friction)
+        if (f.joint == loop.image)
+          unsupported("friction on the loop joint '" + pivot.name + "' (it became a connect constraint)");
     }
     out_ << "  </equality>\n";
   }

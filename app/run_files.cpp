@@ -19,7 +19,7 @@ void write_trajectory_csv(const Scene& scene, const Trajectory& trajectory, cons
     out << ",q." << name << ",dq." << name << ",p." << name;
   }
   for (const Loop& loop : scene.loops) out << ",closure_m." << loop.name << ",closure_rad." << loop.name;
-  out << ",energy\n";
+  out << ",energy,energy_dissipated\n";
   for (const Sample& s : trajectory.samples) {
     out << format_number(s.t);
     for (int c = 0; c < model.nq; ++c)
@@ -27,7 +27,7 @@ void write_trajectory_csv(const Scene& scene, const Trajectory& trajectory, cons
           << format_number(s.y[L.p() + c]);
     for (std::size_t l = 0; l < scene.loops.size(); ++l)
       out << ',' << format_number(s.closure[l].distance) << ',' << format_number(s.closure[l].angle);
-    out << ',' << format_number(s.energy.total()) << '\n';
+    out << ',' << format_number(s.energy.total()) << ',' << format_number(s.energy.dissipated) << '\n';
   }
   file.commit();
 }
@@ -36,7 +36,7 @@ namespace {
 
 // Which element columns a joint has.
 struct JointElements {
-  bool spring = false, damper = false, latch = false;
+  bool spring = false, damper = false, friction = false, latch = false;
 };
 
 std::vector<JointElements> joint_elements(const Scene& scene) {
@@ -46,6 +46,7 @@ std::vector<JointElements> joint_elements(const Scene& scene) {
     if (k < scene.dampers_from) has[s.joint].spring = true;
     if (s.damping != 0) has[s.joint].damper = true;
   }
+  for (const JointFriction& f : scene.friction) has[f.joint].friction = true;
   for (const Latch& latch : scene.latches) has[latch.joint].latch = true;
   return has;
 }
@@ -62,6 +63,7 @@ void write_loads_csv(const Scene& scene, const Trajectory& trajectory, const std
     const std::string& name = model.joints[j].name;
     if (has[j].spring) out << ",tau_spring." << name;
     if (has[j].damper) out << ",tau_damper." << name;
+    if (has[j].friction) out << ",tau_friction." << name;
     if (has[j].latch) out << ",tau_latch." << name;
     for (int a = 0; a < 6; ++a) out << ",reaction." << name << '.' << wrench_component_name(a);
   }
@@ -74,6 +76,7 @@ void write_loads_csv(const Scene& scene, const Trajectory& trajectory, const std
       const JointLoad& load = s.loads.joints[j];
       if (has[j].spring) out << ',' << format_number(load.spring);
       if (has[j].damper) out << ',' << format_number(load.damper);
+      if (has[j].friction) out << ',' << format_number(load.friction);
       if (has[j].latch) out << ',' << format_number(load.latch);
       for (int a = 0; a < 6; ++a) out << ',' << format_number(load.reaction[a]);
     }
@@ -147,6 +150,7 @@ void write_summary_json(const Scene& scene, const RunResult& result, const RunSu
   peaks("hinge_peak_moment", summary.hinge_peak_moment);
   json.value("energy_initial", summary.energy_initial);
   json.value("energy_final", summary.energy_final);
+  json.value("energy_dissipated", summary.energy_dissipated);
   json.begin_object("final_q");
   for (const auto& [joint, q] : summary.final_q) json.value(joint, q);
   json.end_object();

@@ -89,8 +89,10 @@ void read_loads(const Scene& scene, const std::string& path, Trajectory& tr) {
       const std::string& name = model.joints[j].name;
       JointLoad& load = s.loads.joints[j];
       const int spring = find("tau_spring." + name), damper = find("tau_damper." + name), latch = find("tau_latch." + name);
+      const int friction = find("tau_friction." + name);
       if (spring >= 0) load.spring = parse(cells[spring], where);
       if (damper >= 0) load.damper = parse(cells[damper], where);
+      if (friction >= 0) load.friction = parse(cells[friction], where);
       if (latch >= 0) load.latch = parse(cells[latch], where);
       for (int a = 0; a < 6; ++a) {
         const int c = find("reaction." + name + "." + wrench_component_name(a));
@@ -132,6 +134,7 @@ Trajectory read_trajectory_csv(const Scene& scene, const std::string& path) {
     gap_rad_col.push_back(need("closure_rad." + loop.name));
   }
   const int energy_col = need("energy");
+  const auto dissipated_col = column.find("energy_dissipated");
 
   Trajectory tr;
   tr.layout.nq = model.nq;
@@ -152,6 +155,7 @@ Trajectory read_trajectory_csv(const Scene& scene, const std::string& path) {
       s.closure.push_back({parse(cells[gap_m_col[l]], where), parse(cells[gap_rad_col[l]], where)});
     }
     s.energy.unattributed = parse(cells[energy_col], where);
+    if (dissipated_col != column.end()) s.energy.dissipated = parse(cells[dissipated_col->second], where);
     if (!tr.samples.empty() && !(s.t > tr.samples.back().t)) throw std::runtime_error(where + ": times must increase");
     tr.samples.push_back(std::move(s));
   }

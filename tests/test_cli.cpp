@@ -117,7 +117,7 @@ TEST(Cli, ValidSceneRunsAndWritesTheThreeFiles) {
   std::getline(csv, header);
   EXPECT_EQ(header,
             "t,q.a,dq.a,p.a,q.b,dq.b,p.b,q.c,dq.c,p.c,q.d,dq.d,p.d,closure_m.rocker,closure_rad.rocker,"
-            "energy");
+            "energy,energy_dissipated");
   int rows = 0;
   for (std::string line; std::getline(csv, line);) ++rows;
   EXPECT_EQ(rows, 11);  // 0, 0.01, ..., 0.1

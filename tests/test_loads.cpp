@@ -89,7 +89,7 @@ TEST(Loads, AxisComponentOfTheReactionIsTheJointTorque) {
   for (int j = 0; j < scene.model.size(); ++j) {
     const JointLoad& load = loads.joints[j];
     const Vec3& axis = scene.model.joints[j].axis;
-    EXPECT_NEAR(axis.dot(load.reaction.tail<3>()), load.spring + load.damper + load.latch, 1e-10) << j;
+    EXPECT_NEAR(axis.dot(load.reaction.tail<3>()), load.spring + load.damper + load.friction + load.latch, 1e-10) << j;
     EXPECT_NE(load.latch, 0.0);
   }
 }

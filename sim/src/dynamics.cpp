@@ -80,12 +80,29 @@ void Dynamics::joint_torques(const double* q, const double* dq, double* Q) const
     const int c = model.coordinate[s.joint];
     Q[c] += s.torque(q[c], dq[c]);
   }
+  for (const JointFriction& f : scene_.friction) Q[model.coordinate[f.joint]] += f.torque(dq[model.coordinate[f.joint]]);
   for (int l = 0; l < latch_count(); ++l) {
     if (!latch_state_.engaged(l)) continue;
     const Latch& latch = scene_.latches[l];
     const int c = model.coordinate[latch.joint];
     Q[c] += latch.torque(q[c], dq[c]);
   }
+}
+
+double Dynamics::dissipation(const double* dq) const {
+  const Model& model = scene_.model;
+  double P = 0;
+  for (const JointSpring& s : scene_.springs) {
+    const double w = dq[model.coordinate[s.joint]];
+    P += s.damping * w * w;
+  }
+  for (const JointFriction& f : scene_.friction) P += f.dissipation(dq[model.coordinate[f.joint]]);
+  for (int l = 0; l < latch_count(); ++l) {
+    if (!latch_state_.engaged(l)) continue;
+    const double w = dq[model.coordinate[scene_.latches[l].joint]];
+    P += scene_.latches[l].damping * w * w;
+  }
+  return P;
 }
 
 bool Dynamics::rhs(double t, const double* y, double* ydot) {
@@ -149,6 +166,7 @@ void Dynamics::loads(double t, const double* y, Loads& out, std::vector<ClosureE
     out.joints[s.joint].spring += -s.stiffness * (q[c] - s.free_position);
     out.joints[s.joint].damper += -s.damping * dq[c];
   }
+  for (const JointFriction& f : scene_.friction) out.joints[f.joint].friction += f.torque(dq[model.coordinate[f.joint]]);
   for (int l = 0; l < latch_count(); ++l) {
     if (!latch_state_.engaged(l)) continue;
     const Latch& latch = scene_.latches[l];

@@ -1,5 +1,7 @@
 #include "newton_preconditioner.hpp"
 
+#include <cmath>
+
 #include "unfurl/sim/dynamics.hpp"
 
 namespace unfurl {
@@ -17,7 +19,7 @@ NewtonPreconditioner::NewtonPreconditioner(Dynamics& dynamics)
       phi_(dynamics.model().size()),
       v_(dynamics.model().size()) {}
 
-void NewtonPreconditioner::setup(const double* y, double gamma) {
+void NewtonPreconditioner::setup(const double* y, const double* ydot, double gamma) {
   const Scene& scene = dynamics_.scene();
   const Model& model = scene.model;
   gamma_ = gamma;
@@ -26,6 +28,12 @@ void NewtonPreconditioner::setup(const double* y, double gamma) {
   for (const JointSpring& s : scene.springs) {
     stiffness_[model.coordinate[s.joint]] += s.stiffness;
     damping_[model.coordinate[s.joint]] += s.damping;
+  }
+  const double* dq = ydot + dynamics_.layout().q();
+  for (const JointFriction& f : scene.friction) {
+    const int c = model.coordinate[f.joint];
+    const double sech = 1 / std::cosh(dq[c] / f.velocity_scale);
+    damping_[c] += f.viscous + f.coulomb / f.velocity_scale * sech * sech;
   }
   for (int l = 0; l < dynamics_.latch_count(); ++l) {
     if (!dynamics_.latch_state().engaged(l)) continue;

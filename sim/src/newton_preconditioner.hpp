@@ -3,8 +3,9 @@
 // costs a few right-hand sides and sweeps instead of a dense Jacobian of
 // n right-hand sides and an O(n^3) factorization.
 //
-// It solves the linear model in which the joints' springs, dampers and
-// engaged latches are the stiff terms and the mass matrix is frozen:
+// It solves the linear model in which the joints' springs, dampers,
+// friction (its slope at the current rate) and engaged latches are the
+// stiff terms and the mass matrix is frozen:
 //   q' = x,  Mtilde x = p,  p' = -K q - D x,
 //   u' = k_pi J q + k_v J x   (J = eps T A, g' = J q' where the loops are
 //   closed; the full tuning's W R^-1 taken as I),
@@ -27,8 +28,9 @@ class NewtonPreconditioner {
  public:
   explicit NewtonPreconditioner(Dynamics& dynamics);
 
-  // Linearizes at the state y (its q) for the Newton matrix I - gamma J.
-  void setup(const double* y, double gamma);
+  // Linearizes at the state y (its q) and its rate ydot (the joint rates,
+  // where friction's slope is taken) for the Newton matrix I - gamma J.
+  void setup(const double* y, const double* ydot, double gamma);
   // z = P^-1 r with the last setup.
   void solve(const double* r, double* z);
 

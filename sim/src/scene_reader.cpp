@@ -47,6 +47,7 @@ class SceneReader : private YamlFields {
   Visual read_visual(const YAML::Node& node, const std::string& field) const;
   void read_springs(const YAML::Node& list, Scene& scene) const;
   void read_dampers(const YAML::Node& list, Scene& scene) const;
+  void read_friction(const YAML::Node& list, Scene& scene) const;
   void read_loads(const YAML::Node& list, Scene& scene) const;
   void read_latches(const YAML::Node& list, Scene& scene) const;
   void read_loops(const YAML::Node& list, Scene& scene);
@@ -236,6 +237,22 @@ void SceneReader::read_dampers(const YAML::Node& list, Scene& scene) const {
   }
 }
 
+void SceneReader::read_friction(const YAML::Node& list, Scene& scene) const {
+  if (!list.IsSequence()) fail(list, "friction", "expected a list");
+  for (std::size_t n = 0; n < list.size(); ++n) {
+    const YAML::Node f = list[n];
+    const std::string field = index_field("friction", n);
+    check_keys(f, {"joint", "coulomb", "viscous", "velocity_scale"}, field);
+    JointFriction friction;
+    friction.joint = joint_by_name(require(f, "joint", field), scene, field + ".joint", true);
+    if (f["coulomb"]) friction.coulomb = non_negative(f["coulomb"], field + ".coulomb");
+    if (f["viscous"]) friction.viscous = non_negative(f["viscous"], field + ".viscous");
+    if (f["velocity_scale"]) friction.velocity_scale = positive(f["velocity_scale"], field + ".velocity_scale");
+    if (!f["coulomb"] && !f["viscous"]) fail(f, field, "give coulomb, viscous or both");
+    scene.friction.push_back(friction);
+  }
+}
+
 void SceneReader::read_loads(const YAML::Node& list, Scene& scene) const {
   if (!list.IsSequence()) fail(list, "loads", "expected a list");
   for (std::size_t n = 0; n < list.size(); ++n) {
@@ -413,7 +430,8 @@ SceneFile SceneReader::read(const std::string& text_in, const std::vector<Overri
   for (const Override& o : overrides) apply_override(root, o, *this);
 
   check_keys(root,
-             {"name", "description", "base", "gravity", "bodies", "springs", "dampers", "loads", "latches",
+             {"name", "description", "base", "gravity", "bodies", "springs", "dampers", "friction", "loads",
+              "latches",
               "loops", "regulator", "initial", "closure_tolerance", "run"},
              "");
   Scene scene;
@@ -437,6 +455,7 @@ SceneFile SceneReader::read(const std::string& text_in, const std::vector<Overri
   if (root["springs"]) read_springs(root["springs"], scene);
   scene.dampers_from = scene.springs.size();
   if (root["dampers"]) read_dampers(root["dampers"], scene);
+  if (root["friction"]) read_friction(root["friction"], scene);
   if (root["loads"]) read_loads(root["loads"], scene);
   if (root["latches"]) read_latches(root["latches"], scene);
   if (root["loops"]) read_loops(root["loops"], scene);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "dissipation_meter.hpp"
 #include "latch_events.hpp"
 #include "run_monitor.hpp"
 
@@ -26,8 +27,9 @@ class Recorder {
   Recorder(Dynamics& dynamics, const RunObserver& observer, Trajectory& trajectory)
       : dynamics_(dynamics), observer_(observer), trajectory_(trajectory) {}
 
-  void record(double t, const std::vector<double>& y) {
+  void record(double t, const std::vector<double>& y, double dissipated) {
     dynamics_.observe(t, y.data(), observation_);
+    observation_.energy.dissipated = dissipated;
     Sample s;
     s.t = t;
     s.y = y;
@@ -72,7 +74,8 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
   std::vector<double> ys(y.size());
   Recorder recorder(dynamics, observer, trajectory);
   const double t0 = 0.0;
-  recorder.record(t0, y);
+  recorder.record(t0, y, 0.0);
+  DissipationMeter dissipation(dynamics, t0);
   // A joint that starts exactly at its latch angle is caught from the start.
   for (int l = 0; l < dynamics.latch_count(); ++l)
     if (dynamics.latch_state().engaged(l)) recorder.event({t0, l, scene.latches[l].joint});
@@ -120,10 +123,12 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
     // Samples up to where this step is done, by the method's interpolant.
     while (sample_index >= 0 && sample_time(sample_index) <= t_done) {
       integrator->interpolate(sample_time(sample_index), ys.data());
-      recorder.record(sample_time(sample_index), ys);
+      dissipation.advance(*integrator, sample_time(sample_index));
+      recorder.record(sample_time(sample_index), ys, dissipation.work());
       sample_index = sample_time(sample_index) >= settings.t_end ? -1 : sample_index + 1;
     }
     integrator->interpolate(t_done, y.data());
+    dissipation.advance(*integrator, t_done);
     if (!group.empty()) {
       events.engage(group, *integrator, y.data());
       std::vector<LatchRoot> roots = group.roots;

@@ -43,10 +43,10 @@ KrylovSolver::KrylovSolver(N_Vector y, SUNContext ctx) : LS(SUNLinSol_SPGMR(y, S
 }
 KrylovSolver::~KrylovSolver() { SUNLinSolFree(LS); }
 
-int precondition_setup(double, N_Vector y, N_Vector, int, int* jcur, double gamma, void* dynamics) {
+int precondition_setup(double, N_Vector y, N_Vector fy, int, int* jcur, double gamma, void* dynamics) {
   // The preconditioner is rebuilt from the current state each time: it
   // costs one pass of the sweep.
-  static_cast<Dynamics*>(dynamics)->preconditioner().setup(N_VGetArrayPointer(y), gamma);
+  static_cast<Dynamics*>(dynamics)->preconditioner().setup(N_VGetArrayPointer(y), N_VGetArrayPointer(fy), gamma);
   *jcur = 1;
   return 0;
 }

@@ -69,6 +69,10 @@ class Dynamics {
   // the loops' geometric gaps if asked.
   void loads(double t, const double* y, Loads& out, std::vector<ClosureError>* closure = nullptr);
 
+  // The power the dampers, friction and engaged latches take out of the
+  // mechanism at joint rates dq (>= 0); its integral is EnergyParts::dissipated.
+  double dissipation(const double* dq) const;
+
  private:
   bool evaluate(double t, const double* y, double* ydot);
   void joint_torques(const double* q, const double* dq, double* Q) const;

@@ -10,7 +10,12 @@ struct EnergyParts {
   double gravity = 0;
   double regulator = 0;
   double unattributed = 0;  // energy known only as a total (a trajectory read back from a file)
+  // Work the dampers, friction and latches have taken out since t = 0: not
+  // part of the total; total() + dissipated is what the run conserves
+  // (without external loads).
+  double dissipated = 0;
   double total() const { return kinetic + springs + latches + gravity + regulator + unattributed; }
+  double balance() const { return total() + dissipated; }
 };
 
 }  // namespace unfurl

@@ -1,5 +1,5 @@
 // The loads an engineer sizes hardware with, at one instant: per joint the
-// generalized force of each element (spring, damper, latch) and the wrench
+// generalized force of each element (spring, damper, friction, latch) and the wrench
 // the parent transmits to the child through the joint; per loop component
 // the regulator's constraint force.
 #pragma once
@@ -17,6 +17,7 @@ struct JointLoad {
   double spring = 0;  // -k (q - q_free), N m (or N for a slider)
   double damper = 0;  // -c dq: the springs' damping and the dampers
   double latch = 0;   // -k_L (q - q_L) - c_L dq once engaged
+  double friction = 0;  // -T_c tanh(dq / v_s) - c_v dq (friction.hpp)
   // The wrench from the parent on the child: force (N) and moment (N m)
   // about the hinge point, in the child body's frame. Its component along
   // the joint's motion axis is the sum of the element forces above.

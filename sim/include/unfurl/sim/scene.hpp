@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "unfurl/sim/forces.hpp"
+#include "unfurl/sim/friction.hpp"
 #include "unfurl/sim/latch.hpp"
 #include "unfurl/sim/loop.hpp"
 #include "unfurl/sim/model.hpp"
@@ -22,6 +23,7 @@ struct Scene {
   Model model;
   std::vector<JointSpring> springs;  // the file's springs, then its dampers
   std::size_t dampers_from = 0;      // springs[dampers_from..] came from `dampers:`
+  std::vector<JointFriction> friction;
   std::vector<BodyLoad> loads;
   std::vector<Latch> latches;
   std::vector<Loop> loops;

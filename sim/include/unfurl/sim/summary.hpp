@@ -27,6 +27,7 @@ struct RunSummary {
   std::vector<NamedPeak> hinge_peak_moment;  // per joint
   double energy_initial = 0;
   double energy_final = 0;
+  double energy_dissipated = 0;  // by dampers, friction and latches up to t_reached
   double t_reached = 0;
   std::vector<std::pair<std::string, double>> final_q;  // joint name, q
 };

@@ -1,0 +1,40 @@
+#include "dissipation_meter.hpp"
+
+#include <cmath>
+
+namespace unfurl {
+
+namespace {
+
+bool has_dissipation(const Scene& scene) {
+  for (const JointSpring& s : scene.springs)
+    if (s.damping > 0) return true;
+  for (const Latch& l : scene.latches)
+    if (l.damping > 0) return true;
+  return !scene.friction.empty();
+}
+
+}  // namespace
+
+DissipationMeter::DissipationMeter(const Dynamics& dynamics, double t0)
+    : dynamics_(dynamics), dissipative_(has_dissipation(dynamics.scene())), t_(t0), ydot_(dynamics.layout().size()) {}
+
+void DissipationMeter::advance(Integrator& integrator, double t) {
+  if (!dissipative_ || !(t > t_)) {
+    t_ = std::max(t_, t);
+    return;
+  }
+  const double half = 0.5 * (t - t_), mid = 0.5 * (t + t_);
+  const double node = std::sqrt(0.6);
+  const double nodes[3] = {-node, 0.0, node};
+  const double weights[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
+  double sum = 0;
+  for (int k = 0; k < 3; ++k) {
+    integrator.interpolate_rate(mid + half * nodes[k], ydot_.data());
+    sum += weights[k] * dynamics_.dissipation(ydot_.data() + dynamics_.layout().q());
+  }
+  work_ += half * sum;
+  t_ = t;
+}
+
+}  // namespace unfurl

@@ -1,0 +1,32 @@
+// The work the dampers, friction and engaged latches take out of a run,
+// integrated along the integrator's steps so the energy balance
+// (EnergyParts::balance) can be checked to the run's own accuracy.
+#pragma once
+
+#include <vector>
+
+#include "unfurl/sim/dynamics.hpp"
+#include "unfurl/sim/integrator.hpp"
+
+namespace unfurl {
+
+class DissipationMeter {
+ public:
+  DissipationMeter(const Dynamics& dynamics, double t0);
+
+  // Adds the work over [t_, t] by three-point Gauss-Legendre quadrature of
+  // the dissipated power on the integrator's interpolant of the joint rates.
+  // [t_, t] must lie within the step the integrator has just taken, and the
+  // latch states must be those of that step (advance before engaging).
+  void advance(Integrator& integrator, double t);
+  double work() const { return work_; }
+
+ private:
+  const Dynamics& dynamics_;
+  bool dissipative_;
+  double t_;
+  double work_ = 0;
+  std::vector<double> ydot_;
+};
+
+}  // namespace unfurl
