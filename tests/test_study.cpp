@@ -59,6 +59,11 @@ TEST(StudyFile, ErrorsNameTheFileLineColumnAndField) {
       "scene: pantograph\ncombine: zip\nvary:\n  - {path: springs.j1.stiffness, values: [0.1, 0.2]}\n"
       "  - {path: springs.j2.stiffness, values: [0.1]}\n");
   EXPECT_NE(zip.find("one length"), std::string::npos) << zip;
+  const std::string misplaced = error_of("scene: pantograph\nfailures:\n  - {stuck: j1, coulomb: 0.1}\n");
+  EXPECT_NE(misplaced.find("failures[0].coulomb: only an extra_friction has a coulomb"), std::string::npos)
+      << misplaced;
+  const std::string bare = error_of("scene: pantograph\nfailures:\n  - {extra_friction: j1}\n");
+  EXPECT_NE(bare.find("needs coulomb (N m), viscous (N m s/rad) or both"), std::string::npos) << bare;
 }
 
 TEST(StudyCases, ProductAndZipOfLists) {
@@ -106,9 +111,10 @@ TEST(StudyCases, RandomDrawsAreReproducibleAndTruncated) {
 TEST(StudyCases, FailuresChangeTheSceneAsNamed) {
   const Study study = study_from(
       "scene: pantograph\nfailures:\n  - {latch_fails: j3}\n  - {spring_breaks: j1}\n"
-      "  - {preload_loss: j2, fraction: 0.5}\n  - {stuck: \"*\"}\n");
+      "  - {preload_loss: j2, fraction: 0.5}\n  - {stuck: \"*\"}\n"
+      "  - {extra_friction: j4, coulomb: 0.05, viscous: 0.01}\n");
   const auto cases = study_cases(study);
-  ASSERT_EQ(cases.size(), 1u + 3 + 11);
+  ASSERT_EQ(cases.size(), 1u + 3 + 11 + 1);
   EXPECT_EQ(cases[1].id, "fail-latch-j3-fails");
   const Scene nominal = nominal_scene(study).scene;
   const Scene no_latch = case_scene(study, cases[1]);
@@ -122,6 +128,12 @@ TEST(StudyCases, FailuresChangeTheSceneAsNamed) {
   ASSERT_EQ(stuck.latches.size(), 9u);
   EXPECT_EQ(stuck.latches.back().joint, 0);
   EXPECT_EQ(stuck.latches.back().position, nominal.q0[0]);
+  EXPECT_EQ(cases.back().id, "fail-hinge-j4-friction-0.05Nm-0.01Nms");
+  const Scene cold = case_scene(study, cases.back());
+  ASSERT_EQ(cold.friction.size(), nominal.friction.size() + 1);
+  EXPECT_EQ(nominal.model.joints[cold.friction.back().joint].name, "j4");
+  EXPECT_EQ(cold.friction.back().coulomb, 0.05);
+  EXPECT_EQ(cold.friction.back().viscous, 0.01);
 }
 
 // The runs of injected failures: the array deploys without one spring; a
@@ -130,7 +142,7 @@ TEST(StudyCases, FailuresChangeTheSceneAsNamed) {
 TEST(StudyCases, FailedCasesReportWhatHappened) {
   const Study study = study_from(
       "scene: pantograph\nset: {run.rtol: 1.0e-6, run.atol: 1.0e-9, run.t_end: 9}\n"
-      "failures:\n  - {latch_fails: j3}\n  - {stuck: j1}\n");
+      "failures:\n  - {latch_fails: j3}\n  - {stuck: j1}\n  - {extra_friction: j1, coulomb: 0.05}\n");
   const Scene nominal = nominal_scene(study).scene;
   const CaseColumns columns = case_columns(study, nominal);
   const auto cases = study_cases(study);
@@ -148,6 +160,11 @@ TEST(StudyCases, FailedCasesReportWhatHappened) {
   // (1000 N m/rad), yields 0.01 rad to the other seven springs, against the
   // 1.56 rad it travels when free.
   EXPECT_LT(std::abs(stuck.angle.back() - stuck.angle.front()), 0.02);
+  // Friction on the root hinge slows the whole array: it still latches, later
+  // (8.05 s against 7.39 s).
+  const CaseResult cold = case_result(study, nominal, cases[3], simulate_case(study, cases[3]));
+  EXPECT_EQ(cold.status, CaseStatus::deployed) << cold.reason;
+  EXPECT_GT(output_value(columns, cold, "deployment_time_s"), 7.3921759 + 0.1);
 }
 
 TEST(StudyStatistics, CountsAndDriversOverDeployedCasesWithoutInjectedFailures) {

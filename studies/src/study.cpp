@@ -16,11 +16,13 @@ bool ends_with(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
 
-std::string percent(double fraction) {
+std::string short_number(double x) {
   char text[32];
-  std::snprintf(text, sizeof text, "%g", 100 * fraction);
+  std::snprintf(text, sizeof text, "%g", x);
   return text;
 }
+
+std::string percent(double fraction) { return short_number(100 * fraction); }
 
 std::string scalar_text(const YamlFields& fields, const YAML::Node& node, const std::string& field) {
   if (!node.IsScalar()) fields.fail(node, field, "expected a single value");
@@ -228,19 +230,24 @@ class StudyReader {
       const YAML::Node item = list[i];
       const std::string field = index_field("failures", i);
       fields_.check_map(item, field);
-      fields_.check_keys(item, {"latch_fails", "spring_breaks", "preload_loss", "stuck", "fraction"}, field);
+      fields_.check_keys(item,
+                         {"latch_fails", "spring_breaks", "preload_loss", "stuck", "extra_friction", "fraction",
+                          "coulomb", "viscous"},
+                         field);
       StudyFailure f;
       const char* key = nullptr;
       for (const auto& [name, kind] : {std::pair{"latch_fails", StudyFailure::Kind::latch_fails},
                                        std::pair{"spring_breaks", StudyFailure::Kind::spring_breaks},
                                        std::pair{"preload_loss", StudyFailure::Kind::preload_loss},
-                                       std::pair{"stuck", StudyFailure::Kind::stuck}})
+                                       std::pair{"stuck", StudyFailure::Kind::stuck},
+                                       std::pair{"extra_friction", StudyFailure::Kind::extra_friction}})
         if (item[name]) {
           if (key) fields_.fail(item, field, "one failure per entry");
           key = name;
           f.kind = kind;
         }
-      if (!key) fields_.fail(item, field, "expected latch_fails, spring_breaks, preload_loss or stuck");
+      if (!key)
+        fields_.fail(item, field, "expected latch_fails, spring_breaks, preload_loss, stuck or extra_friction");
       if (f.kind == StudyFailure::Kind::preload_loss) {
         const YAML::Node fraction = fields_.require(item, "fraction", field + ".fraction");
         f.fraction = fields_.number(fraction, field + ".fraction");
@@ -248,6 +255,7 @@ class StudyReader {
       } else if (item["fraction"]) {
         fields_.fail(item["fraction"], field + ".fraction", "only a preload_loss has a fraction");
       }
+      read_friction(item, field, f);
       const YAML::Node joint = item[key];
       for (const std::string& name : failure_joints(joint, field + "." + key, f.kind)) {
         f.joint = name;
@@ -256,13 +264,27 @@ class StudyReader {
     }
   }
 
+  // extra_friction's coulomb and viscous: at least one, both non-negative.
+  void read_friction(const YAML::Node& item, const std::string& field, StudyFailure& f) {
+    const bool friction = f.kind == StudyFailure::Kind::extra_friction;
+    for (const char* key : {"coulomb", "viscous"}) {
+      const YAML::Node value = item[key];
+      if (!value) continue;
+      const std::string where = field + "." + key;
+      if (!friction) fields_.fail(value, where, "only an extra_friction has a " + std::string(key));
+      (key[0] == 'c' ? f.coulomb : f.viscous) = fields_.non_negative(value, where);
+    }
+    if (friction && !item["coulomb"] && !item["viscous"])
+      fields_.fail(item, field, "an extra_friction needs coulomb (N m), viscous (N m s/rad) or both");
+  }
+
   // The joints a failure names; "*" is every joint it can apply to.
   std::vector<std::string> failure_joints(const YAML::Node& node, const std::string& field, StudyFailure::Kind kind) {
     std::vector<std::string> candidates;
     const Model& m = nominal_.model;
     if (kind == StudyFailure::Kind::latch_fails)
       for (const Latch& l : nominal_.latches) candidates.push_back(m.joints[l.joint].name);
-    else if (kind == StudyFailure::Kind::stuck)
+    else if (kind == StudyFailure::Kind::stuck || kind == StudyFailure::Kind::extra_friction)
       for (const Joint& j : m.joints) {
         if (j.dof() > 0) candidates.push_back(j.name);
       }
@@ -272,7 +294,8 @@ class StudyReader {
     if (name == "*") return candidates;
     if (std::find(candidates.begin(), candidates.end(), name) == candidates.end()) {
       const char* what = kind == StudyFailure::Kind::latch_fails ? "a latch"
-                         : kind == StudyFailure::Kind::stuck     ? "a moving joint"
+                         : kind == StudyFailure::Kind::stuck || kind == StudyFailure::Kind::extra_friction
+                             ? "a moving joint"
                                                                  : "a spring";
       fields_.fail(node, field, "'" + name + "' is not a joint with " + what + " (or \"*\" for every one)");
     }
@@ -308,6 +331,9 @@ std::string StudyFailure::id() const {
     case Kind::spring_breaks: return "spring-" + joint + "-breaks";
     case Kind::preload_loss: return "spring-" + joint + "-loses-" + percent(fraction) + "pc";
     case Kind::stuck: return "hinge-" + joint + "-stuck";
+    case Kind::extra_friction:
+      return "hinge-" + joint + "-friction" + (coulomb > 0 ? "-" + short_number(coulomb) + "Nm" : "") +
+             (viscous > 0 ? "-" + short_number(viscous) + "Nms" : "");
   }
   return "";
 }
@@ -318,6 +344,13 @@ std::string StudyFailure::describe() const {
     case Kind::spring_breaks: return "spring " + joint + " broken";
     case Kind::preload_loss: return "spring " + joint + " loses " + percent(fraction) + " % of its preload";
     case Kind::stuck: return "hinge " + joint + " stuck";
+    case Kind::extra_friction: {
+      std::string what = "hinge " + joint + " with extra friction:";
+      if (coulomb > 0) what += " Coulomb " + short_number(coulomb) + " N m";
+      if (coulomb > 0 && viscous > 0) what += " +";
+      if (viscous > 0) what += " viscous " + short_number(viscous) + " N m s/rad";
+      return what;
+    }
   }
   return "";
 }

@@ -119,6 +119,14 @@ void apply_failure(Scene& scene, const StudyFailure& f) {
     case StudyFailure::Kind::spring_breaks: spring_of(scene, joint).stiffness = 0; break;
     case StudyFailure::Kind::preload_loss: scale_preload(scene, joint, 1 - f.fraction); break;
     case StudyFailure::Kind::stuck: make_stuck(scene, joint); break;
+    case StudyFailure::Kind::extra_friction: {
+      JointFriction friction;
+      friction.joint = joint;
+      friction.coulomb = f.coulomb;
+      friction.viscous = f.viscous;
+      scene.friction.push_back(friction);
+      break;
+    }
   }
 }
 

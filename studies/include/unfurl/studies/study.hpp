@@ -33,10 +33,12 @@ struct StudyVariable {
 
 // A fault injected into the nominal scene, one case each.
 struct StudyFailure {
-  enum class Kind { latch_fails, spring_breaks, preload_loss, stuck };
+  enum class Kind { latch_fails, spring_breaks, preload_loss, stuck, extra_friction };
   Kind kind = Kind::latch_fails;
   std::string joint;
   double fraction = 0;  // preload_loss: the part of the preload lost
+  double coulomb = 0;   // extra_friction: added Coulomb torque, N m (friction.hpp)
+  double viscous = 0;   // extra_friction: added viscous coefficient, N m s/rad
 
   // "latch-j3-fails", used in the case id.
   std::string id() const;
