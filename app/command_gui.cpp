@@ -11,6 +11,7 @@ namespace unfurl::app {
 namespace {
 const char* kHelp =
     "usage: unfurl gui [SCENE] [--script FILE] [scene options]\n"
+    "       unfurl gui --study STUDY.yaml --out DIR [--case ID]\n"
     "\n"
     "Opens the workbench: a 3D view (left drag orbits, right drag pans, the wheel zooms), a timeline\n"
     "(play, pause, speed, scrub, step, loop; latches marked), the parameters of the scene's springs,\n"
@@ -19,14 +20,24 @@ const char* kHelp =
     "frames or video of a time range, and of the trajectory. The scene file is reloaded when it\n"
     "changes. Needs a display (DISPLAY; Xvfb works).\n"
     "\n"
+    "With --study, it opens a study that `unfurl sweep STUDY.yaml --out DIR` ran: the Study\n"
+    "tab shows the counts, histograms of deployment time and peak latch torque, and the table\n"
+    "of cases (sortable by any column); a click on a case re-runs it here, where it plays,\n"
+    "plots and takes edits like any scene.\n"
+    "\n"
     "options:\n"
     "  --script FILE         run a scripted session (see app/gui/gui_script.hpp for the commands)\n"
+    "  --study STUDY.yaml    a study file, with --out DIR: the directory its sweep wrote\n"
+    "  --case ID             the case to show first (default: the first finished one)\n"
     "%s";
 }  // namespace
 
 int command_gui(const std::vector<std::string>& argv) {
   std::set<std::string> valued = scene_flags();
   valued.insert("--script");
+  valued.insert("--study");
+  valued.insert("--out");
+  valued.insert("--case");
   const Args args(argv, valued, {"--help", "-h"});
   if (args.has("--help") || args.has("-h")) {
     std::printf(kHelp, scene_flags_help());
@@ -35,7 +46,15 @@ int command_gui(const std::vector<std::string>& argv) {
   if (args.positionals().size() > 1) throw UsageError("gui takes one SCENE (see --help)");
   std::vector<ScriptCommand> script;
   if (const auto file = args.get("--script")) script = read_gui_script(*file);
-  GuiApp app(args.positionals().empty() ? "pantograph" : args.positionals()[0], overrides_from(args), script);
+  std::optional<StudyToOpen> study;
+  if (const auto file = args.get("--study")) {
+    if (!args.get("--out")) throw UsageError("--study needs --out DIR, the directory unfurl sweep wrote");
+    if (!args.positionals().empty()) throw UsageError("--study shows the study's own scene: give no SCENE");
+    study = StudyToOpen{*file, *args.get("--out"), args.get("--case").value_or("")};
+  } else if (args.get("--out") || args.get("--case")) {
+    throw UsageError("--out and --case go with --study");
+  }
+  GuiApp app(args.positionals().empty() ? "pantograph" : args.positionals()[0], overrides_from(args), script, study);
   return app.run();
 }
 

@@ -80,6 +80,7 @@ render::PlotSpec overlay(const StudyReport& report) {
   spec.title = "angle of " + report.study.overlay_joint + " in every case";
   spec.x_label = "t, s";
   spec.y_label = "q." + report.study.overlay_joint + ", rad";
+  spec.ghost_label = "other cases (red: not deployed)";
   for (const CaseResult& r : report.results) {
     if (r.angle_t.empty()) continue;
     render::Series s;

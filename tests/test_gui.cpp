@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -67,6 +68,7 @@ TEST(Gui, ScriptedSessionPlaysScrubsChangesAPreloadAndReruns) {
                                         "wait 0.3\n"
                                         "screenshot " << (dir / "second.png").string() << "\n"
                                         "save_frame " << (dir / "view.png").string() << "\n"
+                                        "idle 3\n"
                                         "report " << (dir / "second.json").string() << "\n"
                                         "quit\n";
   const std::string command = "timeout 300 xvfb-run -a -s '-screen 0 1280x800x24' " + std::string(UNFURL_BINARY) +
@@ -83,7 +85,10 @@ TEST(Gui, ScriptedSessionPlaysScrubsChangesAPreloadAndReruns) {
     colours.insert(shot.rgb[k] << 16 | shot.rgb[k + 1] << 8 | shot.rgb[k + 2]);
   EXPECT_GT(colours.size(), 500u);
   EXPECT_GT(cell_pixels(shot, 0, 60, shot.width * 6 / 10, shot.height / 2), 2000);
+  // Save frame draws at the export form's size (1280x720), not the viewport's.
   const render::Image view = test::read_png((dir / "view.png").string());
+  EXPECT_EQ(view.width, 1280);
+  EXPECT_EQ(view.height, 720);
   EXPECT_GT(cell_pixels(view, 0, 0, view.width, view.height), 2000);
 
   // The new run differs from the old: chain A's root latch moved.
@@ -93,6 +98,13 @@ TEST(Gui, ScriptedSessionPlaysScrubsChangesAPreloadAndReruns) {
   ASSERT_FALSE(std::isnan(after)) << report;
   EXPECT_GT(std::abs(after - before), 1e-3) << report;
   EXPECT_NE(report.find("springs.0.free_position=1.3"), std::string::npos);
+  // Idle (nothing playing, computing or moving) it draws on events only: a
+  // few frames and a small part of a core in 3 s, not 60 frames a second.
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(report, m, std::regex("\"idle_cpu_fraction\": ([0-9.eE+-]+)"))) << report;
+  EXPECT_LT(std::stod(m[1]), 0.1) << report;
+  ASSERT_TRUE(std::regex_search(report, m, std::regex("\"idle_frames\": ([0-9]+)"))) << report;
+  EXPECT_LE(std::stol(m[1]), 10) << report;
   // The first run's report saw one run and no previous.
   EXPECT_TRUE(std::isnan(latch_time(slurp(dir / "first.json"), "previous", "j1")));
   std::printf("%s\n", report.c_str());
@@ -127,6 +139,67 @@ TEST(Gui, OpeningAnotherSceneDropsThePreviousScenesRuns) {
   const std::string report = slurp(dir / "opened.json");
   EXPECT_FALSE(std::isnan(latch_time(report, "current", "j8"))) << report;  // the pantograph's own run
   EXPECT_TRUE(std::isnan(latch_time(report, "previous", "j1"))) << "the z-fold's run became the ghost: " << report;
+}
+
+// A finished study in the workbench: the Study tab lists its cases; picking
+// one (here by the script, as a click does) re-runs that case, whose latch
+// times are the study's own for it; a failure case (a latch removed) then
+// loads without drawing the other case's run as its ghost.
+TEST(Gui, StudyCasesOpenFromTheStudyTab) {
+  if (!app::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
+  const fs::path dir = fs::temp_directory_path() / ("unfurl_gui_study_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string study = std::string(UNFURL_SOURCE_DIR) + "/tests/studies/small_monte_carlo.yaml";
+  const test::CommandOutcome sweep =
+      test::run_command(std::string(UNFURL_BINARY) + " sweep " + study + " --out " + (dir / "study").string() + " --quiet");
+  ASSERT_EQ(sweep.code, 0) << sweep.output;
+  std::ofstream(dir / "session.txt") << "wait_run\n"
+                                        "report " << (dir / "nominal.json").string() << "\n"
+                                        "case case-0003\n"
+                                        "wait_run\n"
+                                        "scrub 8\n"
+                                        "wait 0.3\n"
+                                        "screenshot " << (dir / "case.png").string() << "\n"
+                                        "report " << (dir / "case.json").string() << "\n"
+                                        "case fail-latch-j3-fails\n"
+                                        "wait_run\n"
+                                        "report " << (dir / "failure.json").string() << "\n"
+                                        "quit\n";
+  const std::string command = "timeout 300 xvfb-run -a -s '-screen 0 1280x800x24' " + std::string(UNFURL_BINARY) +
+                              " gui --study " + study + " --out " + (dir / "study").string() + " --script " +
+                              (dir / "session.txt").string() + " > " + (dir / "log.txt").string() + " 2>&1";
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << slurp(dir / "log.txt");
+
+  const std::string nominal = slurp(dir / "nominal.json"), shown = slurp(dir / "case.json");
+  EXPECT_NE(nominal.find("\"study_case\": \"nominal\""), std::string::npos) << nominal;
+  EXPECT_NE(shown.find("\"study_case\": \"case-0003\""), std::string::npos) << shown;
+  EXPECT_NE(shown.find("\"study_rows\": 6"), std::string::npos) << shown;
+  // The case's latch time of j1, as the sweep recorded it in cases.csv
+  // (whose ids and numbers hold no commas).
+  const auto cells = [](const std::string& line) {
+    std::vector<std::string> out;
+    std::stringstream in(line);
+    for (std::string cell; std::getline(in, cell, ',');) out.push_back(cell);
+    return out;
+  };
+  std::ifstream cases(dir / "study" / "cases.csv");
+  std::string line, j1_time;
+  std::getline(cases, line);
+  const std::vector<std::string> header = cells(line);
+  const std::size_t column = std::find(header.begin(), header.end(), "latch_time_s.j1") - header.begin();
+  while (std::getline(cases, line))
+    if (line.rfind("case-0003,", 0) == 0 && cells(line).size() > column) j1_time = cells(line)[column];
+  ASSERT_FALSE(j1_time.empty());
+  EXPECT_NEAR(latch_time(shown, "current", "j1"), std::stod(j1_time), 1e-9) << shown;
+  EXPECT_FALSE(std::isnan(latch_time(shown, "previous", "j1"))) << "the nominal case is the ghost: " << shown;
+  const std::string failure = slurp(dir / "failure.json");
+  EXPECT_NE(failure.find("\"study_case\": \"fail-latch-j3-fails\""), std::string::npos) << failure;
+  EXPECT_TRUE(std::isnan(latch_time(failure, "current", "j3"))) << failure;
+  EXPECT_TRUE(std::isnan(latch_time(failure, "previous", "j1"))) << "a run with other latches became the ghost";
+  const render::Image shot = test::read_png((dir / "case.png").string());
+  EXPECT_GT(cell_pixels(shot, 0, 60, shot.width * 6 / 10, shot.height / 2), 2000);
 }
 
 }  // namespace

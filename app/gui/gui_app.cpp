@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <thread>
 
+#include "unfurl/render/frame_renderer.hpp"
 #include "unfurl/render/imgui_layer.hpp"
 #include "unfurl/render/window_surface.hpp"
 #include "output_file.hpp"
@@ -37,7 +38,8 @@ std::optional<std::filesystem::file_time_type> modification_time(const std::stri
 
 }  // namespace
 
-GuiApp::GuiApp(const std::string& scene_name, std::vector<Override> command_line_set, std::vector<ScriptCommand> script)
+GuiApp::GuiApp(const std::string& scene_name, std::vector<Override> command_line_set, std::vector<ScriptCommand> script,
+               std::optional<StudyToOpen> study)
     : window_(1280, 800, "unfurl"), script_(std::move(script)) {
   state_.command_line_set = std::move(command_line_set);
   IMGUI_CHECKVERSION();
@@ -48,6 +50,15 @@ GuiApp::GuiApp(const std::string& scene_name, std::vector<Override> command_line
   ImGui_ImplGlfw_InitForOpenGL(window_.handle(), true);
   ImGui_ImplOpenGL3_Init("#version 330");
   meshes_ = std::make_unique<render::MeshLibrary>(std::vector<std::string>{});
+  if (study) {
+    state_.study = open_study(study->study_path, study->dir);
+    state_.select_study_tab = true;
+    const std::string id = study->case_id.empty() ? state_.study->rows.front().id : study->case_id;
+    if (!state_.study->find_case(id))
+      throw std::runtime_error(study->study_path + ": no case '" + id + "' (ids: nominal, case-0001, ..., fail-...)");
+    if (show_case(id)) return;
+    throw std::runtime_error(state_.scene_error);
+  }
   if (!load_and_run(scene_name)) {
     // Show the error over a scene that loads: the built-in pantograph.
     const std::string error = state_.scene_error;
@@ -67,15 +78,41 @@ GuiApp::~GuiApp() {
   ImGui::DestroyContext();
 }
 
+bool GuiApp::show_case(const std::string& id) {
+  const std::string shown = state_.study->shown;
+  const std::vector<Override> edits = state_.edits;
+  state_.study->shown = id;
+  if (shown != id) state_.edits.clear();
+  if (load_and_run(state_.study->study.scene)) return true;
+  state_.study->shown = shown;
+  state_.edits = edits;
+  return false;
+}
+
+namespace {
+
+// Whether a run of `a` can be drawn as the ghost of `b`: the same bodies,
+// coordinates, latches and loops (a study's failure cases add or remove
+// latches).
+bool same_structure(const Scene& a, const Scene& b) {
+  return a.name == b.name && a.model.size() == b.model.size() && a.model.nq == b.model.nq &&
+         a.latches.size() == b.latches.size() && a.loops.size() == b.loops.size();
+}
+
+}  // namespace
+
 bool GuiApp::load_and_run(const std::string& name) {
   try {
     std::vector<Override> overrides = state_.command_line_set;
     overrides.insert(overrides.end(), state_.edits.begin(), state_.edits.end());
-    SceneFile file = read_scene_named(name, overrides);
+    const StudyCase* shown_case =
+        state_.study && !state_.study->shown.empty() ? state_.study->find_case(state_.study->shown) : nullptr;
+    SceneFile file = shown_case ? case_scene_file(state_.study->study, *shown_case, overrides)
+                                : read_scene_named(name, overrides);
     Scene& scene = file.scene;
     auto meshes = std::make_unique<render::MeshLibrary>(mesh_directories(scene));
     auto view = std::make_unique<render::SceneView>(scene, file.visuals, *meshes);
-    const bool same_scene = name == state_.scene_name && scene.name == state_.scene.name;
+    const bool same_scene = name == state_.scene_name && same_structure(scene, state_.scene);
     state_.scene = std::move(scene);
     state_.visuals = std::move(file.visuals);
     state_.scene_name = name;
@@ -259,6 +296,12 @@ void GuiApp::layout_and_panels(Requests& requests) {
       export_panel(state_, requests);
       ImGui::EndTabItem();
     }
+    if (state_.study &&
+        ImGui::BeginTabItem("Study", nullptr, state_.select_study_tab ? ImGuiTabItemFlags_SetSelected : 0)) {
+      study_panel(state_, requests);
+      ImGui::EndTabItem();
+    }
+    state_.select_study_tab = false;
     ImGui::EndTabBar();
   }
   ImGui::End();
@@ -284,9 +327,15 @@ void GuiApp::apply(const Requests& r) {
   }
   if (r.open) {
     const auto kept = state_.edits;
+    const std::string kept_case = state_.study ? state_.study->shown : "";
     state_.edits.clear();
-    if (!load_and_run(*r.open)) state_.edits = kept;
+    if (state_.study) state_.study->shown.clear();
+    if (!load_and_run(*r.open)) {
+      state_.edits = kept;
+      if (state_.study) state_.study->shown = kept_case;
+    }
   }
+  if (r.open_case && state_.study) show_case(*r.open_case);
   if (r.reload) load_and_run(state_.scene_name);
   if (r.save_frame) save_view_png(*r.save_frame);
   if (r.save_trajectory) {
@@ -316,10 +365,16 @@ void GuiApp::save_view_png(const std::string& path) {
   try {
     const std::string dir = std::filesystem::path(path).parent_path().string();
     if (!dir.empty()) make_directory(dir);
+    // At the export form's size, not the viewport's: the same camera and
+    // play-head, drawn again off screen.
+    const int w = std::clamp(state_.export_form.size[0], 16, 8192), h = std::clamp(state_.export_form.size[1], 16, 8192);
+    render::FrameRenderer renderer(state_.scene, state_.visuals, w, h, mesh_directories(state_.scene));
+    std::vector<Pose> poses;
+    current_poses(poses);
     render::Image image;
-    viewport_->read(image);
+    renderer.frame(poses, state_.play_time, state_.camera, image);
     write_png(image, path);
-    state_.notice = "saved " + path;
+    state_.notice = "saved " + path + " (" + std::to_string(w) + "x" + std::to_string(h) + ")";
   } catch (const std::exception& e) {
     state_.notice = e.what();
   }
@@ -354,8 +409,29 @@ void GuiApp::record_frame_time(double seconds) {
   }
 }
 
+bool GuiApp::busy() const {
+  return state_.playing || state_.progress.running || state_.generation < state_.requested_generation ||
+         export_job_ || (!script_.finished() && !script_.idling()) || ImGui::GetIO().WantTextInput;
+}
+
+void GuiApp::wait_for_events() {
+  // Idle, the window is drawn on events only (and once a second for the
+  // scene file's watch): a frame costs a core in software GL. After an
+  // event a few more frames let hover and release effects settle.
+  if (busy() || settling_frames_ > 0) {
+    glfwPollEvents();
+    settling_frames_ = std::max(0, settling_frames_ - 1);
+    return;
+  }
+  const double before = now_seconds();
+  glfwWaitEventsTimeout(script_.idling() ? std::clamp(script_.idle_left(before), 0.001, 1.0) : 1.0);
+  waited_ = now_seconds() - before;
+  if (waited_ < 0.99) settling_frames_ = 3;
+}
+
 void GuiApp::frame() {
-  glfwPollEvents();
+  wait_for_events();
+  ++state_.frames;
   sync_run();
   watch_scene_file();
   if (export_job_) {
@@ -389,14 +465,17 @@ void GuiApp::frame() {
 int GuiApp::run() {
   double last = now_seconds();
   while (!window_.should_close() && !quit_) {
+    waited_ = 0;
     frame();
     // At most about 60 frames per second: the solver thread needs the rest.
     const double before_sleep = now_seconds();
-    const double spare = 1.0 / 60 - (before_sleep - last);
+    const double spare = 1.0 / 60 - (before_sleep - last - waited_);
     if (spare > 0) std::this_thread::sleep_for(std::chrono::duration<double>(spare));
     const double now = now_seconds();
-    record_frame_time(now - last);
-    advance_playback(now - last);
+    // Time spent waiting for input is neither a slow frame nor playback.
+    const double dt = now - last - waited_;
+    if (waited_ == 0) record_frame_time(dt);
+    advance_playback(dt);
     last = now;
   }
   return exit_code_;

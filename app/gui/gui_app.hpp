@@ -23,10 +23,15 @@
 
 namespace unfurl::app {
 
+// A finished study to open with the workbench, and the case to show first.
+struct StudyToOpen {
+  std::string study_path, dir, case_id;
+};
+
 class GuiApp : private ScriptTarget {
  public:
   GuiApp(const std::string& scene_name, std::vector<Override> command_line_set,
-         std::vector<ScriptCommand> script);
+         std::vector<ScriptCommand> script, std::optional<StudyToOpen> study = std::nullopt);
   ~GuiApp();
   GuiApp(const GuiApp&) = delete;
   GuiApp& operator=(const GuiApp&) = delete;
@@ -36,6 +41,10 @@ class GuiApp : private ScriptTarget {
 
  private:
   void frame();
+  // Whether anything changes without input: playback, a run, an export, a
+  // script, a text field being edited.
+  bool busy() const;
+  void wait_for_events();
   void sync_run();
   void advance_playback(double dt);
   void watch_scene_file();
@@ -57,6 +66,9 @@ class GuiApp : private ScriptTarget {
   // Loads the scene with the command-line and panel edits; on success swaps
   // it in (and its meshes) and starts a run. Errors go to state_.scene_error.
   bool load_and_run(const std::string& name);
+  // Shows case `id` of the open study (with the current edits); false and
+  // state_.scene_error when it does not load.
+  bool show_case(const std::string& id);
   void start_run();
   Eigen::AlignedBox3f swept_bounds() const;
   void current_poses(std::vector<Pose>& poses) const;
@@ -77,6 +89,8 @@ class GuiApp : private ScriptTarget {
   SimulationWorker worker_;
 
   ScriptRunner script_;
+  int settling_frames_ = 3;
+  double waited_ = 0;  // seconds the last frame waited for input
   bool quit_ = false;
   int exit_code_ = 0;
   double last_file_check_ = 0;

@@ -40,7 +40,10 @@ void toolbar_panel(GuiState& state, Requests& requests) {
   ImGui::SameLine();
   if (ImGui::Button("Reload")) requests.reload = true;
   ImGui::SameLine();
-  ImGui::TextDisabled("%s", state.scene.source.c_str());
+  if (state.study && !state.study->shown.empty())
+    ImGui::TextDisabled("%s of study %s", state.study->shown.c_str(), state.study->study_path.c_str());
+  else
+    ImGui::TextDisabled("%s", state.scene.source.c_str());
   if (state.progress.running || state.generation < state.requested_generation) {
     ImGui::SameLine();
     const float pulse = 0.6f + 0.4f * std::sin(static_cast<float>(ImGui::GetTime()) * 6);
@@ -92,6 +95,16 @@ void timeline_panel(GuiState& state) {
   ImGui::Checkbox("loop", &state.loop);
   ImGui::SameLine();
   ImGui::Text("t = %.3f s", state.play_time);
+  const bool computed_here = !state.trajectory.empty() && state.play_time <= state.trajectory.t_end() + 1e-9;
+  if (!computed_here) {
+    // The view shows the last computed state until the run gets here.
+    ImGui::SameLine();
+    if (state.trajectory.empty())
+      ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.2f, 1), "not computed yet");
+    else
+      ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.2f, 1), "not computed yet: showing t = %.3f s",
+                         state.trajectory.t_end());
+  }
 
   // The scrubber, with what is computed shaded and the latches marked.
   float t = static_cast<float>(state.play_time);
@@ -101,10 +114,26 @@ void timeline_panel(GuiState& state) {
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const float computed = static_cast<float>(std::min(1.0, state.progress.t_reached / t_end));
   draw->AddRectFilled(ImVec2(lo.x, hi.y - 3), ImVec2(lo.x + computed * (hi.x - lo.x), hi.y), IM_COL32(80, 170, 255, 200));
-  for (const LatchEvent& e : state.trajectory.events) {
-    const float x = lo.x + static_cast<float>(e.t / t_end) * (hi.x - lo.x);
-    draw->AddLine(ImVec2(x, lo.y), ImVec2(x, hi.y), IM_COL32(255, 90, 90, 255), 2);
-  }
+  // Latches: this run's full height in red, the previous run's (the
+  // ghost) in the lower half in grey; the joint's name on hover.
+  const bool hovered = ImGui::IsItemHovered();
+  const float mouse_x = ImGui::GetIO().MousePos.x;
+  std::string names;
+  auto marks = [&](const Trajectory& tr, float top, ImU32 colour, const char* which) {
+    for (const LatchEvent& e : tr.events) {
+      const float x = lo.x + static_cast<float>(e.t / t_end) * (hi.x - lo.x);
+      draw->AddLine(ImVec2(x, top), ImVec2(x, hi.y), colour, 2);
+      if (hovered && std::abs(mouse_x - x) <= 3 && e.joint < state.scene.model.size()) {
+        char line[128];
+        std::snprintf(line, sizeof line, "%slatch %s at %.6f s (%s run)", names.empty() ? "" : "\n",
+                      state.scene.model.joints[e.joint].name.c_str(), e.t, which);
+        names += line;
+      }
+    }
+  };
+  marks(state.ghost, 0.5f * (lo.y + hi.y), IM_COL32(170, 170, 170, 220), "previous");
+  marks(state.trajectory, lo.y, IM_COL32(255, 90, 90, 255), "this");
+  if (!names.empty()) ImGui::SetTooltip("%s", names.c_str());
   state.play_time = std::clamp(state.play_time, 0.0, t_end);
 }
 
@@ -214,15 +243,20 @@ void plots_panel(GuiState& state, unsigned texture, const std::vector<render::Pl
       continue;
     const double t = f.x_at(mouse.x);
     if (clicked) state.play_time = t, state.playing = false;
-    const render::PlotSpec spec = render::trajectory_plot(kinds[k], state.scene, state.trajectory);
+    const render::PlotSpec spec = render::trajectory_plot(kinds[k], state.scene, state.trajectory,
+                                                          state.ghost.empty() ? nullptr : &state.ghost);
     ImGui::BeginTooltip();
     ImGui::Text("t = %.4f s", t);
-    for (const render::Series& s : spec.series) {
-      if (s.x.empty()) continue;
-      const auto it = std::lower_bound(s.x.begin(), s.x.end(), t);
-      const std::size_t i = std::min<std::size_t>(it - s.x.begin(), s.x.size() - 1);
-      ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(s.color), "%s: %.6g", s.label.c_str(), s.y[i]);
-    }
+    // This run's values, then the previous run's (dimmed).
+    for (const bool ghost : {false, true})
+      for (const render::Series& s : spec.series) {
+        if (s.x.empty() || s.ghost != ghost) continue;
+        const auto it = std::lower_bound(s.x.begin(), s.x.end(), t);
+        const std::size_t i = std::min<std::size_t>(it - s.x.begin(), s.x.size() - 1);
+        ImVec4 colour = ImGui::ColorConvertU32ToFloat4(s.color);
+        if (ghost) colour.w = 0.6f;
+        ImGui::TextColored(colour, "%s%s: %.6g", s.label.c_str(), ghost ? " (previous run)" : "", s.y[i]);
+      }
     ImGui::EndTooltip();
   }
 }
@@ -241,6 +275,9 @@ void export_panel(GuiState& state, Requests& requests) {
   bool& frames = f.frames;
   if (to <= 0) to = static_cast<float>(state.scene.run.t_end);
 
+  ImGui::SetNextItemWidth(200);
+  ImGui::InputInt2("size [px]", size);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("of a saved frame and of exported frames and video");
   ImGui::SetNextItemWidth(260);
   ImGui::InputText("##frame", frame_path, sizeof f.frame_path);
   ImGui::SameLine();
@@ -259,8 +296,6 @@ void export_panel(GuiState& state, Requests& requests) {
   ImGui::InputFloat("to [s]", &to, 0.1f, 1.0f, "%.3f");
   ImGui::SetNextItemWidth(200);
   ImGui::InputFloat("fps", &fps, 1, 10, "%.1f");
-  ImGui::SetNextItemWidth(200);
-  ImGui::InputInt2("size", size);
   ImGui::SetNextItemWidth(260);
   ImGui::InputText("directory", dir, sizeof f.dir);
   ImGui::Checkbox("PNG frames", &frames);

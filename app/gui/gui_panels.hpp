@@ -37,6 +37,10 @@ void plots_panel(GuiState& state, unsigned texture, const std::vector<render::Pl
 // Save the frame, export a range as frames or video, save the trajectory.
 void export_panel(GuiState& state, Requests& requests);
 
+// A finished study: counts, histograms, the sortable table of cases; a
+// click on a case asks to show it (study_panel.cpp).
+void study_panel(GuiState& state, Requests& requests);
+
 // Simulated time, wall time, steps, RHS calls, real-time factor, integrator.
 void status_bar(const GuiState& state);
 

@@ -2,6 +2,7 @@
 // between frames while the window keeps drawing.
 //
 //   wait SECONDS          let the UI run (wall-clock seconds)
+//   idle SECONDS          leave it idle; its CPU use and frames go in the report
 //   wait_run              until the current run has finished
 //   play | pause          playback
 //   speed X | loop on|off
@@ -15,6 +16,7 @@
 //   wait_export           until the export has finished
 //   report FILE.json      the state: runs and their latch times, frame rate
 //   open SCENE            another scene (a path or a built-in name)
+//   case ID               a case of the study opened with --study
 //   plot NAME             the plot tab whose name starts with NAME, or all
 //   quit
 //

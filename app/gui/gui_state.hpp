@@ -17,6 +17,7 @@
 #include "unfurl/sim/scene.hpp"
 #include "unfurl/sim/scene_file.hpp"
 #include "simulation_worker.hpp"
+#include "study_browser.hpp"
 #include "unfurl/sim/trajectory.hpp"
 
 namespace unfurl::app {
@@ -31,6 +32,7 @@ struct Requests {
   std::optional<Override> edit;         // a parameter: restart the run with it
   bool reset_edits = false;             // back to the scene file's values
   std::optional<std::string> open;      // another scene (path or built-in name)
+  std::optional<std::string> open_case; // a case of the open study, by id
   bool reload = false;
   std::optional<std::string> save_frame;       // PNG of the current view
   std::optional<std::string> save_trajectory;  // CSV of the current run
@@ -64,6 +66,10 @@ struct GuiState {
   SceneVisuals visuals;
   std::string scene_error;                 // why the last load failed
   std::optional<std::filesystem::file_time_type> scene_mtime;
+  // A finished study, when one is open; its case on show (study->shown)
+  // replaces the scene file as what the edits apply to.
+  std::optional<StudyBrowser> study;
+  bool select_study_tab = false;  // bring the Study tab to the front once
 
   // The runs: the current one as far as computed, and the previous one.
   long generation = -1;
@@ -88,6 +94,12 @@ struct GuiState {
   int viewport_width = 0, viewport_height = 0;
   int plots_width = 0, plots_height = 0;
   int plot_tab = 0;  // one of the scene's plots, or the last tab: all of them
+
+  // Frames drawn; what the last scripted idle cost (CPU seconds per second
+  // over all threads, and frames; -1 before one).
+  long frames = 0;
+  double idle_cpu_fraction = -1;
+  long idle_frames = -1;
 
   // Frame rate: recent frame durations, and the worst while a run computes.
   std::deque<double> frame_seconds;

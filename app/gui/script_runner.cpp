@@ -1,5 +1,7 @@
 #include "script_runner.hpp"
 
+#include <ctime>
+
 #include "session_report.hpp"
 #include "unfurl/render/trajectory_plots.hpp"
 
@@ -14,6 +16,19 @@ void ScriptRunner::step(ScriptTarget& target, double now) {
       if (wait_until_ == 0) wait_until_ = now + std::stod(arg(0));
       if (now < wait_until_) return;
       wait_until_ = 0;
+    } else if (c.name == "idle") {
+      // Like wait, but the workbench is left idle: what it costs then (CPU
+      // of all its threads, frames drawn) goes into the report.
+      const double cpu = static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
+      if (idle_until_ == 0) {
+        idle_until_ = now + std::stod(arg(0));
+        idle_cpu_start_ = cpu;
+        idle_frames_start_ = state.frames;
+      }
+      if (now < idle_until_) return;
+      state.idle_cpu_fraction = (cpu - idle_cpu_start_) / std::stod(arg(0));
+      state.idle_frames = state.frames - idle_frames_start_;
+      idle_until_ = 0;
     } else if (c.name == "wait_run") {
       if (state.progress.running || state.generation < state.requested_generation) return;
     } else if (c.name == "wait_export") {
@@ -51,6 +66,10 @@ void ScriptRunner::step(ScriptTarget& target, double now) {
     } else if (c.name == "open") {
       Requests r;
       r.open = arg(0);
+      target.request(r);
+    } else if (c.name == "case") {
+      Requests r;
+      r.open_case = arg(0);
       target.request(r);
     } else if (c.name == "plot") {
       // The tab whose name starts with the word ("loop" for "loop gaps"), or

@@ -33,11 +33,18 @@ class ScriptRunner {
   // now: wall-clock seconds.
   void step(ScriptTarget& target, double now);
   bool finished() const { return next_ >= script_.size(); }
+  // Inside an `idle` command: the workbench may wait for input, for at most
+  // the seconds returned by idle_left.
+  bool idling() const { return idle_until_ > 0; }
+  double idle_left(double now) const { return idle_until_ - now; }
 
  private:
   std::vector<ScriptCommand> script_;
   std::size_t next_ = 0;
   double wait_until_ = 0;
+  double idle_until_ = 0;
+  double idle_cpu_start_ = 0;  // process CPU seconds when the idle began
+  long idle_frames_start_ = 0;
 };
 
 }  // namespace unfurl::app

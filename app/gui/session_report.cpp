@@ -10,6 +10,7 @@ void write_session_report(const GuiState& state, const std::string& path) {
   JsonWriter json(file.stream());
   json.begin_object();
   json.value("scene", state.scene.name).value("generation", state.generation);
+  if (state.study) json.value("study_case", state.study->shown).value("study_rows", static_cast<long>(state.study->rows.size()));
   auto run = [&](const char* key, const Trajectory& tr) {
     json.begin_object(key);
     json.value("samples", static_cast<long>(tr.samples.size()));
@@ -28,6 +29,7 @@ void write_session_report(const GuiState& state, const std::string& path) {
   json.value("fps_while_running",
              state.seconds_while_running > 0 ? state.frames_while_running / state.seconds_while_running : 0.0);
   json.value("worst_frame_ms_while_running", 1000 * state.worst_frame_while_running);
+  json.value("idle_cpu_fraction", state.idle_cpu_fraction).value("idle_frames", state.idle_frames);
   json.begin_array("edits");
   for (const Override& o : state.edits) json.value("", o.path + "=" + o.value);
   json.end_array();

@@ -169,10 +169,18 @@ void draw_legend(ImDrawList* draw, const PlotFrame& f, const PlotSpec& spec, con
     std::string label;
     ImU32 color;
     bool dashed;
+    bool dot = false;  // a scatter's series: a dot, not a line
   };
   std::vector<Entry> entries;
-  for (const Series& s : spec.series)
-    if (!s.ghost) entries.push_back({s.label, s.color, s.dashed});
+  const Series* ghost = nullptr;
+  for (const Series& s : spec.series) {
+    if (!s.ghost)
+      entries.push_back({s.label, s.color, s.dashed, !s.lines});
+    else if (!ghost)
+      ghost = &s;
+  }
+  if (ghost && !spec.ghost_label.empty())
+    entries.push_back({spec.ghost_label, (ghost->color & 0x00FFFFFF) | 0x90000000, false, !ghost->lines});
   const bool has_events = !spec.events.empty();
   const float line = 1.2f * font, swatch = 1.6f * font, margin = 0.5f * font;
   const int room = std::max(1, static_cast<int>((f.plot_max.y - f.plot_min.y - 1.5f * font) / line));
@@ -204,7 +212,9 @@ void draw_legend(ImDrawList* draw, const PlotFrame& f, const PlotSpec& spec, con
   float y = box_min.y + margin;
   for (const Entry& e : entries) {
     const ImVec2 a(box_min.x + margin, y + line / 2), b(a.x + swatch, a.y);
-    if (e.dashed)
+    if (e.dot)
+      draw->AddCircleFilled(ImVec2(0.5f * (a.x + b.x), a.y), 0.22f * font, e.color);
+    else if (e.dashed)
       dashed_line(draw, a, b, e.color, e.color == th.event ? 1.5f : 2.5f, 4);
     else
       draw->AddLine(a, b, e.color, 2.5f);

@@ -147,7 +147,9 @@ std::vector<StudyCase> study_cases(const Study& study) {
   return cases;
 }
 
-Scene case_scene(const Study& study, const StudyCase& c) {
+Scene case_scene(const Study& study, const StudyCase& c) { return case_scene_file(study, c).scene; }
+
+SceneFile case_scene_file(const Study& study, const StudyCase& c, const std::vector<Override>& edits) {
   std::vector<Override> overrides = study.settings;
   for (std::size_t i = 0; i < study.variables.size(); ++i) {
     if (study.variables[i].is_preload()) continue;
@@ -155,12 +157,14 @@ Scene case_scene(const Study& study, const StudyCase& c) {
     std::snprintf(text, sizeof text, "%.17g", c.inputs[i]);
     overrides.push_back({study.variables[i].path, text});
   }
-  Scene scene = load_scene_text(study.scene_text, study.scene_source, overrides);
+  overrides.insert(overrides.end(), edits.begin(), edits.end());
+  SceneFile file = read_scene_text(study.scene_text, study.scene_source, overrides);
+  Scene& scene = file.scene;
   for (std::size_t i = 0; i < study.variables.size(); ++i)
     if (study.variables[i].is_preload())
       scale_preload(scene, joint_named(scene.model, spring_joint_of_preload(study.variables[i].path)), c.inputs[i]);
   if (c.failure) apply_failure(scene, *c.failure);
-  return scene;
+  return file;
 }
 
 }  // namespace unfurl

@@ -15,7 +15,7 @@ struct Series {
   std::string label;
   std::vector<double> x, y;
   ImU32 color = IM_COL32(255, 255, 255, 255);
-  bool ghost = false;  // a previous run, drawn faint, not in the legend
+  bool ghost = false;  // a previous run, drawn faint; one legend entry for all (PlotSpec::ghost_label)
   bool dashed = false;  // a second quantity of the same thing (an angle beside a distance)
   bool markers = false;  // a dot at every point (a few measured points, not a signal)
   bool lines = true;     // false: the dots alone (a scatter plot)
@@ -27,6 +27,7 @@ struct PlotSpec {
   bool log_x = false, log_y = false;
   std::vector<double> events;    // x of vertical markers (latches)
   std::string event_label = "latch";
+  std::string ghost_label = "previous run";  // the legend's one entry for the ghost series
   std::optional<double> cursor;  // x of the play-head
 };
 

@@ -24,5 +24,8 @@ std::vector<StudyCase> study_cases(const Study& study);
 // The scene of one case: the study's scene with its settings, the case's
 // values and its failure applied.
 Scene case_scene(const Study& study, const StudyCase& c);
+// The same with the scene's visuals, and `edits` (--set overrides) applied
+// over the case's values: the workbench's edits of a case it shows.
+SceneFile case_scene_file(const Study& study, const StudyCase& c, const std::vector<Override>& edits = {});
 
 }  // namespace unfurl
