@@ -4,6 +4,7 @@
 #include <map>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 
 #include "unfurl/sim/dynamics.hpp"
 #include "unfurl/sim/kinematics.hpp"
@@ -74,9 +75,11 @@ class Writer {
     MjcfModel out;
     header();
     out_ << "  <worldbody>\n";
+    sites(kBase, "    ");
     for (int i = 0; i < model_.size(); ++i)
       if (model_.parent[i] == kBase && !image_of_.count(i)) body(i, 2);
     out_ << "  </worldbody>\n";
+    tendons();
     equalities();
     latches();
     keyframe();
@@ -114,6 +117,7 @@ class Writer {
     out_ << pad << "<body name=\"" << m.bodies[i].name << "\" pos=\"" << vec(X.rho) << "\" quat=\"" << num(quat.w())
          << " " << num(quat.x()) << " " << num(quat.y()) << " " << num(quat.z()) << "\">\n";
     inertial(i, pad + "  ");
+    sites(i, pad + "  ");
     if (joint.type != JointType::fixed) {
       this->joint(i, pad + "  ");
       written_.push_back(i);
@@ -159,6 +163,38 @@ class Writer {
     if (damping > 0) out_ << " damping=\"" << num(damping) << "\"";
     if (frictionloss > 0) out_ << " frictionloss=\"" << num(frictionloss) << "\"";
     out_ << "/>\n";
+  }
+
+  // The body a point is written on (an image is merged into its split
+  // body), and the point in that body's frame.
+  std::pair<int, Vec3> written_point(int body, const Vec3& r) const {
+    const auto loop = image_of_.find(body);
+    if (loop == image_of_.end()) return {body, r};
+    const Pose &P = poses_[loop->second->body], &Q = poses_[body];
+    return {loop->second->body, P.rotation * (Q.to_base(r) - P.position)};
+  }
+
+  // The ends of the point springs on body i, as sites NAME_a and NAME_b.
+  void sites(int i, const std::string& pad) {
+    for (const PointSpring& s : scene_.point_springs)
+      for (const auto& [body, point, end] : {std::tuple{s.body_a, s.point_a, "_a"}, std::tuple{s.body_b, s.point_b, "_b"}}) {
+        const auto [on, r] = body == kBase ? std::pair{kBase, point} : written_point(body, point);
+        if (on == i) out_ << pad << "<site name=\"" << s.name << end << "\" pos=\"" << vec(r) << "\" size=\"0.005\"/>\n";
+      }
+  }
+
+  // Point springs as spatial tendons between their two sites.
+  void tendons() {
+    if (scene_.point_springs.empty()) return;
+    out_ << "  <tendon>\n";
+    for (const PointSpring& s : scene_.point_springs) {
+      out_ << "    <spatial name=\"" << s.name << "\" stiffness=\"" << num(s.stiffness) << "\" springlength=\""
+           << num(s.rest_length) << "\" damping=\"" << num(s.damping) << "\" width=\"0.006\">\n"
+           << "      <site site=\"" << s.name << "_a\"/>\n      <site site=\"" << s.name << "_b\"/>\n    </spatial>\n";
+      if (s.tension_only)
+        unsupported("cable '" + s.name + "' is tension-only; MJCF's tendon spring also pushes when slack");
+    }
+    out_ << "  </tendon>\n";
   }
 
   void equalities() {

@@ -69,6 +69,7 @@ void write_loads_csv(const Scene& scene, const Trajectory& trajectory, const std
   }
   for (const LoopComponent& c : trajectory.loop_components)
     out << ",loop_force." << scene.loops[c.loop].name << '.' << wrench_component_name(c.axis);
+  for (const PointSpring& p : scene.point_springs) out << ",tension." << p.name;
   out << '\n';
   for (const Sample& s : trajectory.samples) {
     out << format_number(s.t);
@@ -81,6 +82,7 @@ void write_loads_csv(const Scene& scene, const Trajectory& trajectory, const std
       for (int a = 0; a < 6; ++a) out << ',' << format_number(load.reaction[a]);
     }
     for (double f : s.loads.loop_force) out << ',' << format_number(f);
+    for (double T : s.loads.point_spring_tension) out << ',' << format_number(T);
     out << '\n';
   }
   file.commit();

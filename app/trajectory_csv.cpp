@@ -101,6 +101,10 @@ void read_loads(const Scene& scene, const std::string& path, Trajectory& tr) {
       }
     }
     for (int c : loop_columns) s.loads.loop_force.push_back(parse(cells[c], where));
+    for (const PointSpring& p : scene.point_springs) {
+      const int c = find("tension." + p.name);
+      s.loads.point_spring_tension.push_back(c >= 0 ? parse(cells[c], where) : 0.0);
+    }
   }
 }
 

@@ -113,7 +113,7 @@ TEST(Friction, LoadsReportTheFrictionTorque) {
   dynamics.loads(0, y.data(), loads);
   const double expected = -0.2 * std::tanh(2.0) - 0.5 * 0.02;
   EXPECT_NEAR(loads.joints[0].friction, expected, 1e-14);
-  EXPECT_NEAR(dynamics.dissipation(std::vector<double>{0.02}.data()), -expected * 0.02, 1e-15);
+  EXPECT_NEAR(dynamics.dissipation(y.data(), std::vector<double>{0.02}.data()), -expected * 0.02, 1e-15);
   // The reaction's component about the hinge is the sum of the element torques.
   EXPECT_NEAR(loads.joints[0].reaction[3], loads.joints[0].spring + loads.joints[0].friction, 1e-12);
 }

@@ -69,7 +69,7 @@ Peer run_mujoco(const std::string& scene, const std::vector<Override>& overrides
   const fs::path dir = work_dir();
   const fs::path xml = dir / (scene + ".xml"), prefix = dir / scene;
   std::string command = std::string(UNFURL_BINARY) + " export mjcf " + scene + " -o " + xml.string();
-  for (const Override& o : overrides) command += " --set " + o.path + "=" + o.value;
+  for (const Override& o : overrides) command += " --set '" + o.path + "=" + o.value + "'";  // values may hold spaces
   const Outcome exported = run(command);
   EXPECT_EQ(exported.code, 0) << exported.output;
   char args[256];
@@ -184,6 +184,16 @@ TEST(Peer, PendulumAgreesToRoundOff) { expect_agreement("pendulum", {}, 10, 1e-4
 TEST(Peer, DoublePendulumAgreesOverItsFirstSecond) {
   // A chaotic system: only its first second is compared.
   expect_agreement("double_pendulum", {}, 1, 1e-4, {1e-9, 1e-9, 0});
+}
+
+TEST(Peer, PointSpringAndViscousFrictionAgree) {
+  // A spring-damper from the base to the lower rod's tip (a spatial tendon
+  // between two sites in MJCF) and viscous hinge friction (MJCF damping).
+  expect_agreement("double_pendulum",
+                   {{"point_springs", "[{name: stay, body_a: ground, point_a: [0, 1.2, 0.4], body_b: lower, "
+                                      "point_b: [0, 0, -1.0], stiffness: 60, rest_length: 1.2, damping: 0.5}]"},
+                    {"friction", "[{joint: shoulder, viscous: 0.3}]"}},
+                   2, 1e-4, {1e-9, 1e-9, 0});
 }
 
 TEST(Peer, ZfoldAgreesThroughEveryLatch) { expect_agreement("zfold", {}, 20, 1e-4, {1e-8, 1e-8, 1e-8}); }

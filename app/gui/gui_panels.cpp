@@ -157,6 +157,30 @@ void parameters_panel(const GuiState& state, Requests& requests) {
       ImGui::PopID();
     }
   }
+  if (!scene.friction.empty() && ImGui::CollapsingHeader("Hinge friction")) {
+    for (std::size_t k = 0; k < scene.friction.size(); ++k) {
+      const JointFriction& f = scene.friction[k];
+      const std::string path = "friction." + std::to_string(k);
+      ImGui::PushID(500 + static_cast<int>(k));
+      ImGui::Text("friction %s", model.joints[f.joint].name.c_str());
+      value_field("Coulomb [N m]", path + ".coulomb", f.coulomb, 0.001, requests, 0, 1e9);
+      value_field("viscous [N m s/rad]", path + ".viscous", f.viscous, 0.001, requests, 0, 1e9);
+      value_field("velocity scale [rad/s]", path + ".velocity_scale", f.velocity_scale, 1e-4, requests, 1e-9, 1e3, "%.3g");
+      ImGui::PopID();
+    }
+  }
+  if (!scene.point_springs.empty() && ImGui::CollapsingHeader("Point springs and cables")) {
+    for (std::size_t k = 0; k < scene.point_springs.size(); ++k) {
+      const PointSpring& p = scene.point_springs[k];
+      const std::string path = "point_springs." + std::to_string(k);
+      ImGui::PushID(700 + static_cast<int>(k));
+      ImGui::Text("%s %s", p.tension_only ? "cable" : "spring", p.name.c_str());
+      value_field("stiffness [N/m]", path + ".stiffness", p.stiffness, 0.1, requests, 0, 1e12);
+      value_field("rest length [m]", path + ".rest_length", p.rest_length, 0.001, requests, 0, 1e6);
+      value_field("damping [N s/m]", path + ".damping", p.damping, 0.01, requests, 0, 1e12);
+      ImGui::PopID();
+    }
+  }
   if (!scene.latches.empty() && ImGui::CollapsingHeader("Latches")) {
     for (std::size_t k = 0; k < scene.latches.size(); ++k) {
       const Latch& l = scene.latches[k];

@@ -68,6 +68,7 @@ void main() {
 )";
 
 constexpr float kPinRadius = 0.008f, kPinLength = 0.05f;
+constexpr float kLinkRadius = 0.006f;
 
 Eigen::Affine3f pose_transform(const Pose& pose) {
   Eigen::Affine3f T = Eigen::Affine3f::Identity();
@@ -100,6 +101,8 @@ SceneView::SceneView(const Scene& scene, const SceneVisuals& visuals, MeshLibrar
     items_.push_back({i, &meshes.get(v.mesh), visual_transform(v)});
   }
   add_pins(scene, visuals, meshes);
+  links_ = scene.point_springs;
+  if (!links_.empty()) link_mesh_ = &meshes.get("pin");
 }
 
 SceneView::~SceneView() = default;
@@ -164,19 +167,35 @@ void SceneView::draw(const std::vector<Pose>& poses, const Camera& camera, int w
   glUniform3fv(shader_->uniform("sun_direction"), 1, sun.data());
   const Eigen::Vector3f eye = camera.eye();
   glUniform3fv(shader_->uniform("eye"), 1, eye.data());
-  for (const Item& item : items_) {
-    const Eigen::Affine3f T = placement(item, poses);
-    const Eigen::Matrix4f model = T.matrix();
-    const Eigen::Matrix3f normal = T.linear().inverse().transpose();
-    glUniformMatrix4fv(shader_->uniform("model"), 1, GL_FALSE, model.data());
-    glUniformMatrix3fv(shader_->uniform("normal_matrix"), 1, GL_FALSE, normal.data());
-    for (const MeshPart& part : item.mesh->parts) {
-      glUniform3fv(shader_->uniform("color"), 1, part.color.data());
-      glBindVertexArray(part.vao);
-      glDrawElements(GL_TRIANGLES, part.index_count, GL_UNSIGNED_INT, nullptr);
-    }
-  }
+  for (const Item& item : items_) draw_mesh(*item.mesh, placement(item, poses), nullptr);
+  // Springs orange, cables pale grey.
+  const Eigen::Vector3f spring(0.95f, 0.55f, 0.15f), cable(0.85f, 0.85f, 0.8f);
+  for (const PointSpring& link : links_)
+    draw_mesh(*link_mesh_, link_placement(link, poses), link.tension_only ? &cable : &spring);
   glBindVertexArray(0);
+}
+
+void SceneView::draw_mesh(const MeshModel& mesh, const Eigen::Affine3f& T, const Eigen::Vector3f* colour) const {
+  const Eigen::Matrix4f model = T.matrix();
+  const Eigen::Matrix3f normal = T.linear().inverse().transpose();
+  glUniformMatrix4fv(shader_->uniform("model"), 1, GL_FALSE, model.data());
+  glUniformMatrix3fv(shader_->uniform("normal_matrix"), 1, GL_FALSE, normal.data());
+  for (const MeshPart& part : mesh.parts) {
+    glUniform3fv(shader_->uniform("color"), 1, colour ? colour->data() : part.color.data());
+    glBindVertexArray(part.vao);
+    glDrawElements(GL_TRIANGLES, part.index_count, GL_UNSIGNED_INT, nullptr);
+  }
+}
+
+Eigen::Affine3f SceneView::link_placement(const PointSpring& link, const std::vector<Pose>& poses) const {
+  const auto at = [&](int body, const Vec3& r) { return body == kBase ? r : poses[body].to_base(r); };
+  const Eigen::Vector3f a = at(link.body_a, link.point_a).cast<float>(), b = at(link.body_b, link.point_b).cast<float>();
+  const float length = (b - a).norm();
+  Eigen::Affine3f T = Eigen::Affine3f::Identity();
+  T.translate(0.5f * (a + b));
+  if (length > 0) T.rotate(Eigen::Quaternionf::FromTwoVectors(Eigen::Vector3f::UnitZ(), b - a));
+  T.scale(Eigen::Vector3f(2 * kLinkRadius, 2 * kLinkRadius, length));
+  return T;
 }
 
 }  // namespace unfurl::render

@@ -11,13 +11,19 @@ bool has_dissipation(const Scene& scene) {
     if (s.damping > 0) return true;
   for (const Latch& l : scene.latches)
     if (l.damping > 0) return true;
+  for (const PointSpring& s : scene.point_springs)
+    if (s.damping > 0) return true;
   return !scene.friction.empty();
 }
 
 }  // namespace
 
-DissipationMeter::DissipationMeter(const Dynamics& dynamics, double t0)
-    : dynamics_(dynamics), dissipative_(has_dissipation(dynamics.scene())), t_(t0), ydot_(dynamics.layout().size()) {}
+DissipationMeter::DissipationMeter(Dynamics& dynamics, double t0)
+    : dynamics_(dynamics),
+      dissipative_(has_dissipation(dynamics.scene())),
+      t_(t0),
+      y_(dynamics.layout().size()),
+      ydot_(dynamics.layout().size()) {}
 
 void DissipationMeter::advance(Integrator& integrator, double t) {
   if (!dissipative_ || !(t > t_)) {
@@ -30,8 +36,10 @@ void DissipationMeter::advance(Integrator& integrator, double t) {
   const double weights[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
   double sum = 0;
   for (int k = 0; k < 3; ++k) {
-    integrator.interpolate_rate(mid + half * nodes[k], ydot_.data());
-    sum += weights[k] * dynamics_.dissipation(ydot_.data() + dynamics_.layout().q());
+    const double t_k = mid + half * nodes[k];
+    integrator.interpolate(t_k, y_.data());
+    integrator.interpolate_rate(t_k, ydot_.data());
+    sum += weights[k] * dynamics_.dissipation(y_.data() + dynamics_.layout().q(), ydot_.data() + dynamics_.layout().q());
   }
   work_ += half * sum;
   t_ = t;

@@ -12,21 +12,22 @@ namespace unfurl {
 
 class DissipationMeter {
  public:
-  DissipationMeter(const Dynamics& dynamics, double t0);
+  DissipationMeter(Dynamics& dynamics, double t0);
 
   // Adds the work over [t_, t] by three-point Gauss-Legendre quadrature of
-  // the dissipated power on the integrator's interpolant of the joint rates.
+  // the dissipated power on the integrator's interpolant of the state and
+  // the joint rates.
   // [t_, t] must lie within the step the integrator has just taken, and the
   // latch states must be those of that step (advance before engaging).
   void advance(Integrator& integrator, double t);
   double work() const { return work_; }
 
  private:
-  const Dynamics& dynamics_;
+  Dynamics& dynamics_;
   bool dissipative_;
   double t_;
   double work_ = 0;
-  std::vector<double> ydot_;
+  std::vector<double> y_, ydot_;
 };
 
 }  // namespace unfurl

@@ -20,7 +20,7 @@ Dynamics::Dynamics(const Scene& scene)
     : scene_(scene),
       sweep_(scene_.model),
       latch_state_(scene_.latches, latch_start_positions(scene_)),
-      loads_need_poses_(loads_need_poses(scene_.model, scene_.loads)),
+      loads_need_poses_(loads_need_poses(scene_.model, scene_.loads) || !scene_.point_springs.empty()),
       phi_(scene_.model.size()),
       v_(scene_.model.size()),
       mu_(scene_.model.size()),
@@ -89,9 +89,26 @@ void Dynamics::joint_torques(const double* q, const double* dq, double* Q) const
   }
 }
 
-double Dynamics::dissipation(const double* dq) const {
+void Dynamics::add_point_springs() {
+  for (const PointSpring& s : scene_.point_springs) {
+    const PointSpringGeometry g = point_spring_geometry(s, poses_, v_, scene_.model.base_velocity);
+    add_point_spring_force(s, g, s.tension(g.length, g.rate), poses_, F_);
+  }
+}
+
+double Dynamics::dissipation(const double* q, const double* dq) {
   const Model& model = scene_.model;
   double P = 0;
+  if (!scene_.point_springs.empty()) {
+    // The rate of a length is the same seen from the base at rest.
+    sweep_.set_configuration(q);
+    sweep_.poses(poses_);
+    sweep_.velocities_from_rates(dq, v_);
+    for (const PointSpring& s : scene_.point_springs) {
+      const PointSpringGeometry g = point_spring_geometry(s, poses_, v_, Vec6::Zero());
+      P += (s.tension(g.length, g.rate) - s.elastic(g.length)) * g.rate;
+    }
+  }
   for (const JointSpring& s : scene_.springs) {
     const double w = dq[model.coordinate[s.joint]];
     P += s.damping * w * w;
@@ -126,6 +143,7 @@ bool Dynamics::evaluate(double, const double* y, double* ydot) {
   for (Vec6& f : F_) f.setZero();
   if (loads_need_poses_ || regulator_) sweep_.poses(poses_);
   add_body_loads(model, scene_.loads, poses_, F_);
+  add_point_springs();
   std::fill(Q_joint_.begin(), Q_joint_.end(), 0.0);
   joint_torques(q, dq, Q_joint_.data());
   if (regulator_) {
@@ -167,6 +185,11 @@ void Dynamics::loads(double t, const double* y, Loads& out, std::vector<ClosureE
     out.joints[s.joint].damper += -s.damping * dq[c];
   }
   for (const JointFriction& f : scene_.friction) out.joints[f.joint].friction += f.torque(dq[model.coordinate[f.joint]]);
+  out.point_spring_tension.clear();
+  for (const PointSpring& s : scene_.point_springs) {
+    const PointSpringGeometry g = point_spring_geometry(s, poses_, v_, model.base_velocity);
+    out.point_spring_tension.push_back(s.tension(g.length, g.rate));
+  }
   for (int l = 0; l < latch_count(); ++l) {
     if (!latch_state_.engaged(l)) continue;
     const Latch& latch = scene_.latches[l];
@@ -178,6 +201,7 @@ void Dynamics::loads(double t, const double* y, Loads& out, std::vector<ClosureE
   // the child's origin to the hinge point.
   for (Vec6& f : F_) f.setZero();
   add_body_loads(model, scene_.loads, poses_, F_);
+  add_point_springs();
   if (regulator_) regulator_->apply(lambda_.data(), F_);
   sweep_.accelerations(v_, dq, F_, Q_joint_.data(), bias_, a_, ddq_.data());
   for (int i = 0; i < model.size(); ++i) {
@@ -212,6 +236,8 @@ void Dynamics::observe(double t, const double* y, Observation& out) {
     if (latch_state_.engaged(l))
       E.latches += scene_.latches[l].energy(y[L.q() + model.coordinate[scene_.latches[l].joint]]);
   E.gravity = gravity_energy(model, out.poses);
+  for (const PointSpring& s : scene_.point_springs)
+    E.springs += s.energy(point_spring_geometry(s, out.poses, v_, model.base_velocity).length);
 
   const int n_loops = static_cast<int>(scene_.loops.size());
   out.closure.resize(n_loops);

@@ -48,6 +48,8 @@ class SceneReader : private YamlFields {
   void read_springs(const YAML::Node& list, Scene& scene) const;
   void read_dampers(const YAML::Node& list, Scene& scene) const;
   void read_friction(const YAML::Node& list, Scene& scene) const;
+  void read_point_springs(const YAML::Node& list, Scene& scene) const;
+  int body_or_base(const YAML::Node& node, const Scene& scene, const std::string& field) const;
   void read_loads(const YAML::Node& list, Scene& scene) const;
   void read_latches(const YAML::Node& list, Scene& scene) const;
   void read_loops(const YAML::Node& list, Scene& scene);
@@ -253,6 +255,43 @@ void SceneReader::read_friction(const YAML::Node& list, Scene& scene) const {
   }
 }
 
+int SceneReader::body_or_base(const YAML::Node& node, const Scene& scene, const std::string& field) const {
+  const int i = scene.model.find_body(text(node, field));
+  if (i < kBase) fail(node, field, "unknown body '" + node.Scalar() + "' (nor the base, '" + scene.model.base_name + "')");
+  return i;
+}
+
+void SceneReader::read_point_springs(const YAML::Node& list, Scene& scene) const {
+  if (!list.IsSequence()) fail(list, "point_springs", "expected a list");
+  std::vector<Pose> poses;
+  body_poses(scene.model, scene.q0.data(), poses);
+  for (std::size_t n = 0; n < list.size(); ++n) {
+    const YAML::Node node = list[n];
+    const std::string field = index_field("point_springs", n);
+    check_keys(node,
+               {"name", "body_a", "point_a", "body_b", "point_b", "stiffness", "rest_length", "damping",
+                "tension_only"},
+               field);
+    PointSpring s;
+    s.name = node["name"] ? name(node["name"], field + ".name") : "spring" + std::to_string(n);
+    for (const PointSpring& other : scene.point_springs)
+      if (other.name == s.name) fail(node, field + ".name", "a point spring named '" + s.name + "' already exists");
+    s.body_a = body_or_base(require(node, "body_a", field), scene, field + ".body_a");
+    s.body_b = body_or_base(require(node, "body_b", field), scene, field + ".body_b");
+    if (s.body_a == s.body_b) fail(node["body_b"], field + ".body_b", "both ends are on one body: it would pull on itself");
+    s.point_a = vec3_or(node, "point_a", Vec3::Zero(), field);
+    s.point_b = vec3_or(node, "point_b", Vec3::Zero(), field);
+    s.stiffness = non_negative(require(node, "stiffness", field), field + ".stiffness");
+    s.rest_length = non_negative(require(node, "rest_length", field), field + ".rest_length");
+    if (node["damping"]) s.damping = non_negative(node["damping"], field + ".damping");
+    if (node["tension_only"]) s.tension_only = flag(node["tension_only"], field + ".tension_only");
+    const auto at = [&](int body, const Vec3& r) { return body == kBase ? r : poses[body].to_base(r); };
+    if ((at(s.body_b, s.point_b) - at(s.body_a, s.point_a)).norm() < 1e-9)
+      fail(node, field, "its two points coincide at the initial state: the line of the force has no direction");
+    scene.point_springs.push_back(s);
+  }
+}
+
 void SceneReader::read_loads(const YAML::Node& list, Scene& scene) const {
   if (!list.IsSequence()) fail(list, "loads", "expected a list");
   for (std::size_t n = 0; n < list.size(); ++n) {
@@ -430,8 +469,8 @@ SceneFile SceneReader::read(const std::string& text_in, const std::vector<Overri
   for (const Override& o : overrides) apply_override(root, o, *this);
 
   check_keys(root,
-             {"name", "description", "base", "gravity", "bodies", "springs", "dampers", "friction", "loads",
-              "latches",
+             {"name", "description", "base", "gravity", "bodies", "springs", "dampers", "friction", "point_springs",
+              "loads", "latches",
               "loops", "regulator", "initial", "closure_tolerance", "run"},
              "");
   Scene scene;
@@ -464,6 +503,7 @@ SceneFile SceneReader::read(const std::string& text_in, const std::vector<Overri
   scene.dq0.assign(scene.model.nq, 0.0);
   if (root["initial"]) read_initial(root["initial"], scene);
   if (scene.dq0.size() != static_cast<std::size_t>(scene.model.nq)) scene.dq0.assign(scene.model.nq, 0.0);
+  if (root["point_springs"]) read_point_springs(root["point_springs"], scene);
   if (root["closure_tolerance"]) {
     scene.closure_tolerance = positive(root["closure_tolerance"], "closure_tolerance");
     if (scene.closure_tolerance > kLargestClosureTolerance)

@@ -40,8 +40,14 @@ class SceneView {
 
   Eigen::Affine3f placement(const Item& item, const std::vector<Pose>& poses) const;
   void add_pins(const Scene& scene, const SceneVisuals& visuals, MeshLibrary& meshes);
+  // A mesh placed by T; `colour` replaces its materials' when given.
+  void draw_mesh(const MeshModel& mesh, const Eigen::Affine3f& T, const Eigen::Vector3f* colour) const;
+  // A point spring as a thin rod between its two points.
+  Eigen::Affine3f link_placement(const PointSpring& link, const std::vector<Pose>& poses) const;
 
   std::vector<Item> items_;
+  std::vector<PointSpring> links_;
+  const MeshModel* link_mesh_ = nullptr;
   std::unique_ptr<Shader> shader_, background_;
   unsigned background_vao_ = 0;
 };

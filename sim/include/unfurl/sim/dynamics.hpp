@@ -69,13 +69,17 @@ class Dynamics {
   // the loops' geometric gaps if asked.
   void loads(double t, const double* y, Loads& out, std::vector<ClosureError>* closure = nullptr);
 
-  // The power the dampers, friction and engaged latches take out of the
-  // mechanism at joint rates dq (>= 0); its integral is EnergyParts::dissipated.
-  double dissipation(const double* dq) const;
+  // The power the dampers, friction, point springs' damping and engaged
+  // latches take out of the mechanism at coordinates q and joint rates dq
+  // (>= 0); its integral is EnergyParts::dissipated. Uses the scratch of
+  // rhs() (call it between right-hand sides).
+  double dissipation(const double* q, const double* dq);
 
  private:
   bool evaluate(double t, const double* y, double* ydot);
   void joint_torques(const double* q, const double* dq, double* Q) const;
+  // Adds the point springs' pulls to F_ (needs poses_ and v_).
+  void add_point_springs();
 
   const Scene scene_;
   StateLayout layout_;

@@ -29,6 +29,8 @@ struct Loads {
   // Per active loop component: the force on the split body from its image
   // (its negative acts on the image), at the body's origin, in its frame.
   std::vector<double> loop_force;
+  // Per point spring (scene order): its tension, N (> 0 pulls).
+  std::vector<double> point_spring_tension;
 };
 
 // The largest magnitude a quantity took and when.

@@ -11,6 +11,7 @@
 #include "unfurl/sim/latch.hpp"
 #include "unfurl/sim/loop.hpp"
 #include "unfurl/sim/model.hpp"
+#include "unfurl/sim/point_spring.hpp"
 #include "unfurl/sim/regulator_settings.hpp"
 #include "unfurl/sim/run_settings.hpp"
 
@@ -24,6 +25,7 @@ struct Scene {
   std::vector<JointSpring> springs;  // the file's springs, then its dampers
   std::size_t dampers_from = 0;      // springs[dampers_from..] came from `dampers:`
   std::vector<JointFriction> friction;
+  std::vector<PointSpring> point_springs;
   std::vector<BodyLoad> loads;
   std::vector<Latch> latches;
   std::vector<Loop> loops;
