@@ -153,6 +153,9 @@ class Writer {
       if (s.joint == i) k += s.stiffness, k_free += s.stiffness * s.free_position, damping += s.damping;
     // Coulomb friction becomes MuJoCo's frictionloss, a dry-friction
     // constraint that sticks exactly where ours (tanh, friction.hpp) creeps.
+    for (const JointSpring& s : scene_.springs)
+      if (s.joint == i && s.curve)
+        unsupported("the measured spring curve of '" + j.name + "' (MJCF joint springs are linear)");
     double frictionloss = 0;
     for (const JointFriction& f : scene_.friction)
       if (f.joint == i) frictionloss += f.coulomb, damping += f.viscous;
@@ -234,6 +237,7 @@ class Writer {
            << num(l.stiffness) << " " << num(l.damping) << " " << num(side) << "\"/>\n";
       unsupported("the latch of '" + model_.joints[l.joint].name + "' (kept as custom numeric latch:" +
                   model_.joints[l.joint].name + ")");
+      if (l.free_play > 0) unsupported("the free play of the latch of '" + model_.joints[l.joint].name + "'");
     }
     out_ << "  </custom>\n";
   }

@@ -205,7 +205,14 @@ inline Scene random_tree(std::mt19937& rng, int N, bool moving_base) {
   model.finalize();
   for (int i = 0; i < N; ++i) {
     if (model.coordinate[i] < 0) continue;
-    if (U(rng) > 0) scene.springs.push_back({i, 2 * (U(rng) + 1), U(rng), 0.5 * (U(rng) + 1)});
+    if (U(rng) > 0) {
+      JointSpring s;
+      s.joint = i;
+      s.stiffness = 2 * (U(rng) + 1);
+      s.free_position = U(rng);
+      s.damping = 0.5 * (U(rng) + 1);
+      scene.springs.push_back(s);
+    }
     if (U(rng) > 0.5)
       scene.loads.push_back({i, Vec3(U(rng), U(rng), U(rng)), Vec3(U(rng), U(rng), U(rng)),
                              Vec3(U(rng), U(rng), U(rng)), !moving_base && U(rng) > 0});

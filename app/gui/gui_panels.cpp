@@ -149,7 +149,9 @@ void parameters_panel(const GuiState& state, Requests& requests) {
                                       : "springs." + std::to_string(k);
       ImGui::PushID(static_cast<int>(k));
       ImGui::Text("%s %s", damper ? "damper" : "spring", model.joints[s.joint].name.c_str());
-      if (!damper) {
+      if (s.curve) {
+        ImGui::TextDisabled("  measured curve, %zu points (edit the file's table)", s.curve->angles().size());
+      } else if (!damper) {
         value_field("stiffness [N m/rad]", path + ".stiffness", s.stiffness, 0.005, requests, 0, 1e9);
         value_field("preload: free angle [rad]", path + ".free_position", s.free_position, 0.01, requests);
       }
@@ -189,6 +191,7 @@ void parameters_panel(const GuiState& state, Requests& requests) {
       ImGui::Text("latch %s at %.4g", model.joints[l.joint].name.c_str(), l.position);
       value_field("stiffness [N m/rad]##l", path + ".stiffness", l.stiffness, 10, requests, 1e-9, 1e12);
       value_field("damping [N m s/rad]##l", path + ".damping", l.damping, 0.1, requests, 0, 1e12);
+      value_field("free play [rad]##l", path + ".free_play", l.free_play, 1e-4, requests, 0, 1, "%.4g");
       ImGui::PopID();
     }
   }

@@ -116,8 +116,9 @@ double Dynamics::dissipation(const double* q, const double* dq) {
   for (const JointFriction& f : scene_.friction) P += f.dissipation(dq[model.coordinate[f.joint]]);
   for (int l = 0; l < latch_count(); ++l) {
     if (!latch_state_.engaged(l)) continue;
-    const double w = dq[model.coordinate[scene_.latches[l].joint]];
-    P += scene_.latches[l].damping * w * w;
+    const Latch& latch = scene_.latches[l];
+    const int c = model.coordinate[latch.joint];
+    P -= (latch.torque(q[c], dq[c]) - latch.elastic_torque(q[c])) * dq[c];
   }
   return P;
 }
@@ -181,7 +182,7 @@ void Dynamics::loads(double t, const double* y, Loads& out, std::vector<ClosureE
   out.joints.assign(model.size(), JointLoad{});
   for (const JointSpring& s : scene_.springs) {
     const int c = model.coordinate[s.joint];
-    out.joints[s.joint].spring += -s.stiffness * (q[c] - s.free_position);
+    out.joints[s.joint].spring += s.elastic_torque(q[c]);
     out.joints[s.joint].damper += -s.damping * dq[c];
   }
   for (const JointFriction& f : scene_.friction) out.joints[f.joint].friction += f.torque(dq[model.coordinate[f.joint]]);

@@ -1,5 +1,6 @@
 #include "newton_preconditioner.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "unfurl/sim/dynamics.hpp"
@@ -25,9 +26,11 @@ void NewtonPreconditioner::setup(const double* y, const double* ydot, double gam
   gamma_ = gamma;
   std::fill(stiffness_.begin(), stiffness_.end(), 0.0);
   std::fill(damping_.begin(), damping_.end(), 0.0);
+  const double* q = y + dynamics_.layout().q();
   for (const JointSpring& s : scene.springs) {
-    stiffness_[model.coordinate[s.joint]] += s.stiffness;
-    damping_[model.coordinate[s.joint]] += s.damping;
+    const int c = model.coordinate[s.joint];
+    stiffness_[c] += std::max(0.0, s.local_stiffness(q[c]));  // a rising stretch of a curve: none
+    damping_[c] += s.damping;
   }
   const double* dq = ydot + dynamics_.layout().q();
   for (const JointFriction& f : scene.friction) {

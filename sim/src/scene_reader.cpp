@@ -48,6 +48,7 @@ class SceneReader : private YamlFields {
   void read_springs(const YAML::Node& list, Scene& scene) const;
   void read_dampers(const YAML::Node& list, Scene& scene) const;
   void read_friction(const YAML::Node& list, Scene& scene) const;
+  std::shared_ptr<const SpringCurve> spring_curve(const YAML::Node& table, const std::string& field) const;
   void read_point_springs(const YAML::Node& list, Scene& scene) const;
   int body_or_base(const YAML::Node& node, const Scene& scene, const std::string& field) const;
   void read_loads(const YAML::Node& list, Scene& scene) const;
@@ -216,14 +217,37 @@ void SceneReader::read_springs(const YAML::Node& list, Scene& scene) const {
   for (std::size_t n = 0; n < list.size(); ++n) {
     const YAML::Node s = list[n];
     const std::string field = index_field("springs", n);
-    check_keys(s, {"joint", "stiffness", "free_position", "damping"}, field);
+    check_keys(s, {"joint", "stiffness", "free_position", "damping", "table"}, field);
     JointSpring spring;
     spring.joint = joint_by_name(require(s, "joint", field), scene, field + ".joint", true);
-    spring.stiffness = non_negative(require(s, "stiffness", field), field + ".stiffness");
-    spring.free_position = number_or(s, "free_position", 0.0, field);
+    if (const YAML::Node table = s["table"]) {
+      for (const char* key : {"stiffness", "free_position"})
+        if (s[key]) fail(s[key], field + "." + key, "a spring with a table takes its torque from the table alone");
+      spring.curve = spring_curve(table, field + ".table");
+    } else {
+      spring.stiffness = non_negative(require(s, "stiffness", field), field + ".stiffness");
+      spring.free_position = number_or(s, "free_position", 0.0, field);
+    }
     if (s["damping"]) spring.damping = non_negative(s["damping"], field + ".damping");
     scene.springs.push_back(spring);
   }
+}
+
+std::shared_ptr<const SpringCurve> SceneReader::spring_curve(const YAML::Node& table, const std::string& field) const {
+  if (!table.IsSequence() || table.size() < 2)
+    fail(table, field, "expected a list of at least two [angle, torque] points, e.g. [[0, 0.3], [1.57, 0.15]]");
+  std::vector<double> q, tau;
+  for (std::size_t k = 0; k < table.size(); ++k) {
+    const std::string point = field + "[" + std::to_string(k) + "]";
+    const std::vector<double> p = numbers(table[k], point);
+    if (p.size() != 2) fail(table[k], point, "expected [angle, torque]");
+    if (!q.empty() && !(p[0] > q.back()))
+      fail(table[k], point, "the angles must increase along the table (" + format_number(p[0]) + " after " +
+                                format_number(q.back()) + ")");
+    q.push_back(p[0]);
+    tau.push_back(p[1]);
+  }
+  return std::make_shared<const SpringCurve>(q, tau);
 }
 
 void SceneReader::read_dampers(const YAML::Node& list, Scene& scene) const {
@@ -319,12 +343,13 @@ void SceneReader::read_latches(const YAML::Node& list, Scene& scene) const {
   for (std::size_t n = 0; n < list.size(); ++n) {
     const YAML::Node l = list[n];
     const std::string field = index_field("latches", n);
-    check_keys(l, {"joint", "position", "stiffness", "damping"}, field);
+    check_keys(l, {"joint", "position", "stiffness", "damping", "free_play"}, field);
     Latch latch;
     latch.joint = joint_by_name(require(l, "joint", field), scene, field + ".joint", true);
     latch.position = number_or(l, "position", 0.0, field);
     latch.stiffness = positive(require(l, "stiffness", field), field + ".stiffness");
     latch.damping = non_negative(require(l, "damping", field), field + ".damping");
+    if (l["free_play"]) latch.free_play = non_negative(l["free_play"], field + ".free_play");
     for (const Latch& other : scene.latches)
       if (other.joint == latch.joint) fail(l["joint"], field + ".joint", "this joint already has a latch");
     scene.latches.push_back(latch);

@@ -95,6 +95,13 @@ double initial_q(const Scene& scene, int joint) { return scene.q0[scene.model.co
 // k (q_free - q(0)) scales with it at the same stiffness.
 void scale_preload(Scene& scene, int joint, double factor) {
   JointSpring& s = spring_of(scene, joint);
+  if (s.curve) {
+    // A measured curve: its torque at every angle scales.
+    std::vector<double> tau = s.curve->torques();
+    for (double& t : tau) t *= factor;
+    s.curve = std::make_shared<const SpringCurve>(s.curve->angles(), tau);
+    return;
+  }
   const double q0 = initial_q(scene, joint);
   s.free_position = q0 + factor * (s.free_position - q0);
 }
@@ -102,7 +109,7 @@ void scale_preload(Scene& scene, int joint, double factor) {
 // A stuck hinge is held where it starts by a stop as stiff as the scene's
 // stiffest latch, engaged from t = 0 (it starts at its position).
 void make_stuck(Scene& scene, int joint) {
-  Latch stop{joint, initial_q(scene, joint), 1000.0, 10.0};
+  Latch stop{joint, initial_q(scene, joint), 1000.0, 10.0, 0.0};
   for (const Latch& l : scene.latches)
     if (l.stiffness > stop.stiffness) stop.stiffness = l.stiffness, stop.damping = l.damping;
   scene.latches.push_back(stop);
@@ -116,7 +123,10 @@ void apply_failure(Scene& scene, const StudyFailure& f) {
                                          [&](const Latch& l) { return l.joint == joint; }),
                           scene.latches.end());
       break;
-    case StudyFailure::Kind::spring_breaks: spring_of(scene, joint).stiffness = 0; break;
+    case StudyFailure::Kind::spring_breaks:
+      spring_of(scene, joint).stiffness = 0;
+      spring_of(scene, joint).curve.reset();
+      break;
     case StudyFailure::Kind::preload_loss: scale_preload(scene, joint, 1 - f.fraction); break;
     case StudyFailure::Kind::stuck: make_stuck(scene, joint); break;
     case StudyFailure::Kind::extra_friction: {

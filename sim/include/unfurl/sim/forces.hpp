@@ -2,26 +2,31 @@
 // viscous joint dampers, constant body loads and constant gravity.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "unfurl/sim/kinematics.hpp"
 #include "unfurl/sim/model.hpp"
+#include "unfurl/sim/spring_curve.hpp"
 
 namespace unfurl {
 
-// tau = -stiffness (q - free_position) - damping dq on one joint.
+// tau = -stiffness (q - free_position) - damping dq on one joint, or with a
+// measured curve tau = curve(q) - damping dq.
 struct JointSpring {
   int joint = 0;
   double stiffness = 0;
   double free_position = 0;  // the preload: the spring is relaxed here
   double damping = 0;
+  std::shared_ptr<const SpringCurve> curve;  // replaces stiffness and free_position
 
-  double torque(double q, double dq) const {
-    return -stiffness * (q - free_position) - damping * dq;
-  }
+  double elastic_torque(double q) const { return curve ? curve->torque(q) : -stiffness * (q - free_position); }
+  double torque(double q, double dq) const { return elastic_torque(q) - damping * dq; }
   double energy(double q) const {
-    return 0.5 * stiffness * (q - free_position) * (q - free_position);
+    return curve ? curve->energy(q) : 0.5 * stiffness * (q - free_position) * (q - free_position);
   }
+  // -d tau / dq of the elastic part at q.
+  double local_stiffness(double q) const { return curve ? -curve->slope(q) : stiffness; }
 };
 
 // A constant force and torque on a body; the force acts at `point` (body

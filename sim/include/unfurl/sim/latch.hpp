@@ -12,12 +12,27 @@ struct Latch {
   double position = 0;   // the deployed angle (or length)
   double stiffness = 0;  // k_L
   double damping = 0;    // c_L
+  // Backlash: the engaged latch lets the joint move freely within
+  // position +- free_play / 2 and bites beyond, as a stop that pushes and
+  // never pulls (the damping cannot hold the joint against the stop).
+  double free_play = 0;
 
-  // tau_L = -k_L (q - position) - c_L dq, once engaged.
-  double torque(double q, double dq) const {
-    return -stiffness * (q - position) - damping * dq;
+  // How far the joint is past the free play (signed; 0 inside it).
+  double penetration(double q) const {
+    const double e = q - position, half = 0.5 * free_play;
+    return e > half ? e - half : e < -half ? e + half : 0.0;
   }
-  double energy(double q) const { return 0.5 * stiffness * (q - position) * (q - position); }
+  double elastic_torque(double q) const { return -stiffness * penetration(q); }
+  // tau_L = -k_L x - c_L dq once engaged, x = q - position without free
+  // play, the penetration with it.
+  double torque(double q, double dq) const {
+    if (free_play == 0) return -stiffness * (q - position) - damping * dq;
+    const double x = penetration(q);
+    if (x == 0) return 0.0;
+    const double tau = -stiffness * x - damping * dq;
+    return tau * x > 0 ? 0.0 : tau;
+  }
+  double energy(double q) const { return 0.5 * stiffness * penetration(q) * penetration(q); }
 };
 
 // The engagement state of a scene's latches along one run.
