@@ -2,6 +2,7 @@
 
 #include <filesystem>
 
+#include "study_files.hpp"
 #include "unfurl/sim/scene_file.hpp"
 
 namespace unfurl::app {
@@ -45,6 +46,12 @@ std::vector<Override> overrides_from(const Args& args) {
   for (const auto& [flag, key] : run_flags)
     if (const auto value = args.get(flag)) overrides.push_back({std::string("run.") + key, *value});
   return overrides;
+}
+
+std::string scene_text_named(const std::string& name) {
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(name, ec)) return read_text_file(name);
+  return builtin_scene_text(name);
 }
 
 SceneFile read_scene_named(const std::string& name, const std::vector<Override>& overrides) {

@@ -30,5 +30,7 @@ Scene load_scene(const std::optional<std::string>& argument, const Args& args);
 
 // The scene named `name` (a path, or a built-in scene) with overrides.
 SceneFile read_scene_named(const std::string& name, const std::vector<Override>& overrides);
+// The YAML text of the same (a file's contents or a built-in scene's).
+std::string scene_text_named(const std::string& name);
 
 }  // namespace unfurl::app

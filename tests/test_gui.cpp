@@ -141,6 +141,49 @@ TEST(Gui, OpeningAnotherSceneDropsThePreviousScenesRuns) {
   EXPECT_TRUE(std::isnan(latch_time(report, "previous", "j1"))) << "the z-fold's run became the ghost: " << report;
 }
 
+// Edits by name, undone and redone, and saved as a scene file that reloads
+// to the same run.
+TEST(Gui, EditsUndoRedoAndSaveAsAFileThatReloadsToTheSameRun) {
+  if (!app::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
+  const fs::path dir = fs::temp_directory_path() / ("unfurl_gui_edits_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "session.txt") << "wait_run\n"
+                                        "set springs.j1.free_position 1.3\n"
+                                        "wait_run\n"
+                                        "set latches.j3.stiffness 900\n"
+                                        "wait_run\n"
+                                        "undo\n"
+                                        "wait_run\n"
+                                        "report " << (dir / "undone.json").string() << "\n"
+                                        "redo\n"
+                                        "wait_run\n"
+                                        "report " << (dir / "redone.json").string() << "\n"
+                                        "save_scene " << (dir / "edited.yaml").string() << "\n"
+                                        "quit\n";
+  const std::string command = "timeout 300 xvfb-run -a -s '-screen 0 1280x800x24' " + std::string(UNFURL_BINARY) +
+                              " gui pantograph --t-end 9 --script " + (dir / "session.txt").string() + " > " +
+                              (dir / "log.txt").string() + " 2>&1";
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << slurp(dir / "log.txt");
+  const std::string undone = slurp(dir / "undone.json"), redone = slurp(dir / "redone.json");
+  EXPECT_NE(undone.find("springs.j1.free_position=1.3"), std::string::npos) << undone;
+  EXPECT_EQ(undone.find("latches.j3.stiffness"), std::string::npos) << undone;
+  EXPECT_NE(redone.find("latches.j3.stiffness=900"), std::string::npos) << redone;
+  // The saved file, simulated on its own, latches j1 when the GUI's run did.
+  const std::string saved = slurp(dir / "edited.yaml");
+  EXPECT_NE(saved.find("springs.j1.free_position = 1.3"), std::string::npos) << saved;  // the header
+  const test::CommandOutcome run = test::run_command(std::string(UNFURL_BINARY) + " simulate " +
+                                                     (dir / "edited.yaml").string() + " --out " + (dir / "run").string());
+  ASSERT_EQ(run.code, 0) << run.output;
+  std::ifstream events(dir / "run" / "events.csv");
+  std::string line;
+  double j1 = NAN;
+  while (std::getline(events, line))
+    if (line.find(",latch,j1") != std::string::npos) j1 = std::stod(line.substr(0, line.find(',')));
+  EXPECT_NEAR(j1, latch_time(redone, "current", "j1"), 1e-9) << redone;
+}
+
 // A finished study in the workbench: the Study tab lists its cases; picking
 // one (here by the script, as a click does) re-runs that case, whose latch
 // times are the study's own for it; a failure case (a latch removed) then

@@ -82,7 +82,11 @@ bool GuiApp::show_case(const std::string& id) {
   const std::string shown = state_.study->shown;
   const std::vector<Override> edits = state_.edits;
   state_.study->shown = id;
-  if (shown != id) state_.edits.clear();
+  if (shown != id) {
+    state_.edits.clear();
+    state_.undo.clear();
+    state_.redo.clear();
+  }
   if (load_and_run(state_.study->study.scene)) return true;
   state_.study->shown = shown;
   state_.edits = edits;
@@ -247,7 +251,28 @@ void GuiApp::draw_plots_texture() {
   plots_->resolve();
 }
 
+void GuiApp::keyboard_shortcuts(Requests& requests) {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (io.WantTextInput) return;  // the keys belong to the field being typed in
+  const auto pressed = [](int glfw_key) { return ImGui::IsKeyPressed(glfw_key, false); };
+  const double frame = 1.0 / 30, t_end = state_.scene.run.t_end;
+  if (io.KeyCtrl) {
+    if (pressed(GLFW_KEY_Z) && !io.KeyShift) requests.undo = true;
+    if (pressed(GLFW_KEY_Y) || (pressed(GLFW_KEY_Z) && io.KeyShift)) requests.redo = true;
+    if (pressed(GLFW_KEY_S)) requests.save_scene = std::string(state_.save_path);
+    if (pressed(GLFW_KEY_O)) state_.focus_scene_field = true;
+    return;
+  }
+  if (pressed(GLFW_KEY_SPACE)) state_.playing = !state_.playing;
+  if (ImGui::IsKeyPressed(GLFW_KEY_LEFT)) state_.playing = false, state_.play_time = std::max(0.0, state_.play_time - frame);
+  if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT)) state_.playing = false, state_.play_time = std::min(t_end, state_.play_time + frame);
+  if (pressed(GLFW_KEY_HOME)) state_.play_time = 0;
+  if (pressed(GLFW_KEY_END)) state_.play_time = t_end;
+  if (pressed(GLFW_KEY_F)) camera_preset("iso");
+}
+
 void GuiApp::layout_and_panels(Requests& requests) {
+  keyboard_shortcuts(requests);
   int W = 0, H = 0;
   window_.framebuffer_size(W, H);
   const float w = static_cast<float>(W), h = static_cast<float>(H);
@@ -312,19 +337,42 @@ void GuiApp::layout_and_panels(Requests& requests) {
   ImGui::End();
 }
 
+bool GuiApp::set_edits(std::vector<Override> edits) {
+  std::vector<Override> before = std::move(state_.edits);
+  state_.edits = std::move(edits);
+  if (load_and_run(state_.scene_name)) return true;
+  state_.edits = std::move(before);
+  return false;
+}
+
 void GuiApp::apply(const Requests& r) {
+  // An edit (or a reset) is undoable; undo and redo move whole sets of
+  // edits between the two stacks. A set that does not load changes nothing.
+  auto edit_to = [&](std::vector<Override> edits) {
+    std::vector<Override> before = state_.edits;
+    if (!set_edits(std::move(edits))) return;
+    state_.undo.push_back(std::move(before));
+    state_.redo.clear();
+  };
+  auto travel = [&](std::vector<std::vector<Override>>& from, std::vector<std::vector<Override>>& to) {
+    if (from.empty()) return;
+    std::vector<Override> before = state_.edits;
+    if (!set_edits(from.back())) return;
+    from.pop_back();
+    to.push_back(std::move(before));
+  };
   if (r.edit) {
     // The latest value for a path replaces an earlier one.
-    auto& edits = state_.edits;
+    std::vector<Override> edits = state_.edits;
     edits.erase(std::remove_if(edits.begin(), edits.end(), [&](const Override& o) { return o.path == r.edit->path; }),
                 edits.end());
     edits.push_back(*r.edit);
-    if (!load_and_run(state_.scene_name)) edits.pop_back();
+    edit_to(std::move(edits));
   }
-  if (r.reset_edits) {
-    state_.edits.clear();
-    load_and_run(state_.scene_name);
-  }
+  if (r.reset_edits && !state_.edits.empty()) edit_to({});
+  if (r.undo) travel(state_.undo, state_.redo);
+  if (r.redo) travel(state_.redo, state_.undo);
+  if (r.save_scene) save_scene(*r.save_scene, r.overwrite);
   if (r.open) {
     const auto kept = state_.edits;
     const std::string kept_case = state_.study ? state_.study->shown : "";
@@ -333,6 +381,9 @@ void GuiApp::apply(const Requests& r) {
     if (!load_and_run(*r.open)) {
       state_.edits = kept;
       if (state_.study) state_.study->shown = kept_case;
+    } else {
+      state_.undo.clear();
+      state_.redo.clear();
     }
   }
   if (r.open_case && state_.study) show_case(*r.open_case);
@@ -358,6 +409,30 @@ void GuiApp::apply(const Requests& r) {
     } catch (const std::exception& e) {
       state_.export_progress = {false, 0, 0, std::string("export failed: ") + e.what()};
     }
+  }
+}
+
+void GuiApp::save_scene(const std::string& path, bool overwrite) {
+  try {
+    if (state_.study && !state_.study->shown.empty())
+      throw std::runtime_error("a study case is saved by its study file (its injected failure is not a scene value)");
+    std::error_code ec;
+    if (!overwrite && std::filesystem::exists(path, ec)) {
+      state_.confirm_overwrite = path;
+      return;
+    }
+    std::vector<Override> overrides = state_.command_line_set;
+    overrides.insert(overrides.end(), state_.edits.begin(), state_.edits.end());
+    const std::string text = scene_text_with(scene_text_named(state_.scene_name), state_.scene.source, overrides);
+    read_scene_text(text, path);  // it must read back
+    const std::string dir = std::filesystem::path(path).parent_path().string();
+    if (!dir.empty()) make_directory(dir);
+    OutputFile file(path);
+    file.stream() << text;
+    file.commit();
+    state_.notice = "saved " + path;
+  } catch (const std::exception& e) {
+    state_.notice = std::string("not saved: ") + e.what();
   }
 }
 

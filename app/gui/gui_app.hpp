@@ -70,6 +70,13 @@ class GuiApp : private ScriptTarget {
   // state_.scene_error when it does not load.
   bool show_case(const std::string& id);
   void start_run();
+  // Replaces the edits and re-runs; false (and the edits as they were) when
+  // the scene does not load with them.
+  bool set_edits(std::vector<Override> edits);
+  // The scene with the edits as YAML; asks first (confirm_overwrite) when
+  // the file exists and overwrite is false.
+  void save_scene(const std::string& path, bool overwrite);
+  void keyboard_shortcuts(Requests& requests);
   Eigen::AlignedBox3f swept_bounds() const;
   void current_poses(std::vector<Pose>& poses) const;
   void save_view_png(const std::string& path);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 #include "unfurl/sim/number_text.hpp"
 #include "output_file.hpp"
@@ -14,14 +15,30 @@ namespace {
 
 constexpr double kFrame = 1.0 / 30;  // one frame of playback
 
-// A number field for a scene value; on commit, requests `path` = value.
-void value_field(const char* label, const std::string& path, double value, double speed, Requests& requests,
-                 double lo = 0, double hi = 0, const char* format = "%.6g") {
+// A number field for a scene value: a single click and typing (Enter or
+// leaving the field commits), - and + step it; on commit, requests `path` =
+// value. The tooltip says what the value is.
+void value_field(const char* label, const std::string& path, double value, double step, Requests& requests,
+                 double lo = 0, double hi = 0, const char* format = "%.6g", const char* help = nullptr) {
   double v = value;
-  ImGui::SetNextItemWidth(160);
-  ImGui::DragScalar(label, ImGuiDataType_Double, &v, static_cast<float>(speed), lo < hi ? &lo : nullptr,
-                    lo < hi ? &hi : nullptr, format);
-  if (ImGui::IsItemDeactivatedAfterEdit() && v != value) requests.edit = Override{path, format_number(v)};
+  ImGui::SetNextItemWidth(190);
+  const bool stepped = ImGui::InputScalar(label, ImGuiDataType_Double, &v, &step, nullptr, format);
+  if (help && ImGui::IsItemHovered()) ImGui::SetTooltip("%s\n%s", help, path.c_str());
+  const bool commit = ImGui::IsItemDeactivatedAfterEdit() || (stepped && !ImGui::IsItemActive());
+  if (lo < hi) v = std::clamp(v, lo, hi);
+  if (commit && v != value) requests.edit = Override{path, format_number(v)};
+}
+
+// How a --set path names element k of a list: by its joint (or name) when
+// no other element shares it, else by its index.
+template <class Element, class NameOf>
+std::string element_path(const std::string& list, const std::vector<Element>& elements, std::size_t k, NameOf name_of,
+                         std::size_t from = 0, std::size_t to = std::string::npos) {
+  to = std::min(to, elements.size());
+  const std::string name = name_of(elements[k]);
+  for (std::size_t j = from; j < to; ++j)
+    if (j != k && name_of(elements[j]) == name) return list + "." + std::to_string(k - from);
+  return list + "." + name;
 }
 
 double run_end(const GuiState& state) { return state.scene.run.t_end; }
@@ -34,6 +51,10 @@ void toolbar_panel(GuiState& state, Requests& requests) {
   ImGui::TextUnformatted("Scene");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(360);
+  if (state.focus_scene_field) {
+    ImGui::SetKeyboardFocusHere();
+    state.focus_scene_field = false;
+  }
   const bool entered = ImGui::InputText("##scene", path, sizeof state.scene_path, ImGuiInputTextFlags_EnterReturnsTrue);
   ImGui::SameLine();
   if (ImGui::Button("Open") || entered) requests.open = std::string(path);
@@ -137,61 +158,111 @@ void timeline_panel(GuiState& state) {
   state.play_time = std::clamp(state.play_time, 0.0, t_end);
 }
 
-void parameters_panel(const GuiState& state, Requests& requests) {
+void parameters_panel(GuiState& state, Requests& requests) {
   const Scene& scene = state.scene;
   const Model& model = scene.model;
+  if (state.save_path[0] == 0) {
+    const std::string stem = std::filesystem::path(state.scene_name).stem().string();
+    std::snprintf(state.save_path, sizeof state.save_path, "%s_edited.yaml", stem.c_str());
+  }
   if (ImGui::Button("Reset to the file's values")) requests.reset_edits = true;
+  ImGui::SameLine();
+  ImGui::BeginDisabled(state.undo.empty());
+  if (ImGui::Button("Undo")) requests.undo = true;
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::BeginDisabled(state.redo.empty());
+  if (ImGui::Button("Redo")) requests.redo = true;
+  ImGui::EndDisabled();
+  ImGui::SetNextItemWidth(220);
+  ImGui::InputText("##save", state.save_path, sizeof state.save_path);
+  ImGui::SameLine();
+  if (ImGui::Button("Save scene (YAML)")) requests.save_scene = std::string(state.save_path);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("The scene with the edits below, as a file that reloads to the same run (Ctrl+S)");
+  if (!state.confirm_overwrite.empty()) ImGui::OpenPopup("Overwrite?");
+  if (ImGui::BeginPopupModal("Overwrite?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::Text("%s exists. Replace it?", state.confirm_overwrite.c_str());
+    if (ImGui::Button("Replace")) {
+      requests.save_scene = state.confirm_overwrite;
+      requests.overwrite = true;
+      state.confirm_overwrite.clear();
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) {
+      state.confirm_overwrite.clear();
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+  }
   if (!scene.springs.empty() && ImGui::CollapsingHeader("Springs and dampers", ImGuiTreeNodeFlags_DefaultOpen)) {
     for (std::size_t k = 0; k < scene.springs.size(); ++k) {
       const JointSpring& s = scene.springs[k];
       const bool damper = k >= scene.dampers_from;
-      const std::string path = damper ? "dampers." + std::to_string(k - scene.dampers_from)
-                                      : "springs." + std::to_string(k);
+      const auto joint_of = [&](const JointSpring& e) { return model.joints[e.joint].name; };
+      const std::string path = damper ? element_path("dampers", scene.springs, k, joint_of, scene.dampers_from)
+                                      : element_path("springs", scene.springs, k, joint_of, 0, scene.dampers_from);
       ImGui::PushID(static_cast<int>(k));
       ImGui::Text("%s %s", damper ? "damper" : "spring", model.joints[s.joint].name.c_str());
       if (s.curve) {
         ImGui::TextDisabled("  measured curve, %zu points (edit the file's table)", s.curve->angles().size());
       } else if (!damper) {
-        value_field("stiffness [N m/rad]", path + ".stiffness", s.stiffness, 0.005, requests, 0, 1e9);
-        value_field("preload: free angle [rad]", path + ".free_position", s.free_position, 0.01, requests);
+        value_field("stiffness [N m/rad]", path + ".stiffness", s.stiffness, 0.005, requests, 0, 1e9, "%.6g",
+                    "torsion spring rate k: tau = -k (q - free angle) - c dq");
+        value_field("preload: free angle [rad]", path + ".free_position", s.free_position, 0.01, requests, 0, 0,
+                    "%.6g", "the angle where the spring is relaxed; the preload at q is k (free angle - q)");
       }
-      value_field("damping [N m s/rad]", path + ".damping", s.damping, 0.001, requests, 0, 1e9);
+      value_field("damping [N m s/rad]", path + ".damping", s.damping, 0.001, requests, 0, 1e9, "%.6g",
+                  "viscous damping c of the hinge");
       ImGui::PopID();
     }
   }
   if (!scene.friction.empty() && ImGui::CollapsingHeader("Hinge friction")) {
     for (std::size_t k = 0; k < scene.friction.size(); ++k) {
       const JointFriction& f = scene.friction[k];
-      const std::string path = "friction." + std::to_string(k);
+      const std::string path =
+          element_path("friction", scene.friction, k, [&](const JointFriction& e) { return model.joints[e.joint].name; });
       ImGui::PushID(500 + static_cast<int>(k));
       ImGui::Text("friction %s", model.joints[f.joint].name.c_str());
-      value_field("Coulomb [N m]", path + ".coulomb", f.coulomb, 0.001, requests, 0, 1e9);
-      value_field("viscous [N m s/rad]", path + ".viscous", f.viscous, 0.001, requests, 0, 1e9);
-      value_field("velocity scale [rad/s]", path + ".velocity_scale", f.velocity_scale, 1e-4, requests, 1e-9, 1e3, "%.3g");
+      value_field("Coulomb [N m]", path + ".coulomb", f.coulomb, 0.001, requests, 0, 1e9, "%.6g",
+                  "sliding friction torque T_c: tau = -T_c tanh(dq / v_s) - c_v dq");
+      value_field("viscous [N m s/rad]", path + ".viscous", f.viscous, 0.001, requests, 0, 1e9, "%.6g",
+                  "viscous friction coefficient c_v");
+      value_field("velocity scale [rad/s]", path + ".velocity_scale", f.velocity_scale, 1e-4, requests, 1e-9, 1e3,
+                  "%.3g", "v_s: the Coulomb torque ramps through zero speed over about this rate");
       ImGui::PopID();
     }
   }
   if (!scene.point_springs.empty() && ImGui::CollapsingHeader("Point springs and cables")) {
     for (std::size_t k = 0; k < scene.point_springs.size(); ++k) {
       const PointSpring& p = scene.point_springs[k];
-      const std::string path = "point_springs." + std::to_string(k);
+      const std::string path =
+          element_path("point_springs", scene.point_springs, k, [](const PointSpring& e) { return e.name; });
       ImGui::PushID(700 + static_cast<int>(k));
       ImGui::Text("%s %s", p.tension_only ? "cable" : "spring", p.name.c_str());
-      value_field("stiffness [N/m]", path + ".stiffness", p.stiffness, 0.1, requests, 0, 1e12);
-      value_field("rest length [m]", path + ".rest_length", p.rest_length, 0.001, requests, 0, 1e6);
-      value_field("damping [N s/m]", path + ".damping", p.damping, 0.01, requests, 0, 1e12);
+      value_field("stiffness [N/m]", path + ".stiffness", p.stiffness, 0.1, requests, 0, 1e12, "%.6g",
+                  "T = k (L - rest length) + c dL/dt between the two points");
+      value_field("rest length [m]", path + ".rest_length", p.rest_length, 0.001, requests, 0, 1e6, "%.6g",
+                  "the length at which it pulls nothing (a cable is slack below it)");
+      value_field("damping [N s/m]", path + ".damping", p.damping, 0.01, requests, 0, 1e12, "%.6g",
+                  "damping c along the line");
       ImGui::PopID();
     }
   }
   if (!scene.latches.empty() && ImGui::CollapsingHeader("Latches")) {
     for (std::size_t k = 0; k < scene.latches.size(); ++k) {
       const Latch& l = scene.latches[k];
-      const std::string path = "latches." + std::to_string(k);
+      const std::string path =
+          element_path("latches", scene.latches, k, [&](const Latch& e) { return model.joints[e.joint].name; });
       ImGui::PushID(1000 + static_cast<int>(k));
       ImGui::Text("latch %s at %.4g", model.joints[l.joint].name.c_str(), l.position);
-      value_field("stiffness [N m/rad]##l", path + ".stiffness", l.stiffness, 10, requests, 1e-9, 1e12);
-      value_field("damping [N m s/rad]##l", path + ".damping", l.damping, 0.1, requests, 0, 1e12);
-      value_field("free play [rad]##l", path + ".free_play", l.free_play, 1e-4, requests, 0, 1, "%.4g");
+      value_field("stiffness [N m/rad]##l", path + ".stiffness", l.stiffness, 10, requests, 1e-9, 1e12, "%.6g",
+                  "k_L of the engaged latch: tau = -k_L (q - position) - c_L dq");
+      value_field("damping [N m s/rad]##l", path + ".damping", l.damping, 0.1, requests, 0, 1e12, "%.6g",
+                  "c_L of the engaged latch");
+      value_field("free play [rad]##l", path + ".free_play", l.free_play, 1e-4, requests, 0, 1, "%.4g",
+                  "backlash: the latch bites beyond position +- free play / 2");
       ImGui::PopID();
     }
   }
@@ -201,9 +272,10 @@ void parameters_panel(const GuiState& state, Requests& requests) {
     ImGui::SetNextItemWidth(160);
     if (ImGui::Combo("gains", &gains, "full (current W)\0paper (16), diagonal\0"))
       requests.edit = Override{"regulator.gains", gains == 0 ? "full" : "paper"};
-    value_field("v_max [rad/s]", "regulator.v_max", r.v_max, 10, requests, 1e-3, 1e9);
-    value_field("p0", "regulator.p0", r.p0, 0.01, requests, 1e-3, 100);
-    value_field("p1", "regulator.p1", r.p1, 0.01, requests, 1e-3, 0.999);
+    value_field("v_max [rad/s]", "regulator.v_max", r.v_max, 10, requests, 1e-3, 1e9, "%.6g",
+                "the regulator's bandwidth: how fast it closes a loop's gap");
+    value_field("p0", "regulator.p0", r.p0, 0.01, requests, 1e-3, 100, "%.6g", "pole placement of the PID gains (16)");
+    value_field("p1", "regulator.p1", r.p1, 0.01, requests, 1e-3, 0.999, "%.6g", "pole placement of the PID gains (16)");
   }
   if (ImGui::CollapsingHeader("Integrator", ImGuiTreeNodeFlags_DefaultOpen)) {
     const RunSettings& run = scene.run;
@@ -215,12 +287,14 @@ void parameters_panel(const GuiState& state, Requests& requests) {
     if (ImGui::Combo("integrator", &current, "cvode-bdf\0cvode-adams\0arkode-erk\0arkode-dirk\0rk4\0"))
       requests.edit = Override{"run.integrator", integrator_name(kinds[current])};
     if (run.integrator == IntegratorKind::rk4) {
-      value_field("step [s]", "run.dt", run.dt, 1e-6, requests, 1e-9, 1, "%.3g");
+      value_field("step [s]", "run.dt", run.dt, 1e-6, requests, 1e-9, 1, "%.3g", "the fixed step of RK4");
     } else {
-      value_field("rtol", "run.rtol", run.rtol, 1e-10, requests, 1e-14, 1e-1, "%.3g");
-      value_field("atol", "run.atol", run.atol, 1e-12, requests, 1e-16, 1e-1, "%.3g");
+      value_field("rtol", "run.rtol", run.rtol, 1e-10, requests, 1e-14, 1e-1, "%.3g",
+                  "relative tolerance of the integrator's local error");
+      value_field("atol", "run.atol", run.atol, 1e-12, requests, 1e-16, 1e-1, "%.3g",
+                  "absolute tolerance for the angles, rad (momenta 100x)");
     }
-    value_field("t_end [s]", "run.t_end", run.t_end, 0.1, requests, 1e-3, 1e6);
+    value_field("t_end [s]", "run.t_end", run.t_end, 0.1, requests, 1e-3, 1e6, "%.6g", "the simulated span");
   }
   if (!state.edits.empty()) {
     ImGui::Separator();

@@ -21,8 +21,9 @@ void viewport_panel(GuiState& state, unsigned texture, const Eigen::AlignedBox3f
 // single steps, loop.
 void timeline_panel(GuiState& state);
 
-// Spring, latch, regulator and integrator settings built from the scene.
-void parameters_panel(const GuiState& state, Requests& requests);
+// Spring, latch, regulator and integrator settings built from the scene;
+// undo, redo and saving the edited scene.
+void parameters_panel(GuiState& state, Requests& requests);
 
 // The plots the selected tab shows, and where plot k of them goes in a
 // panel of this size (one plot, or all in two columns).

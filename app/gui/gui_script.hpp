@@ -17,6 +17,8 @@
 //   report FILE.json      the state: runs and their latch times, frame rate
 //   open SCENE            another scene (a path or a built-in name)
 //   case ID               a case of the study opened with --study
+//   undo | redo           the last parameter edit (Ctrl+Z, Ctrl+Y)
+//   save_scene FILE.yaml  the edited scene (replacing FILE)
 //   plot NAME             the plot tab whose name starts with NAME, or all
 //   quit
 //

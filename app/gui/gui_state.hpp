@@ -31,6 +31,9 @@ struct ExportRequest {
 struct Requests {
   std::optional<Override> edit;         // a parameter: restart the run with it
   bool reset_edits = false;             // back to the scene file's values
+  bool undo = false, redo = false;      // of the parameter edits
+  std::optional<std::string> save_scene;  // the edited scene as YAML
+  bool overwrite = false;               // save_scene may replace an existing file
   std::optional<std::string> open;      // another scene (path or built-in name)
   std::optional<std::string> open_case; // a case of the open study, by id
   bool reload = false;
@@ -62,6 +65,10 @@ struct GuiState {
   std::string scene_name;                 // as given: a path or a built-in name
   std::vector<Override> command_line_set;  // --set from the command line
   std::vector<Override> edits;             // from the parameters panel
+  std::vector<std::vector<Override>> undo, redo;  // earlier and undone sets of edits
+  char save_path[256] = "";                // the Save scene field
+  std::string confirm_overwrite;           // a file the user is asked about
+  bool focus_scene_field = false;          // Ctrl+O: type a scene
   Scene scene;
   SceneVisuals visuals;
   std::string scene_error;                 // why the last load failed

@@ -67,6 +67,15 @@ void ScriptRunner::step(ScriptTarget& target, double now) {
       Requests r;
       r.open = arg(0);
       target.request(r);
+    } else if (c.name == "undo" || c.name == "redo") {
+      Requests r;
+      (c.name == "undo" ? r.undo : r.redo) = true;
+      target.request(r);
+    } else if (c.name == "save_scene") {
+      Requests r;
+      r.save_scene = arg(0);
+      r.overwrite = true;
+      target.request(r);
     } else if (c.name == "case") {
       Requests r;
       r.open_case = arg(0);

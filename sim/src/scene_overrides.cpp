@@ -137,6 +137,18 @@ void apply_override(YAML::Node& root, const Override& o, YamlFields& fields) {
   fields.mark_override(value, origin);
 }
 
+std::string scene_text_with(const std::string& text, const std::string& source, const std::vector<Override>& overrides) {
+  YamlFields fields(source);
+  YAML::Node root = fields.load_document(text);
+  for (const Override& o : overrides) apply_override(root, o, fields);
+  YAML::Emitter out;
+  out << root;
+  std::string header = "# Saved by unfurl from " + source + " with these changes:\n";
+  for (const Override& o : overrides) header += "#   " + o.path + " = " + o.value + "\n";
+  header += "# (yaml-cpp does not keep the original's comments.)\n";
+  return header + out.c_str() + "\n";
+}
+
 Override parse_override(const std::string& assignment) {
   const auto eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0)

@@ -27,6 +27,11 @@ struct Override {
 // Parses "path=value"; throws SceneError when there is no '='.
 Override parse_override(const std::string& assignment);
 
+// A scene's text with overrides applied, as YAML that reads back to the
+// same scene, headed by comments naming the changes. Throws SceneError as
+// reading would.
+std::string scene_text_with(const std::string& text, const std::string& source, const std::vector<Override>& overrides);
+
 // The paths a pattern stands for: each `*` in `path` ranges over the
 // elements of a list, named as a --set path names them ("springs.*.stiffness"
 // -> "springs.j1.stiffness", ...). Throws SceneError when none exists.
