@@ -23,6 +23,7 @@ void write_session_report(const GuiState& state, const std::string& path) {
   run("current", state.trajectory);
   run("previous", state.ghost);
   json.value("status", state.progress.running ? "running" : run_status_name(state.progress.status));
+  json.value("run_wall_time_s", state.progress.wall_time_s).value("run_steps", state.progress.steps);
   json.value("play_time", state.play_time);
   json.value("fps", state.fps);
   json.value("frames_while_running", state.frames_while_running);
