@@ -278,7 +278,10 @@ void GuiApp::layout_and_panels(Requests& requests) {
   const float w = static_cast<float>(W), h = static_cast<float>(H);
   const float toolbar = state_.scene_error.empty() && state_.progress.failure.empty() ? 40.0f : 84.0f;
   const float status = 30, left = std::round(0.62f * w), view_h = std::round(0.5f * (h - toolbar - status));
-  const float timeline = 80;
+  // Buttons, scrubber and its tick labels, without a scroll bar.
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float timeline = std::round(2 * ImGui::GetFrameHeightWithSpacing() + ImGui::GetTextLineHeight() + 4 +
+                                    2 * style.WindowPadding.y + ImGui::GetFontSize() + 2 * style.FramePadding.y + 8);
   // No window backgrounds: the clear colour is the background, so a
   // software renderer (Xvfb, llvmpipe) fills each pixel about once.
   const ImGuiWindowFlags fixed = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
@@ -301,7 +304,7 @@ void GuiApp::layout_and_panels(Requests& requests) {
   ImGui::PopStyleVar();
 
   place(0, toolbar + view_h, left, timeline);
-  ImGui::Begin("Timeline", nullptr, fixed);
+  ImGui::Begin("Timeline", nullptr, fixed | ImGuiWindowFlags_NoScrollbar);
   timeline_panel(state_);
   ImGui::End();
 

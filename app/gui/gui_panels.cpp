@@ -155,6 +155,18 @@ void timeline_panel(GuiState& state) {
   marks(state.ghost, 0.5f * (lo.y + hi.y), IM_COL32(170, 170, 170, 220), "previous");
   marks(state.trajectory, lo.y, IM_COL32(255, 90, 90, 255), "this");
   if (!names.empty()) ImGui::SetTooltip("%s", names.c_str());
+  // Time ticks under the scrubber, as many as fit.
+  const float label_width = ImGui::CalcTextSize("00.0 s").x + 12;
+  const int count = std::max(2, static_cast<int>((hi.x - lo.x) / label_width));
+  for (double tick : render::nice_ticks(0, t_end, count)) {
+    const float x = lo.x + static_cast<float>(tick / t_end) * (hi.x - lo.x);
+    draw->AddLine(ImVec2(x, hi.y), ImVec2(x, hi.y + 4), IM_COL32(200, 200, 200, 255));
+    char label[32];
+    std::snprintf(label, sizeof label, "%g s", tick + 0.0);  // no "-0"
+    const float w = ImGui::CalcTextSize(label).x;
+    draw->AddText(ImVec2(std::clamp(x - w / 2, lo.x, hi.x - w), hi.y + 4), IM_COL32(200, 200, 200, 255), label);
+  }
+  ImGui::Dummy(ImVec2(0, ImGui::GetTextLineHeight() + 4));
   state.play_time = std::clamp(state.play_time, 0.0, t_end);
 }
 
