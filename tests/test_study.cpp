@@ -136,6 +136,20 @@ TEST(StudyCases, FailuresChangeTheSceneAsNamed) {
   EXPECT_EQ(cold.friction.back().viscous, 0.01);
 }
 
+// The workbench's edits of a case go over the case's own values, its
+// preload factor included: a free position typed is the one used.
+TEST(StudyCases, EditsOfACaseGoOverItsValues) {
+  const Study study = study_from("scene: pantograph\nvary:\n  - {path: springs.j2.preload, values: [0.8]}\n");
+  const auto cases = study_cases(study);
+  ASSERT_EQ(cases.size(), 2u);
+  const Scene scaled = case_scene(study, cases[1]);
+  const Scene other_edit = case_scene_file(study, cases[1], {{"springs.j1.stiffness", "0.2"}}).scene;
+  EXPECT_EQ(other_edit.springs[1].free_position, scaled.springs[1].free_position);  // the same double
+  EXPECT_EQ(other_edit.springs[0].stiffness, 0.2);
+  const Scene typed = case_scene_file(study, cases[1], {{"springs.j2.free_position", "1.0"}}).scene;
+  EXPECT_EQ(typed.springs[1].free_position, 1.0);
+}
+
 // The runs of injected failures: the array deploys without one spring; a
 // stuck root hinge holds the whole (one-degree-of-freedom) array stowed; a
 // failed latch leaves its joint unlatched and the case not deployed.

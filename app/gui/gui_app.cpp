@@ -82,12 +82,11 @@ bool GuiApp::show_case(const std::string& id) {
   const std::string shown = state_.study->shown;
   const std::vector<Override> edits = state_.edits;
   state_.study->shown = id;
-  if (shown != id) {
-    state_.edits.clear();
-    state_.undo.clear();
-    state_.redo.clear();
+  if (shown != id) state_.edits.clear();
+  if (load_and_run(state_.study->study.scene)) {
+    if (shown != id) state_.undo.clear(), state_.redo.clear();
+    return true;
   }
-  if (load_and_run(state_.study->study.scene)) return true;
   state_.study->shown = shown;
   state_.edits = edits;
   return false;
@@ -422,6 +421,8 @@ void GuiApp::save_scene(const std::string& path, bool overwrite) {
     std::error_code ec;
     if (!overwrite && std::filesystem::exists(path, ec)) {
       state_.confirm_overwrite = path;
+      state_.ask_overwrite = true;
+      state_.notice = path + " exists: replace it? (Parameters tab)";
       return;
     }
     std::vector<Override> overrides = state_.command_line_set;

@@ -192,7 +192,10 @@ void parameters_panel(GuiState& state, Requests& requests) {
   if (ImGui::Button("Save scene (YAML)")) requests.save_scene = std::string(state.save_path);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("The scene with the edits below, as a file that reloads to the same run (Ctrl+S)");
-  if (!state.confirm_overwrite.empty()) ImGui::OpenPopup("Overwrite?");
+  if (state.ask_overwrite) {
+    ImGui::OpenPopup("Overwrite?");
+    state.ask_overwrite = false;
+  }
   if (ImGui::BeginPopupModal("Overwrite?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::Text("%s exists. Replace it?", state.confirm_overwrite.c_str());
     if (ImGui::Button("Replace")) {
@@ -249,8 +252,11 @@ void parameters_panel(GuiState& state, Requests& requests) {
   if (!scene.point_springs.empty() && ImGui::CollapsingHeader("Point springs and cables")) {
     for (std::size_t k = 0; k < scene.point_springs.size(); ++k) {
       const PointSpring& p = scene.point_springs[k];
-      const std::string path =
-          element_path("point_springs", scene.point_springs, k, [](const PointSpring& e) { return e.name; });
+      // A name the reader made up (spring<n>) is not in the file: by index.
+      const std::string path = p.name == "spring" + std::to_string(k)
+                                   ? "point_springs." + std::to_string(k)
+                                   : element_path("point_springs", scene.point_springs, k,
+                                                  [](const PointSpring& e) { return e.name; });
       ImGui::PushID(700 + static_cast<int>(k));
       ImGui::Text("%s %s", p.tension_only ? "cable" : "spring", p.name.c_str());
       value_field("stiffness [N/m]", path + ".stiffness", p.stiffness, 0.1, requests, 0, 1e12, "%.6g",

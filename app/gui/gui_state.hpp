@@ -68,6 +68,7 @@ struct GuiState {
   std::vector<std::vector<Override>> undo, redo;  // earlier and undone sets of edits
   char save_path[256] = "";                // the Save scene field
   std::string confirm_overwrite;           // a file the user is asked about
+  bool ask_overwrite = false;              // open the question (once)
   bool focus_scene_field = false;          // Ctrl+O: type a scene
   Scene scene;
   SceneVisuals visuals;

@@ -3,6 +3,7 @@
 #include "gl.hpp"
 #include "shader.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -190,10 +191,10 @@ void SceneView::draw_mesh(const MeshModel& mesh, const Eigen::Affine3f& T, const
 Eigen::Affine3f SceneView::link_placement(const PointSpring& link, const std::vector<Pose>& poses) const {
   const auto at = [&](int body, const Vec3& r) { return body == kBase ? r : poses[body].to_base(r); };
   const Eigen::Vector3f a = at(link.body_a, link.point_a).cast<float>(), b = at(link.body_b, link.point_b).cast<float>();
-  const float length = (b - a).norm();
+  const float length = std::max((b - a).norm(), 1e-6f);  // a singular scale would spoil the normals
   Eigen::Affine3f T = Eigen::Affine3f::Identity();
   T.translate(0.5f * (a + b));
-  if (length > 0) T.rotate(Eigen::Quaternionf::FromTwoVectors(Eigen::Vector3f::UnitZ(), b - a));
+  if ((b - a).norm() > 0) T.rotate(Eigen::Quaternionf::FromTwoVectors(Eigen::Vector3f::UnitZ(), b - a));
   T.scale(Eigen::Vector3f(2 * kLinkRadius, 2 * kLinkRadius, length));
   return T;
 }

@@ -35,8 +35,10 @@ void NewtonPreconditioner::setup(const double* y, const double* ydot, double gam
   const double* dq = ydot + dynamics_.layout().q();
   for (const JointFriction& f : scene.friction) {
     const int c = model.coordinate[f.joint];
-    const double sech = 1 / std::cosh(dq[c] / f.velocity_scale);
-    damping_[c] += f.viscous + f.coulomb / f.velocity_scale * sech * sech;
+    // The tanh's slope; 0 far out on its flat part (no inf * 0).
+    const double x = dq[c] / f.velocity_scale;
+    const double sech = std::abs(x) < 30 ? 1 / std::cosh(x) : 0.0;
+    damping_[c] += f.viscous + f.coulomb * (sech * sech / f.velocity_scale);
   }
   for (int l = 0; l < dynamics_.latch_count(); ++l) {
     if (!dynamics_.latch_state().engaged(l)) continue;

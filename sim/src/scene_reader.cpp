@@ -244,6 +244,8 @@ std::shared_ptr<const SpringCurve> SceneReader::spring_curve(const YAML::Node& t
     if (!q.empty() && !(p[0] > q.back()))
       fail(table[k], point, "the angles must increase along the table (" + format_number(p[0]) + " after " +
                                 format_number(q.back()) + ")");
+    if (!q.empty() && !std::isfinite((p[1] - tau.back()) / (p[0] - q.back())))
+      fail(table[k], point, "too close to the point before: the curve's slope between them is not finite");
     q.push_back(p[0]);
     tau.push_back(p[1]);
   }
@@ -273,7 +275,12 @@ void SceneReader::read_friction(const YAML::Node& list, Scene& scene) const {
     friction.joint = joint_by_name(require(f, "joint", field), scene, field + ".joint", true);
     if (f["coulomb"]) friction.coulomb = non_negative(f["coulomb"], field + ".coulomb");
     if (f["viscous"]) friction.viscous = non_negative(f["viscous"], field + ".viscous");
-    if (f["velocity_scale"]) friction.velocity_scale = positive(f["velocity_scale"], field + ".velocity_scale");
+    if (f["velocity_scale"]) {
+      friction.velocity_scale = positive(f["velocity_scale"], field + ".velocity_scale");
+      if (friction.velocity_scale < 1e-9)
+        fail(f["velocity_scale"], field + ".velocity_scale",
+             "below 1e-9 rad/s the smoothed friction is a step no integrator can follow");
+    }
     if (!f["coulomb"] && !f["viscous"]) fail(f, field, "give coulomb, viscous or both");
     scene.friction.push_back(friction);
   }

@@ -40,7 +40,10 @@ SpringCurve::SpringCurve(std::vector<double> q, std::vector<double> tau) : q_(st
   // mean where neighbours agree in sign, 0 where they do not; then limited
   // so the segment stays monotone (alpha^2 + beta^2 <= 9).
   std::vector<double> d(n - 1);
-  for (std::size_t k = 0; k + 1 < n; ++k) d[k] = (tau_[k + 1] - tau_[k]) / (q_[k + 1] - q_[k]);
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    d[k] = (tau_[k + 1] - tau_[k]) / (q_[k + 1] - q_[k]);
+    if (!std::isfinite(d[k])) throw std::invalid_argument("two angles of a spring curve are too close together");
+  }
   m_.assign(n, 0.0);
   m_[0] = d[0];
   m_[n - 1] = d[n - 2];

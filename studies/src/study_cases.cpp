@@ -160,20 +160,41 @@ std::vector<StudyCase> study_cases(const Study& study) {
 Scene case_scene(const Study& study, const StudyCase& c) { return case_scene_file(study, c).scene; }
 
 SceneFile case_scene_file(const Study& study, const StudyCase& c, const std::vector<Override>& edits) {
-  std::vector<Override> overrides = study.settings;
-  for (std::size_t i = 0; i < study.variables.size(); ++i) {
-    if (study.variables[i].is_preload()) continue;
+  const auto number = [](double x) {
     char text[64];
-    std::snprintf(text, sizeof text, "%.17g", c.inputs[i]);
-    overrides.push_back({study.variables[i].path, text});
-  }
-  overrides.insert(overrides.end(), edits.begin(), edits.end());
-  SceneFile file = read_scene_text(study.scene_text, study.scene_source, overrides);
-  Scene& scene = file.scene;
+    std::snprintf(text, sizeof text, "%.17g", x);
+    return std::string(text);
+  };
+  std::vector<Override> overrides = study.settings;
   for (std::size_t i = 0; i < study.variables.size(); ++i)
-    if (study.variables[i].is_preload())
-      scale_preload(scene, joint_named(scene.model, spring_joint_of_preload(study.variables[i].path)), c.inputs[i]);
-  if (c.failure) apply_failure(scene, *c.failure);
+    if (!study.variables[i].is_preload()) overrides.push_back({study.variables[i].path, number(c.inputs[i])});
+  const auto preload_joint = [&](const Scene& scene, std::size_t i) {
+    return joint_named(scene.model, spring_joint_of_preload(study.variables[i].path));
+  };
+  SceneFile file = read_scene_text(study.scene_text, study.scene_source, overrides);
+  for (std::size_t i = 0; i < study.variables.size(); ++i)
+    if (study.variables[i].is_preload()) scale_preload(file.scene, preload_joint(file.scene, i), c.inputs[i]);
+  if (!edits.empty()) {
+    // The edits go over the case's values: its scaled preloads become free
+    // positions in the text ahead of them (a curve's, which has none, is
+    // scaled again after).
+    std::vector<bool> in_text(study.variables.size(), false);
+    for (std::size_t i = 0; i < study.variables.size(); ++i) {
+      if (!study.variables[i].is_preload()) continue;
+      const int joint = preload_joint(file.scene, i);
+      const JointSpring& spring = spring_of(file.scene, joint);
+      if (spring.curve) continue;
+      overrides.push_back({"springs." + file.scene.model.joints[joint].name + ".free_position",
+                           number(spring.free_position)});
+      in_text[i] = true;
+    }
+    overrides.insert(overrides.end(), edits.begin(), edits.end());
+    file = read_scene_text(study.scene_text, study.scene_source, overrides);
+    for (std::size_t i = 0; i < study.variables.size(); ++i)
+      if (study.variables[i].is_preload() && !in_text[i])
+        scale_preload(file.scene, preload_joint(file.scene, i), c.inputs[i]);
+  }
+  if (c.failure) apply_failure(file.scene, *c.failure);
   return file;
 }
 
