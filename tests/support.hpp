@@ -19,6 +19,16 @@ inline Scene scene_file(const std::string& name, const std::vector<Override>& ov
   return load_scene_file(asset("scenes/" + name + ".yaml"), overrides);
 }
 
+// What reading a scene's text says is wrong with it, or "no error".
+inline std::string scene_error(const std::string& text) {
+  try {
+    load_scene_text(text, "bad");
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
 struct CommandOutcome {
   int code = -1;       // exit status, -1 when it did not exit normally
   std::string output;  // standard output and error together

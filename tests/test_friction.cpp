@@ -17,8 +17,8 @@ namespace {
 
 // A disc of inertia I = 1 kg m^2 on a hinge about x with a torsion spring
 // k = 1 N m/rad (omega = 1 rad/s), released at rest at `amplitude`.
-Scene oscillator(const std::string& friction, double amplitude) {
-  return load_scene_text(R"(
+std::string oscillator_text(const std::string& friction, double amplitude) {
+  return R"(
 name: oscillator
 bodies:
   - name: disc
@@ -33,8 +33,11 @@ friction:
 initial:
   q: {hinge: )" + std::to_string(amplitude) + R"(}
 run: {t_end: 12, sample: 0.001, rtol: 1.0e-10, atol: 1.0e-12}
-)",
-                         "oscillator");
+)";
+}
+
+Scene oscillator(const std::string& friction, double amplitude) {
+  return load_scene_text(oscillator_text(friction, amplitude), "oscillator");
 }
 
 struct Turn {
@@ -132,14 +135,7 @@ TEST(Friction, PantographBalancesEnergyWithItsLatches) {
 }
 
 TEST(Friction, SceneErrorsNameTheField) {
-  const auto error_of = [](const std::string& entry) {
-    try {
-      oscillator(entry, 0.5);
-    } catch (const SceneError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
+  const auto error_of = [](const std::string& entry) { return test::scene_error(oscillator_text(entry, 0.5)); };
   EXPECT_NE(error_of("{joint: hinge, coulomb: 0.1, velocity_scale: 0}").find("friction[0].velocity_scale"),
             std::string::npos);
   EXPECT_NE(error_of("{joint: hinge, coulomb: -0.1}").find("friction[0].coulomb"), std::string::npos);

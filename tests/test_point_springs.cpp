@@ -143,18 +143,12 @@ TEST(PointSprings, DampingIsBalancedByTheDissipatedWork) {
 
 TEST(PointSprings, SceneErrorsNameTheField) {
   const auto error_of = [](const std::string& extra) {
-    try {
-      load_scene_text(R"(
+    return test::scene_error(R"(
 bodies:
   - {name: block, parent: base, mass: 1, inertia: [1, 1, 1],
      joint: {name: x, type: prismatic, axis: [1, 0, 0], parent_point: [0, 0, 0], child_point: [0, 0, 0]}}
 point_springs:
-  - )" + extra + "\n",
-                      "bad");
-    } catch (const SceneError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
+  - )" + extra + "\n");
   };
   const std::string same = error_of("{body_a: block, body_b: block, point_b: [1, 0, 0], stiffness: 1, rest_length: 1}");
   EXPECT_NE(same.find("point_springs[0].body_b: both ends are on one body"), std::string::npos) << same;

@@ -127,14 +127,7 @@ TEST(LatchFreePlay, TheJointRattlesFreelyThenBitesHarder) {
 }
 
 TEST(SpringCurve, SceneErrorsNameTheField) {
-  const auto error_of = [](const std::string& spring) {
-    try {
-      load_scene_text(disc(spring, ""), "bad");
-    } catch (const SceneError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
+  const auto error_of = [](const std::string& spring) { return test::scene_error(disc(spring, "")); };
   const std::string order = error_of("{joint: hinge, table: [[0, 1], [1, 0.5], [0.5, 0.2]]}");
   EXPECT_NE(order.find("springs[0].table[2]: the angles must increase"), std::string::npos) << order;
   const std::string both = error_of("{joint: hinge, stiffness: 1, table: [[0, 1], [1, 0.5]]}");

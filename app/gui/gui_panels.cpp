@@ -173,6 +173,8 @@ void timeline_panel(GuiState& state) {
 void parameters_panel(GuiState& state, Requests& requests) {
   const Scene& scene = state.scene;
   const Model& model = scene.model;
+  // How a spring, friction or latch entry is named in a --set path.
+  const auto joint_name = [&](const auto& element) { return model.joints[element.joint].name; };
   if (state.save_path[0] == 0) {
     const std::string stem = std::filesystem::path(state.scene_name).stem().string();
     std::snprintf(state.save_path, sizeof state.save_path, "%s_edited.yaml", stem.c_str());
@@ -215,9 +217,8 @@ void parameters_panel(GuiState& state, Requests& requests) {
     for (std::size_t k = 0; k < scene.springs.size(); ++k) {
       const JointSpring& s = scene.springs[k];
       const bool damper = k >= scene.dampers_from;
-      const auto joint_of = [&](const JointSpring& e) { return model.joints[e.joint].name; };
-      const std::string path = damper ? element_path("dampers", scene.springs, k, joint_of, scene.dampers_from)
-                                      : element_path("springs", scene.springs, k, joint_of, 0, scene.dampers_from);
+      const std::string path = damper ? element_path("dampers", scene.springs, k, joint_name, scene.dampers_from)
+                                      : element_path("springs", scene.springs, k, joint_name, 0, scene.dampers_from);
       ImGui::PushID(static_cast<int>(k));
       ImGui::Text("%s %s", damper ? "damper" : "spring", model.joints[s.joint].name.c_str());
       if (s.curve) {
@@ -236,8 +237,7 @@ void parameters_panel(GuiState& state, Requests& requests) {
   if (!scene.friction.empty() && ImGui::CollapsingHeader("Hinge friction")) {
     for (std::size_t k = 0; k < scene.friction.size(); ++k) {
       const JointFriction& f = scene.friction[k];
-      const std::string path =
-          element_path("friction", scene.friction, k, [&](const JointFriction& e) { return model.joints[e.joint].name; });
+      const std::string path = element_path("friction", scene.friction, k, joint_name);
       ImGui::PushID(500 + static_cast<int>(k));
       ImGui::Text("friction %s", model.joints[f.joint].name.c_str());
       value_field("Coulomb [N m]", path + ".coulomb", f.coulomb, 0.001, requests, 0, 1e9, "%.6g",
@@ -271,8 +271,7 @@ void parameters_panel(GuiState& state, Requests& requests) {
   if (!scene.latches.empty() && ImGui::CollapsingHeader("Latches")) {
     for (std::size_t k = 0; k < scene.latches.size(); ++k) {
       const Latch& l = scene.latches[k];
-      const std::string path =
-          element_path("latches", scene.latches, k, [&](const Latch& e) { return model.joints[e.joint].name; });
+      const std::string path = element_path("latches", scene.latches, k, joint_name);
       ImGui::PushID(1000 + static_cast<int>(k));
       ImGui::Text("latch %s at %.4g", model.joints[l.joint].name.c_str(), l.position);
       value_field("stiffness [N m/rad]##l", path + ".stiffness", l.stiffness, 10, requests, 1e-9, 1e12, "%.6g",
