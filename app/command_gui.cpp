@@ -4,6 +4,7 @@
 #include "cli.hpp"
 #include "commands.hpp"
 #include "gui/gui_app.hpp"
+#include "render_options.hpp"
 #include "scene_options.hpp"
 
 namespace unfurl::app {
@@ -27,6 +28,7 @@ const char* kHelp =
     "\n"
     "options:\n"
     "  --script FILE         run a scripted session (see app/gui/gui_script.hpp for the commands)\n"
+    "  --window WxH          the window's size in pixels (default 1280x800)\n"
     "  --study STUDY.yaml    a study file, with --out DIR: the directory its sweep wrote\n"
     "  --case ID             the case to show first (default: the first finished one)\n"
     "%s";
@@ -38,6 +40,7 @@ int command_gui(const std::vector<std::string>& argv) {
   valued.insert("--study");
   valued.insert("--out");
   valued.insert("--case");
+  valued.insert("--window");
   const Args args(argv, valued, {"--help", "-h"});
   if (args.has("--help") || args.has("-h")) {
     std::printf(kHelp, scene_flags_help());
@@ -54,7 +57,9 @@ int command_gui(const std::vector<std::string>& argv) {
   } else if (args.get("--out") || args.get("--case")) {
     throw UsageError("--out and --case go with --study");
   }
-  GuiApp app(args.positionals().empty() ? "pantograph" : args.positionals()[0], overrides_from(args), script, study);
+  const auto [width, height] = parse_pixel_size("--window", args.get("--window").value_or("1280x800"));
+  GuiApp app(args.positionals().empty() ? "pantograph" : args.positionals()[0], overrides_from(args), script, study,
+             width, height);
   return app.run();
 }
 

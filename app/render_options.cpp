@@ -3,24 +3,27 @@
 #include <cmath>
 #include <filesystem>
 #include <sstream>
+#include <tuple>
 
 #include "unfurl/sim/kinematics.hpp"
 #include "unfurl/render/mesh_library.hpp"
 
 namespace unfurl::app {
 
+std::pair<int, int> parse_pixel_size(const std::string& flag, const std::string& text) {
+  int w = 0, h = 0;
+  char x = 0, extra = 0;
+  std::istringstream in(text);
+  if (!(in >> w >> x >> h) || x != 'x' || (in >> extra) || w < 16 || h < 16 || w > 8192 || h > 8192)
+    throw UsageError(flag + ": expected WxH between 16x16 and 8192x8192, got '" + text + "'");
+  return {w, h};
+}
+
 RenderOptions parse_render_options(const Args& args) {
   RenderOptions o;
   o.fps = args.number("--fps", o.fps);
   if (!(o.fps > 0) || o.fps > 10000) throw UsageError("--fps: must be between 0 and 10000");
-  if (const auto size = args.get("--size")) {
-    int w = 0, h = 0;
-    char x = 0, extra = 0;
-    std::istringstream in(*size);
-    if (!(in >> w >> x >> h) || x != 'x' || (in >> extra) || w < 16 || h < 16 || w > 8192 || h > 8192)
-      throw UsageError("--size: expected WxH between 16x16 and 8192x8192, got '" + *size + "'");
-    o.width = w, o.height = h;
-  }
+  if (const auto size = args.get("--size")) std::tie(o.width, o.height) = parse_pixel_size("--size", *size);
   o.from = args.number("--from");
   o.to = args.number("--to");
   if (o.from && o.to && *o.to < *o.from) throw UsageError("--to must not be before --from");

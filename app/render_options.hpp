@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "unfurl/render/camera.hpp"
@@ -23,6 +24,9 @@ struct RenderOptions {
   std::string camera = "iso";  // a preset or "AZ,EL,DIST"
   render::GlBackend gl = render::GlBackend::automatic;
 };
+
+// "WxH" in pixels, 16 to 8192 each; throws UsageError naming the flag.
+std::pair<int, int> parse_pixel_size(const std::string& flag, const std::string& text);
 
 // From --fps, --size, --from, --to, --video, --camera, --gl; throws
 // UsageError.

@@ -184,6 +184,98 @@ TEST(Gui, EditsUndoRedoAndSaveAsAFileThatReloadsToTheSameRun) {
   EXPECT_NEAR(j1, latch_time(redone, "current", "j1"), 1e-9) << redone;
 }
 
+// A row of the report's comparison table: the current run's figure, then
+// each pinned run's (NaN for null).
+std::vector<double> comparison_row(const std::string& report, const std::string& figure) {
+  std::smatch m;
+  const std::regex row("\"figure\": \"" + figure + "\",\\s*\"current\": ([^,\\s]+),\\s*\"pinned\": \\[([^\\]]*)\\]");
+  if (!std::regex_search(report, m, row)) return {};
+  std::vector<double> values{m[1] == "null" ? NAN : std::stod(m[1])};
+  std::stringstream list(m[2].str());
+  for (std::string cell; std::getline(list, cell, ',');) {
+    cell.erase(std::remove_if(cell.begin(), cell.end(), ::isspace), cell.end());
+    if (!cell.empty()) values.push_back(cell == "null" ? NAN : std::stod(cell));
+  }
+  return values;
+}
+
+// Pixels of the second pinned run's yellow over the dark plots.
+int pinned_yellow_pixels(const render::Image& image, int x0, int y0, int x1, int y1) {
+  int count = 0;
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) {
+      const std::uint8_t* p = image.pixel(x, y);
+      if (p[0] > 150 && p[1] > 120 && p[2] < 90 && p[0] - p[2] > 90 && std::abs(p[0] - p[1]) < 60) ++count;
+    }
+  return count;
+}
+
+// Runs pinned for comparison: each one's figures in the difference table
+// are the figures it had as the current run; they are drawn in the plots
+// in their colour; zoom and the joint checklist reach the plots; a scene of
+// another shape drops them.
+TEST(Gui, PinnedRunsAreTabledAndDrawnAgainstTheCurrentRun) {
+  if (!app::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
+  const fs::path dir = fs::temp_directory_path() / ("unfurl_gui_pins_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "session.txt") << "wait_run\n"
+                                        "report " << (dir / "first.json").string() << "\n"
+                                        "pin file values\n"
+                                        "set springs.j1.stiffness 0.12\n"
+                                        "wait_run\n"
+                                        "report " << (dir / "second.json").string() << "\n"
+                                        "pin j1 spring 0.12\n"
+                                        "undo\n"
+                                        "wait_run\n"
+                                        "plot angles\n"
+                                        "curves j1 j3\n"
+                                        "zoom 7.2 7.6\n"
+                                        "wait 0.5\n"
+                                        "screenshot " << (dir / "pins.png").string() << "\n"
+                                        "report " << (dir / "third.json").string() << "\n"
+                                        "unpin 0\n"
+                                        "report " << (dir / "unpinned.json").string() << "\n"
+                                        "open zfold\n"
+                                        "wait_run\n"
+                                        "report " << (dir / "other.json").string() << "\n"
+                                        "quit\n";
+  const std::string command = "timeout 300 xvfb-run -a -s '-screen 0 1280x800x24' " + std::string(UNFURL_BINARY) +
+                              " gui pantograph --t-end 9 --script " + (dir / "session.txt").string() + " > " +
+                              (dir / "log.txt").string() + " 2>&1";
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << slurp(dir / "log.txt");
+  const std::string first = slurp(dir / "first.json"), second = slurp(dir / "second.json");
+  const std::string third = slurp(dir / "third.json");
+  EXPECT_NE(third.find("\"name\": \"file values\""), std::string::npos) << third;
+  EXPECT_NE(third.find("\"name\": \"j1 spring 0.12\""), std::string::npos) << third;
+  for (const char* figure : {"deployment time, s", "peak latch torque, N m", "final energy, J", "dissipated, J",
+                             "largest gap, m", "latch j1, s", "latch j5, s"}) {
+    const std::vector<double> then1 = comparison_row(first, figure), then2 = comparison_row(second, figure);
+    const std::vector<double> now = comparison_row(third, figure);
+    ASSERT_EQ(now.size(), 3u) << figure << "\n" << third;
+    ASSERT_EQ(then1.size(), 1u) << figure << "\n" << first;
+    ASSERT_EQ(then2.size(), 2u) << figure << "\n" << second;
+    EXPECT_TRUE(std::isfinite(now[0])) << figure;
+    EXPECT_DOUBLE_EQ(now[1], then1[0]) << figure;
+    EXPECT_DOUBLE_EQ(now[2], then2[0]) << figure;
+  }
+  // Undone, the current run is the file's again (the same figures as the
+  // first pinned run); the run with j1's spring changed deployed later.
+  const std::vector<double> deployment = comparison_row(third, "deployment time, s");
+  EXPECT_DOUBLE_EQ(deployment[0], deployment[1]);
+  EXPECT_GT(deployment[2], deployment[0] + 0.1);
+  EXPECT_TRUE(std::regex_search(third, std::regex("\"time_zoom\": \\[\\s*7.2,\\s*7.6\\s*\\]"))) << third;
+  EXPECT_TRUE(std::regex_search(third, std::regex("\"plot_curves\": \\[\\s*\"j1\",\\s*\"j3\"\\s*\\]"))) << third;
+  // The yellow of the second pinned run is in the plot panel (bottom left).
+  const render::Image shot = test::read_png((dir / "pins.png").string());
+  EXPECT_GT(pinned_yellow_pixels(shot, 0, shot.height * 2 / 3, shot.width * 6 / 10, shot.height - 40), 50);
+  const std::string unpinned = slurp(dir / "unpinned.json"), other = slurp(dir / "other.json");
+  EXPECT_EQ(unpinned.find("\"name\": \"file values\""), std::string::npos) << unpinned;
+  EXPECT_EQ(comparison_row(unpinned, "final energy, J").size(), 2u) << unpinned;
+  EXPECT_TRUE(std::regex_search(other, std::regex("\"pinned\": \\[\\s*\\]"))) << "another scene's pins were kept: " << other;
+}
+
 // A finished study in the workbench: the Study tab lists its cases; picking
 // one (here by the script, as a click does) re-runs that case, whose latch
 // times are the study's own for it; a failure case (a latch removed) then

@@ -39,8 +39,8 @@ std::optional<std::filesystem::file_time_type> modification_time(const std::stri
 }  // namespace
 
 GuiApp::GuiApp(const std::string& scene_name, std::vector<Override> command_line_set, std::vector<ScriptCommand> script,
-               std::optional<StudyToOpen> study)
-    : window_(1280, 800, "unfurl"), script_(std::move(script)) {
+               std::optional<StudyToOpen> study, int width, int height)
+    : window_(width, height, "unfurl"), script_(std::move(script)) {
   state_.command_line_set = std::move(command_line_set);
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
@@ -116,6 +116,7 @@ bool GuiApp::load_and_run(const std::string& name) {
     auto meshes = std::make_unique<render::MeshLibrary>(mesh_directories(scene));
     auto view = std::make_unique<render::SceneView>(scene, file.visuals, *meshes);
     const bool same_scene = name == state_.scene_name && same_structure(scene, state_.scene);
+    const SceneShape previous_shape = scene_shape(state_.scene);
     state_.scene = std::move(scene);
     state_.visuals = std::move(file.visuals);
     state_.scene_name = name;
@@ -130,12 +131,51 @@ bool GuiApp::load_and_run(const std::string& name) {
       state_.scene_first_generation = state_.requested_generation;
       state_.trajectory = Trajectory{};
       state_.ghost = Trajectory{};
+      keep_comparable_pins(previous_shape);
     }
     return true;
   } catch (const std::exception& e) {
     state_.scene_error = e.what();
     return false;
   }
+}
+
+void GuiApp::keep_comparable_pins(const SceneShape& previous) {
+  // Pinned runs stay with runs of the same shape (a study's cases, an
+  // edited scene); another scene's would be read with the wrong indices.
+  const SceneShape shape = scene_shape(state_.scene);
+  const std::size_t before = state_.pinned.size();
+  state_.pinned.erase(std::remove_if(state_.pinned.begin(), state_.pinned.end(),
+                                     [&](const PinnedRun& p) { return !(p.shape == shape); }),
+                      state_.pinned.end());
+  if (state_.pinned.size() < before)
+    state_.notice = std::to_string(before - state_.pinned.size()) + " pinned run(s) of another scene dropped";
+  if (!(shape == previous)) state_.plot_coordinates.clear(), state_.time_zoom.reset();
+  ++state_.plots_version;
+}
+
+void GuiApp::pin_current_run(const std::string& name) {
+  if (state_.progress.running || state_.generation < state_.requested_generation || !state_.progress.summary ||
+      state_.trajectory.empty()) {
+    state_.notice = "not pinned: the run has not finished";
+    return;
+  }
+  PinnedRun p;
+  p.name = name.empty() ? "run " + std::to_string(state_.generation) : name;
+  std::snprintf(p.name_field, sizeof p.name_field, "%s", p.name.c_str());
+  p.shape = scene_shape(state_.scene);
+  p.trajectory = state_.trajectory;
+  p.summary = state_.progress.summary;
+  // The first colour no pinned run has.
+  int k = 0;
+  while (k < 6 && std::any_of(state_.pinned.begin(), state_.pinned.end(),
+                              [&](const PinnedRun& q) { return q.color == pinned_color(k); }))
+    ++k;
+  p.color = pinned_color(k < 6 ? k : static_cast<int>(state_.pinned.size()));
+  state_.pinned.push_back(std::move(p));
+  state_.select_runs_tab = true;
+  ++state_.plots_version;
+  state_.notice = "pinned " + state_.pinned.back().name;
 }
 
 void GuiApp::start_run() { state_.requested_generation = worker_.run(state_.scene); }
@@ -160,12 +200,25 @@ void GuiApp::advance_playback(double dt) {
   if (state_.progress.running && next > state_.progress.t_reached) return;
   if (next <= t_end) {
     state_.play_time = next;
+    follow_play_head();
   } else if (state_.loop) {
     state_.play_time = 0;
   } else {
     state_.play_time = t_end;
     state_.playing = false;
   }
+}
+
+void GuiApp::follow_play_head() {
+  // Playback past a zoomed span turns the page: the span moves on and keeps
+  // its width, so the plots show what the 3D view shows.
+  if (!state_.time_zoom) return;
+  auto& [t0, t1] = *state_.time_zoom;
+  if (state_.play_time >= t0 && state_.play_time <= t1) return;
+  const double width = t1 - t0;
+  t0 = std::clamp(state_.play_time, 0.0, std::max(0.0, state_.scene.run.t_end - width));
+  t1 = t0 + width;
+  ++state_.plots_version;
 }
 
 void GuiApp::watch_scene_file() {
@@ -224,7 +277,7 @@ void GuiApp::draw_plots_texture() {
   // run streams in. The play-head is drawn over them by the panel.
   const int w = std::max(16, state_.plots_width), h = std::max(16, state_.plots_height);
   const PlotsKey key{state_.generation, state_.trajectory.samples.size(), state_.ghost.samples.size(), w, h,
-                     state_.plot_tab};
+                     state_.plot_tab, state_.plots_version};
   const double now = now_seconds();
   if (plots_ && key == plots_key_) return;
   if (plots_ && state_.progress.running && now - plots_drawn_at_ < 0.5) return;
@@ -238,11 +291,11 @@ void GuiApp::draw_plots_texture() {
   render::clear_bound_framebuffer(background.x, background.y, background.z);
   plots_layer_->begin_frame(w, h);
   const std::vector<render::PlotKind> kinds = shown_plots(state_);
-  const Trajectory* ghost = state_.ghost.empty() ? nullptr : &state_.ghost;
+  const render::PlotChoice choice = plot_choice(state_);
   for (std::size_t k = 0; k < kinds.size(); ++k) {
     const ImVec4 cell = plot_cell(k, kinds.size(), ImVec2(static_cast<float>(w), static_cast<float>(h)));
     if (state_.trajectory.empty()) continue;
-    const render::PlotSpec spec = render::trajectory_plot(kinds[k], state_.scene, state_.trajectory, ghost);
+    const render::PlotSpec spec = render::trajectory_plot(kinds[k], state_.scene, state_.trajectory, choice);
     plot_frames_.push_back(render::draw_plot(plots_layer_->draw_list(), ImVec2(cell.x, cell.y), ImVec2(cell.z, cell.w),
                                              spec, false));
   }
@@ -276,7 +329,10 @@ void GuiApp::layout_and_panels(Requests& requests) {
   window_.framebuffer_size(W, H);
   const float w = static_cast<float>(W), h = static_cast<float>(H);
   const float toolbar = state_.scene_error.empty() && state_.progress.failure.empty() ? 40.0f : 84.0f;
-  const float status = 30, left = std::round(0.62f * w), view_h = std::round(0.5f * (h - toolbar - status));
+  // "all" plots take more of the left column than one plot does.
+  const bool all_plots = state_.plot_tab >= static_cast<int>(render::plot_kinds(state_.scene).size());
+  const float status = 30, left = std::round(0.62f * w);
+  const float view_h = std::round((all_plots ? 0.36f : 0.5f) * (h - toolbar - status));
   // Buttons, scrubber and its tick labels, without a scroll bar.
   const ImGuiStyle& style = ImGui::GetStyle();
   const float timeline = std::round(2 * ImGui::GetFrameHeightWithSpacing() + ImGui::GetTextLineHeight() + 4 +
@@ -308,7 +364,7 @@ void GuiApp::layout_and_panels(Requests& requests) {
   ImGui::End();
 
   place(0, toolbar + view_h + timeline, left, h - toolbar - view_h - timeline - status);
-  ImGui::Begin("Plots", nullptr, fixed | ImGuiWindowFlags_NoScrollbar);
+  ImGui::Begin("Plots", nullptr, fixed | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
   plots_panel(state_, plots_ ? plots_->texture() : 0, plot_frames_);
   ImGui::End();
 
@@ -323,6 +379,11 @@ void GuiApp::layout_and_panels(Requests& requests) {
       export_panel(state_, requests);
       ImGui::EndTabItem();
     }
+    if (ImGui::BeginTabItem("Runs", nullptr, state_.select_runs_tab ? ImGuiTabItemFlags_SetSelected : 0)) {
+      runs_panel(state_, requests);
+      ImGui::EndTabItem();
+    }
+    state_.select_runs_tab = false;
     if (state_.study &&
         ImGui::BeginTabItem("Study", nullptr, state_.select_study_tab ? ImGuiTabItemFlags_SetSelected : 0)) {
       study_panel(state_, requests);
@@ -389,6 +450,11 @@ void GuiApp::apply(const Requests& r) {
     }
   }
   if (r.open_case && state_.study) show_case(*r.open_case);
+  if (r.pin) pin_current_run(*r.pin);
+  if (r.unpin && *r.unpin < state_.pinned.size()) {
+    state_.pinned.erase(state_.pinned.begin() + static_cast<long>(*r.unpin));
+    ++state_.plots_version;
+  }
   if (r.reload) load_and_run(state_.scene_name);
   if (r.save_frame) save_view_png(*r.save_frame);
   if (r.save_trajectory) {

@@ -31,7 +31,8 @@ struct StudyToOpen {
 class GuiApp : private ScriptTarget {
  public:
   GuiApp(const std::string& scene_name, std::vector<Override> command_line_set,
-         std::vector<ScriptCommand> script, std::optional<StudyToOpen> study = std::nullopt);
+         std::vector<ScriptCommand> script, std::optional<StudyToOpen> study = std::nullopt, int width = 1280,
+         int height = 800);
   ~GuiApp();
   GuiApp(const GuiApp&) = delete;
   GuiApp& operator=(const GuiApp&) = delete;
@@ -70,6 +71,11 @@ class GuiApp : private ScriptTarget {
   // state_.scene_error when it does not load.
   bool show_case(const std::string& id);
   void start_run();
+  // After a change of scene: drops the pinned runs it cannot be compared
+  // with (and the joint choice and zoom with them).
+  void keep_comparable_pins(const SceneShape& previous);
+  void pin_current_run(const std::string& name);
+  void follow_play_head();
   // Replaces the edits and re-runs; false (and the edits as they were) when
   // the scene does not load with them.
   bool set_edits(std::vector<Override> edits);
@@ -89,7 +95,7 @@ class GuiApp : private ScriptTarget {
   std::unique_ptr<render::Framebuffer> plots_;
   std::unique_ptr<render::ImGuiLayer> plots_layer_;
   std::vector<render::PlotFrame> plot_frames_;
-  using PlotsKey = std::tuple<long, std::size_t, std::size_t, int, int, int>;
+  using PlotsKey = std::tuple<long, std::size_t, std::size_t, int, int, int, long>;
   PlotsKey plots_key_{};
   double plots_drawn_at_ = 0;
   std::unique_ptr<ExportJob> export_job_;

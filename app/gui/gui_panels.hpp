@@ -30,6 +30,10 @@ void parameters_panel(GuiState& state, Requests& requests);
 std::vector<render::PlotKind> shown_plots(const GuiState& state);
 ImVec4 plot_cell(std::size_t k, std::size_t count, ImVec2 panel);
 
+// What the plots draw besides the current run: the previous run, the shown
+// pinned runs, the chosen joints and the time zoom.
+render::PlotChoice plot_choice(const GuiState& state);
+
 // The plots (drawn beforehand into `texture` with the previous run as a
 // ghost; `frames` says where each plot's axes are), the play-head over them,
 // values on hover; a click seeks.
@@ -41,6 +45,10 @@ void export_panel(GuiState& state, Requests& requests);
 // A finished study: counts, histograms, the sortable table of cases; a
 // click on a case asks to show it (study_panel.cpp).
 void study_panel(GuiState& state, Requests& requests);
+
+// Pin the current run, manage the pinned runs, and their difference table
+// (runs_panel.cpp).
+void runs_panel(GuiState& state, Requests& requests);
 
 // Simulated time, wall time, steps, RHS calls, real-time factor, integrator.
 void status_bar(const GuiState& state);

@@ -20,6 +20,11 @@
 //   undo | redo           the last parameter edit (Ctrl+Z, Ctrl+Y)
 //   save_scene FILE.yaml  the edited scene (replacing FILE)
 //   plot NAME             the plot tab whose name starts with NAME, or all
+//   pin [NAME...]         pin the finished current run (named by the words,
+//                         or as the Runs tab offers)
+//   unpin K|all           drop pinned run K (from 0) or all of them
+//   zoom T0 T1 | zoom all the plots' time span, as the mouse wheel sets it
+//   curves JOINT... | curves first12    the joints the plots draw
 //   quit
 //
 // Blank lines and lines starting with # are skipped.

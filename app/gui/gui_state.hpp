@@ -14,6 +14,7 @@
 
 #include "unfurl/render/camera.hpp"
 #include "render_options.hpp"
+#include "run_comparison.hpp"
 #include "unfurl/sim/scene.hpp"
 #include "unfurl/sim/scene_file.hpp"
 #include "simulation_worker.hpp"
@@ -36,6 +37,8 @@ struct Requests {
   bool overwrite = false;               // save_scene may replace an existing file
   std::optional<std::string> open;      // another scene (path or built-in name)
   std::optional<std::string> open_case; // a case of the open study, by id
+  std::optional<std::string> pin;       // keep the current (finished) run under this name
+  std::optional<std::size_t> unpin;     // drop pinned run k
   bool reload = false;
   std::optional<std::string> save_frame;       // PNG of the current view
   std::optional<std::string> save_trajectory;  // CSV of the current run
@@ -89,6 +92,12 @@ struct GuiState {
   Trajectory trajectory;
   Trajectory ghost;
   RunProgress progress;
+  // Runs kept for comparison, drawn with the current one and tabled
+  // against it (the Runs tab); they stay while the scene keeps its shape.
+  std::vector<PinnedRun> pinned;
+  char pin_name[64] = "";
+  std::string pin_name_offered;  // the name the field last offered
+  bool select_runs_tab = false;
 
   // Playback.
   double play_time = 0;
@@ -102,6 +111,9 @@ struct GuiState {
   int viewport_width = 0, viewport_height = 0;
   int plots_width = 0, plots_height = 0;
   int plot_tab = 0;  // one of the scene's plots, or the last tab: all of them
+  std::vector<int> plot_coordinates;  // the joints the plots draw; empty: the first 12
+  std::optional<std::pair<double, double>> time_zoom;  // the plots' time span; none: the whole run
+  long plots_version = 0;  // changes with what the plots show beyond the runs' data
 
   // Frames drawn; what the last scripted idle cost (CPU seconds per second
   // over all threads, and frames; -1 before one).

@@ -87,6 +87,31 @@ void ScriptRunner::step(ScriptTarget& target, double now) {
       state.plot_tab = static_cast<int>(kinds.size());
       for (std::size_t k = 0; k < kinds.size(); ++k)
         if (std::string(render::plot_kind_name(kinds[k])).rfind(arg(0), 0) == 0) state.plot_tab = static_cast<int>(k);
+    } else if (c.name == "pin") {
+      std::string name;
+      for (const std::string& word : c.args) name += (name.empty() ? "" : " ") + word;
+      Requests r;
+      r.pin = name.empty() ? std::string(state.pin_name) : name;
+      target.request(r);
+    } else if (c.name == "unpin") {
+      for (std::size_t k = arg(0) == "all" ? state.pinned.size() : 1; k > 0; --k) {
+        Requests r;
+        r.unpin = arg(0) == "all" ? k - 1 : std::stoul(arg(0));
+        target.request(r);
+      }
+    } else if (c.name == "zoom") {
+      if (arg(0) == "all")
+        state.time_zoom.reset();
+      else
+        state.time_zoom = std::pair(std::stod(arg(0)), std::stod(c.args.at(1)));
+      ++state.plots_version;
+    } else if (c.name == "curves") {
+      state.plot_coordinates.clear();
+      const Model& model = state.scene.model;
+      for (const std::string& joint : c.args)
+        for (int k = 0; k < model.nq; ++k)
+          if (model.joints[model.joint_of_coordinate[k]].name == joint) state.plot_coordinates.push_back(k);
+      ++state.plots_version;
     } else if (c.name == "report") {
       write_session_report(state, arg(0));
     } else if (c.name == "quit") {

@@ -1,5 +1,6 @@
 #include "session_report.hpp"
 
+#include "gui_panels.hpp"
 #include "json_writer.hpp"
 #include "output_file.hpp"
 
@@ -22,6 +23,34 @@ void write_session_report(const GuiState& state, const std::string& path) {
   };
   run("current", state.trajectory);
   run("previous", state.ghost);
+  json.begin_array("pinned");
+  for (const PinnedRun& p : state.pinned) {
+    json.begin_object();
+    json.value("name", p.name).value("shown", p.shown);
+    json.value("samples", static_cast<long>(p.trajectory.samples.size()));
+    json.end_object();
+  }
+  json.end_array();
+  // The Runs tab's table: each figure of the current run and of every
+  // pinned run (null where a run lacks it).
+  if (state.progress.summary) {
+    json.begin_array("comparison");
+    for (const ComparisonRow& row : compare_runs(*state.progress.summary, state.pinned)) {
+      json.begin_object();
+      json.value("figure", row.name).value("current", row.current);
+      json.begin_array("pinned");
+      for (double v : row.pinned) json.value("", v);
+      json.end_array();
+      json.end_object();
+    }
+    json.end_array();
+  }
+  if (state.time_zoom)
+    json.begin_array("time_zoom").value("", state.time_zoom->first).value("", state.time_zoom->second).end_array();
+  json.begin_array("plot_curves");
+  for (int c : render::chosen_coordinates(state.scene.model, plot_choice(state)))
+    json.value("", state.scene.model.joints[state.scene.model.joint_of_coordinate[c]].name);
+  json.end_array();
   json.value("status", state.progress.running ? "running" : run_status_name(state.progress.status));
   json.value("run_wall_time_s", state.progress.wall_time_s).value("run_steps", state.progress.steps);
   json.value("play_time", state.play_time);

@@ -93,7 +93,10 @@ void SimulationWorker::loop() {
       result.status = RunStatus::failed;
       result.failure = {0, 0, "setup", e.what()};
     }
+    std::shared_ptr<const RunSummary> summary;
+    if (result.status != RunStatus::cancelled) summary = std::make_shared<const RunSummary>(summarize(scene, result));
     std::lock_guard<std::mutex> lock(mutex_);
+    progress_.summary = std::move(summary);
     buffer_.layout = result.trajectory.layout;
     progress_.running = false;
     progress_.status = result.status;

@@ -15,6 +15,7 @@
 
 #include "unfurl/sim/scene.hpp"
 #include "unfurl/sim/simulation.hpp"
+#include "unfurl/sim/summary.hpp"
 
 namespace unfurl::app {
 
@@ -28,6 +29,8 @@ struct RunProgress {
   double wall_time_s = 0;
   long steps = 0;
   long rhs_calls = 0;
+  // The finished (or failed) run's figures; null while it runs.
+  std::shared_ptr<const RunSummary> summary;
 };
 
 class SimulationWorker {

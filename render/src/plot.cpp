@@ -21,15 +21,25 @@ Theme theme(bool light) {
           IM_COL32(230, 230, 230, 255), IM_COL32(160, 160, 165, 255), IM_COL32(240, 110, 110, 200)};
 }
 
-std::string tick_label(double v, bool log_axis) {
+// A tick's label with the digits its step needs: neighbours differ even on
+// a zoomed axis (7.382, 7.384, not 7.38, 7.38).
+std::string tick_label(double v, bool log_axis, double step) {
   char buf[32];
+  if (std::abs(v) < 1e-12 * std::max(1.0, step)) v = 0;  // no "-0"
+  const int step_exponent = static_cast<int>(std::floor(std::log10(step > 0 ? step : 1) + 1e-9));
   if (log_axis)
     std::snprintf(buf, sizeof buf, "1e%d", static_cast<int>(std::lround(v)));
   else if (v == 0 || (std::abs(v) >= 1e-3 && std::abs(v) < 1e5))
-    std::snprintf(buf, sizeof buf, "%g", std::abs(v) < 1e-12 ? 0.0 : v);
+    std::snprintf(buf, sizeof buf, "%.*f", std::clamp(-step_exponent, 0, 9), v);
   else
-    std::snprintf(buf, sizeof buf, "%.0e", v);
+    std::snprintf(buf, sizeof buf, "%.*e",
+                  std::clamp(static_cast<int>(std::floor(std::log10(std::abs(v)))) - step_exponent, 0, 6), v);
   return buf;
+}
+
+// A ghost's colour: its own when translucent (a pinned run's), else faint.
+ImU32 ghost_color(ImU32 color) {
+  return (color >> IM_COL32_A_SHIFT) < 0xFF ? color : (color & 0x00FFFFFF) | 0x60000000;
 }
 
 // A value as placed on its axis: log10 on a log axis.
@@ -171,32 +181,50 @@ void draw_legend(ImDrawList* draw, const PlotFrame& f, const PlotSpec& spec, con
     bool dashed;
     bool dot = false;  // a scatter's series: a dot, not a line
   };
-  std::vector<Entry> entries;
-  const Series* ghost = nullptr;
+  std::vector<Entry> entries, runs;
+  bool unnamed_ghost = false;
   for (const Series& s : spec.series) {
-    if (!s.ghost)
+    if (!s.ghost) {
       entries.push_back({s.label, s.color, s.dashed, !s.lines});
-    else if (!ghost)
-      ghost = &s;
+      continue;
+    }
+    // One entry per other run; the unnamed ones (the previous run, the
+    // other cases) share the spec's ghost label.
+    const std::string label = s.run.empty() ? spec.ghost_label : s.run;
+    if (label.empty() || (s.run.empty() && unnamed_ghost)) continue;
+    if (std::any_of(runs.begin(), runs.end(), [&](const Entry& e) { return e.label == label; })) continue;
+    unnamed_ghost = unnamed_ghost || s.run.empty();
+    const ImU32 color = ghost_color(s.color);
+    runs.push_back({label, (color >> IM_COL32_A_SHIFT) < 0x90 ? (color & 0x00FFFFFF) | 0x90000000 : color, false,
+                    !s.lines});
   }
-  if (ghost && !spec.ghost_label.empty())
-    entries.push_back({spec.ghost_label, (ghost->color & 0x00FFFFFF) | 0x90000000, false, !ghost->lines});
-  const bool has_events = !spec.events.empty();
+  entries.insert(entries.end(), runs.begin(), runs.end());
+  if (!spec.events.empty()) entries.push_back({spec.event_label, th.event, true});
+  if (entries.empty()) return;
+  // As many entries as fit: in columns when a short plot has more curves
+  // than rows, and "+N more" beyond that.
   const float line = 1.2f * font, swatch = 1.6f * font, margin = 0.5f * font;
-  const int room = std::max(1, static_cast<int>((f.plot_max.y - f.plot_min.y - 1.5f * font) / line));
-  const int total = static_cast<int>(entries.size()) + (has_events ? 1 : 0);
-  std::string more;
-  if (room < 4 && total > room) return;  // too small for a useful legend
-  if (total > room) {
-    more = "+" + std::to_string(total - room + 1) + " more";
-    entries.resize(std::max(0, room - 1 - (has_events ? 1 : 0)));
-  }
-  if (has_events) entries.push_back({spec.event_label, th.event, true});
-  float widest = ImGui::CalcTextSize(more.c_str()).x;
+  const int room = static_cast<int>((f.plot_max.y - f.plot_min.y - 1.5f * font) / line);
+  if (room < 2) return;  // too small for a useful legend
+  float widest = ImGui::CalcTextSize("+99 more").x;
   for (const auto& e : entries) widest = std::max(widest, ImGui::CalcTextSize(e.label.c_str()).x);
-  const int rows = static_cast<int>(entries.size()) + (more.empty() ? 0 : 1);
-  if (rows == 0) return;
-  const ImVec2 box(widest + swatch + 1.5f * font, rows * line + margin);
+  const float column_width = widest + swatch + 1.5f * font;
+  const int total = static_cast<int>(entries.size());
+  const int most_columns = std::max(1, static_cast<int>(0.7f * (f.plot_max.x - f.plot_min.x) / column_width));
+  const int columns = std::min(most_columns, (total + room - 1) / room);
+  std::string more;
+  if (total > room * columns) {
+    const int kept = room * columns - 1;
+    more = "+" + std::to_string(total - kept) + " more";
+    // The event marker's entry stays: it explains the dashed verticals.
+    const bool events_last = !spec.events.empty();
+    const Entry events = entries.back();
+    entries.resize(std::max(0, kept - (events_last ? 1 : 0)));
+    if (events_last) entries.push_back(events);
+  }
+  const int slots = static_cast<int>(entries.size()) + (more.empty() ? 0 : 1);
+  const int rows = std::min(room, (slots + columns - 1) / columns);
+  const ImVec2 box(columns * column_width, rows * line + margin);
   ImVec2 box_min;
   int fewest = std::numeric_limits<int>::max();
   for (const bool top : {true, false})
@@ -209,9 +237,15 @@ void draw_legend(ImDrawList* draw, const PlotFrame& f, const PlotSpec& spec, con
   const ImVec2 box_max(box_min.x + box.x, box_min.y + box.y);
   draw->AddRectFilled(box_min, box_max, (th.background & 0x00FFFFFF) | 0xE0000000);
   draw->AddRect(box_min, box_max, th.grid);
-  float y = box_min.y + margin;
-  for (const Entry& e : entries) {
-    const ImVec2 a(box_min.x + margin, y + line / 2), b(a.x + swatch, a.y);
+  for (int k = 0; k < slots; ++k) {
+    const float x = box_min.x + margin + static_cast<float>(k / rows) * column_width;
+    const float y = box_min.y + margin + static_cast<float>(k % rows) * line;
+    if (k == static_cast<int>(entries.size())) {
+      draw->AddText(ImVec2(x, y + (line - font) / 2), th.muted, more.c_str());
+      break;
+    }
+    const Entry& e = entries[k];
+    const ImVec2 a(x, y + line / 2), b(a.x + swatch, a.y);
     if (e.dot)
       draw->AddCircleFilled(ImVec2(0.5f * (a.x + b.x), a.y), 0.22f * font, e.color);
     else if (e.dashed)
@@ -219,9 +253,7 @@ void draw_legend(ImDrawList* draw, const PlotFrame& f, const PlotSpec& spec, con
     else
       draw->AddLine(a, b, e.color, 2.5f);
     draw->AddText(ImVec2(b.x + margin, y + (line - font) / 2), th.text, e.label.c_str());
-    y += line;
   }
-  if (!more.empty()) draw->AddText(ImVec2(box_min.x + margin, y + (line - font) / 2), th.muted, more.c_str());
 }
 
 }  // namespace
@@ -277,20 +309,28 @@ PlotFrame draw_plot(ImDrawList* draw, ImVec2 origin, ImVec2 size, const PlotSpec
   PlotFrame f;
   f.log_x = spec.log_x;
   f.log_y = spec.log_y;
-  f.plot_min = ImVec2(origin.x + 5.0f * font, origin.y + 2.2f * font);
-  f.plot_max = ImVec2(origin.x + size.x - 1.2f * font, origin.y + size.y - 3.0f * font);
-  draw->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y), th.background);
+  // A short plot (one of several in a panel) keeps its axes tall: the
+  // x-axis label moves to the end of the tick row.
+  const bool compact = size.y < 11 * font;
+  f.plot_min = ImVec2(origin.x + 5.0f * font, origin.y + (compact ? 1.5f : 2.2f) * font);
+  f.plot_max = ImVec2(origin.x + size.x - 1.2f * font, origin.y + size.y - (compact ? 1.4f : 3.0f) * font);
+  const ImVec2 corner(origin.x + size.x, origin.y + size.y);
+  draw->PushClipRect(origin, corner, true);
+  draw->AddRectFilled(origin, corner, th.background);
 
-  // Data ranges.
+  // Data ranges: of everything, or of what lies in the zoomed span.
+  const bool zoomed = spec.x_range && !spec.log_x && spec.x_range->second > spec.x_range->first;
   double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
   for (const Series& s : spec.series)
     for (std::size_t k = 0; k < s.x.size(); ++k) {
       if (!plottable(s.x[k], s.y[k], spec.log_x, spec.log_y)) continue;
+      if (zoomed && (s.x[k] < spec.x_range->first || s.x[k] > spec.x_range->second)) continue;
       const double x = axis_value(s.x[k], spec.log_x), y = axis_value(s.y[k], spec.log_y);
       x0 = std::min(x0, x), x1 = std::max(x1, x);
       y0 = std::min(y0, y), y1 = std::max(y1, y);
     }
   if (!std::isfinite(x0)) x0 = 0, x1 = 1, y0 = 0, y1 = 1;
+  if (zoomed) x0 = spec.x_range->first, x1 = spec.x_range->second;
   if (spec.log_x) {
     x0 = std::floor(x0), x1 = std::ceil(x1);
     if (x1 <= x0) x1 = x0 + 1;
@@ -309,30 +349,50 @@ PlotFrame draw_plot(ImDrawList* draw, ImVec2 origin, ImVec2 size, const PlotSpec
   // Grid, ticks and labels.
   // As many ticks as the axes have room for.
   const int x_room = std::max(2, static_cast<int>((f.plot_max.x - f.plot_min.x) / (6 * font)));
-  const int y_room = std::max(2, static_cast<int>((f.plot_max.y - f.plot_min.y) / (2.5f * font)));
-  const std::vector<double> xt = spec.log_x ? decade_ticks(x0, x1, x_room) : nice_ticks(x0, x1, std::min(8, x_room));
-  const std::vector<double> yt = spec.log_y ? decade_ticks(y0, y1, y_room) : nice_ticks(y0, y1, std::min(6, y_room));
+  const int y_room = std::max(3, static_cast<int>((f.plot_max.y - f.plot_min.y) / (2.5f * font)));
+  // A linear axis gets at least three labelled ticks, even when its range
+  // sits just past a round step (-1.6 to 1.6 at a step of 2 has one).
+  const auto linear_ticks = [](double lo, double hi, int target) {
+    std::vector<double> ticks = nice_ticks(lo, hi, target);
+    while (ticks.size() < 3 && target < 12) ticks = nice_ticks(lo, hi, ++target);
+    return ticks;
+  };
+  const std::vector<double> xt = spec.log_x ? decade_ticks(x0, x1, x_room) : linear_ticks(x0, x1, std::min(8, x_room));
+  const std::vector<double> yt = spec.log_y ? decade_ticks(y0, y1, y_room) : linear_ticks(y0, y1, std::min(6, y_room));
+  const ImVec2 xs = ImGui::CalcTextSize(spec.x_label.c_str());
+  const float x_label_left = compact ? f.plot_max.x - xs.x : corner.x;
   for (double x : xt) {
     const float sx = f.plot_min.x + static_cast<float>((x - x0) / (x1 - x0)) * (f.plot_max.x - f.plot_min.x);
     draw->AddLine(ImVec2(sx, f.plot_min.y), ImVec2(sx, f.plot_max.y), th.grid);
-    const std::string label = tick_label(x, spec.log_x);
+    const std::string label = tick_label(x, spec.log_x, xt.size() > 1 ? xt[1] - xt[0] : 1);
     const ImVec2 ts = ImGui::CalcTextSize(label.c_str());
-    draw->AddText(ImVec2(sx - ts.x / 2, f.plot_max.y + 0.3f * font), th.text, label.c_str());
+    if (sx + ts.x / 2 + 0.5f * font > x_label_left) continue;
+    draw->AddText(ImVec2(sx - ts.x / 2, f.plot_max.y + 0.2f * font), th.text, label.c_str());
   }
   for (double y : yt) {
     const float sy = f.plot_max.y - static_cast<float>((y - y0) / (y1 - y0)) * (f.plot_max.y - f.plot_min.y);
     draw->AddLine(ImVec2(f.plot_min.x, sy), ImVec2(f.plot_max.x, sy), th.grid);
-    const std::string label = tick_label(y, spec.log_y);
+    const std::string label = tick_label(y, spec.log_y, yt.size() > 1 ? yt[1] - yt[0] : 1);
     const ImVec2 ts = ImGui::CalcTextSize(label.c_str());
     draw->AddText(ImVec2(f.plot_min.x - ts.x - 0.4f * font, sy - ts.y / 2), th.text, label.c_str());
   }
-  // The title with the quantity's unit, over the axes.
-  draw->AddText(ImVec2(f.plot_min.x, origin.y + 0.4f * font), th.text, spec.title.c_str());
-  const ImVec2 title_size = ImGui::CalcTextSize(spec.title.c_str());
-  draw->AddText(ImVec2(f.plot_min.x + title_size.x + font, origin.y + 0.4f * font), th.muted, spec.y_label.c_str());
-  const ImVec2 xs = ImGui::CalcTextSize(spec.x_label.c_str());
-  draw->AddText(ImVec2((f.plot_min.x + f.plot_max.x - xs.x) / 2, f.plot_max.y + 1.6f * font), th.muted,
-                spec.x_label.c_str());
+  // The title with the quantity's unit, over the axes; a short plot puts
+  // the unit first, where a narrow cell does not clip it.
+  const float title_y = origin.y + (compact ? 0.2f : 0.4f) * font;
+  if (compact) {
+    const ImVec2 unit_size = ImGui::CalcTextSize(spec.y_label.c_str());
+    draw->AddText(ImVec2(origin.x + 0.4f * font, title_y), th.muted, spec.y_label.c_str());
+    draw->AddText(ImVec2(origin.x + unit_size.x + 1.4f * font, title_y), th.text, spec.title.c_str());
+  } else {
+    draw->AddText(ImVec2(f.plot_min.x, title_y), th.text, spec.title.c_str());
+    const ImVec2 title_size = ImGui::CalcTextSize(spec.title.c_str());
+    draw->AddText(ImVec2(f.plot_min.x + title_size.x + font, title_y), th.muted, spec.y_label.c_str());
+  }
+  if (compact)
+    draw->AddText(ImVec2(x_label_left, f.plot_max.y + 0.2f * font), th.muted, spec.x_label.c_str());
+  else
+    draw->AddText(ImVec2((f.plot_min.x + f.plot_max.x - xs.x) / 2, f.plot_max.y + 1.6f * font), th.muted,
+                  spec.x_label.c_str());
 
   // Curves, clipped to the axes.
   draw->PushClipRect(f.plot_min, f.plot_max, true);
@@ -347,7 +407,7 @@ PlotFrame draw_plot(ImDrawList* draw, ImVec2 origin, ImVec2 size, const PlotSpec
       if (s.ghost != (ghost == 1)) continue;
       screen_points(f, s, points);
       drawn.mark(points);
-      const ImU32 color = s.ghost ? (s.color & 0x00FFFFFF) | 0x60000000 : s.color;
+      const ImU32 color = s.ghost ? ghost_color(s.color) : s.color;
       if (s.markers)
         for (std::size_t k = 0; k < s.x.size(); ++k)
           if (plottable(s.x[k], s.y[k], f.log_x, f.log_y)) draw->AddCircleFilled(f.to_screen(s.x[k], s.y[k]), 0.3f * font, color);
@@ -365,6 +425,7 @@ PlotFrame draw_plot(ImDrawList* draw, ImVec2 origin, ImVec2 size, const PlotSpec
   draw->AddRect(f.plot_min, f.plot_max, th.frame);
 
   draw_legend(draw, f, spec, th, drawn);
+  draw->PopClipRect();
   return f;
 }
 

@@ -1,5 +1,6 @@
 #include "unfurl/render/trajectory_plots.hpp"
 
+#include <algorithm>
 #include <functional>
 
 namespace unfurl::render {
@@ -21,15 +22,30 @@ Series series(const Trajectory& tr, const std::string& label, ImU32 color, const
   return s;
 }
 
-// Adds the curves of one run (ghost: a previous run).
-void add_curves(PlotSpec& spec, PlotKind kind, const Scene& scene, const Trajectory& tr, bool ghost, int max_joints) {
+}  // namespace
+
+std::vector<int> chosen_coordinates(const Model& model, const PlotChoice& choice) {
+  std::vector<int> coordinates;
+  for (int c : choice.coordinates)
+    if (c >= 0 && c < model.nq) coordinates.push_back(c);
+  if (choice.coordinates.empty())
+    for (int c = 0; c < std::min(model.nq, choice.max_joints); ++c) coordinates.push_back(c);
+  return coordinates;
+}
+
+namespace {
+
+// Adds the curves of one run (`other`: a run compared with the current one).
+void add_curves(PlotSpec& spec, PlotKind kind, const Scene& scene, const Trajectory& tr, const ComparedRun* other,
+                const PlotChoice& choice) {
   const Model& model = scene.model;
   const StateLayout& L = tr.layout;
+  const std::vector<int> coordinates = chosen_coordinates(model, choice);
   std::vector<Series> added;
   switch (kind) {
     case PlotKind::angles:
     case PlotKind::rates:
-      for (int c = 0; c < std::min(model.nq, max_joints); ++c) {
+      for (int c : coordinates) {
         const std::string& joint = model.joints[model.joint_of_coordinate[c]].name;
         added.push_back(kind == PlotKind::angles
                             ? series(tr, joint, palette(c), [&, c](const Sample& s) { return s.y[L.q() + c]; })
@@ -50,9 +66,16 @@ void add_curves(PlotSpec& spec, PlotKind kind, const Scene& scene, const Traject
       // Latch torques (solid) and the hinge moments' magnitudes (dashed) of
       // the latched joints, or of the first joints of a scene without latches.
       if (tr.empty() || tr.samples.front().loads.joints.empty()) break;
+      const int max_joints = choice.max_joints;
+      const auto chosen = [&](int j) {
+        const int c = model.coordinate[j];
+        return choice.coordinates.empty() || std::find(coordinates.begin(), coordinates.end(), c) != coordinates.end();
+      };
       std::vector<int> joints;
-      for (const Latch& latch : scene.latches) joints.push_back(latch.joint);
-      for (int j = 0; joints.empty() && j < std::min(model.size(), max_joints); ++j) joints.push_back(j);
+      for (const Latch& latch : scene.latches)
+        if (chosen(latch.joint)) joints.push_back(latch.joint);
+      for (int j = 0; scene.latches.empty() && j < model.size() && static_cast<int>(joints.size()) < max_joints; ++j)
+        if (chosen(j)) joints.push_back(j);
       if (static_cast<int>(joints.size()) > max_joints / 2) joints.resize(std::max(1, max_joints / 2));
       for (std::size_t k = 0; k < joints.size(); ++k) {
         const int j = joints[k];
@@ -76,19 +99,23 @@ void add_curves(PlotSpec& spec, PlotKind kind, const Scene& scene, const Traject
       break;
   }
   for (Series& s : added) {
-    s.ghost = ghost;
+    if (other) {
+      s.ghost = true;
+      s.run = other->name;
+      if (other->color != 0) s.color = other->color;
+    }
     spec.series.push_back(std::move(s));
   }
 }
 
 }  // namespace
 
-PlotSpec trajectory_plot(PlotKind kind, const Scene& scene, const Trajectory& trajectory, const Trajectory* ghost,
-                         int max_joints) {
+PlotSpec trajectory_plot(PlotKind kind, const Scene& scene, const Trajectory& trajectory, const PlotChoice& choice) {
   PlotSpec spec;
   spec.x_label = "time, s";
-  const bool truncated = scene.model.nq > max_joints;
-  const std::string which = truncated ? " (first " + std::to_string(max_joints) + " joints)" : "";
+  spec.x_range = choice.time_range;
+  const int nq = scene.model.nq, shown = static_cast<int>(chosen_coordinates(scene.model, choice).size());
+  const std::string which = shown < nq ? " (" + std::to_string(shown) + " of " + std::to_string(nq) + " joints)" : "";
   switch (kind) {
     case PlotKind::angles:
       spec.title = scene.name + ": joint angles" + which;
@@ -112,8 +139,9 @@ PlotSpec trajectory_plot(PlotKind kind, const Scene& scene, const Trajectory& tr
       spec.y_label = "J";
       break;
   }
-  if (ghost) add_curves(spec, kind, scene, *ghost, true, max_joints);
-  add_curves(spec, kind, scene, trajectory, false, max_joints);
+  for (const ComparedRun& other : choice.others)
+    if (other.trajectory && !other.trajectory->empty()) add_curves(spec, kind, scene, *other.trajectory, &other, choice);
+  add_curves(spec, kind, scene, trajectory, nullptr, choice);
   for (const LatchEvent& e : trajectory.events)
     if (spec.events.empty() || std::abs(spec.events.back() - e.t) > 1e-6) spec.events.push_back(e.t);
   return spec;
@@ -143,7 +171,9 @@ std::vector<NamedPlot> trajectory_plots(const Scene& scene, const Trajectory& tr
   std::vector<NamedPlot> plots;
   for (PlotKind kind : plot_kinds(scene)) {
     if (kind == PlotKind::loads && (trajectory.empty() || trajectory.samples.front().loads.joints.empty())) continue;
-    plots.push_back({kind, files[static_cast<int>(kind)], trajectory_plot(kind, scene, trajectory, nullptr, max_joints)});
+    PlotChoice choice;
+    choice.max_joints = max_joints;
+    plots.push_back({kind, files[static_cast<int>(kind)], trajectory_plot(kind, scene, trajectory, choice)});
   }
   return plots;
 }

@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace unfurl::render {
@@ -15,7 +16,8 @@ struct Series {
   std::string label;
   std::vector<double> x, y;
   ImU32 color = IM_COL32(255, 255, 255, 255);
-  bool ghost = false;  // a previous run, drawn faint; one legend entry for all (PlotSpec::ghost_label)
+  bool ghost = false;  // another run, drawn faint (or in its own colour when that is translucent)
+  std::string run;     // a ghost's run: one legend entry per run; empty: one for all (PlotSpec::ghost_label)
   bool dashed = false;  // a second quantity of the same thing (an angle beside a distance)
   bool markers = false;  // a dot at every point (a few measured points, not a signal)
   bool lines = true;     // false: the dots alone (a scatter plot)
@@ -29,6 +31,8 @@ struct PlotSpec {
   std::string event_label = "latch";
   std::string ghost_label = "previous run";  // the legend's one entry for the ghost series
   std::optional<double> cursor;  // x of the play-head
+  // The span of x shown (a zoom, linear axes); y then fits the data inside it.
+  std::optional<std::pair<double, double>> x_range;
 };
 
 // Where the data went on screen: for hit tests (hover values) and tests.

@@ -4,7 +4,9 @@
 // loads (latch torques and hinge moments) and energy; latch events marked.
 #pragma once
 
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "unfurl/render/plot.hpp"
@@ -32,8 +34,27 @@ struct NamedPlot {
 // drawn, in scene order.
 std::vector<NamedPlot> trajectory_plots(const Scene& scene, const Trajectory& trajectory, int max_joints = 12);
 
-// One plot; `ghost` (may be null) adds a previous run's curves, faint.
-PlotSpec trajectory_plot(PlotKind kind, const Scene& scene, const Trajectory& trajectory,
-                         const Trajectory* ghost = nullptr, int max_joints = 12);
+// Another run drawn with the current one: the previous run (colour 0: each
+// curve faint in its own colour) or a pinned run (a translucent colour of
+// its own, its name in the legend).
+struct ComparedRun {
+  const Trajectory* trajectory = nullptr;
+  std::string name;
+  ImU32 color = 0;
+};
+
+struct PlotChoice {
+  std::vector<ComparedRun> others;
+  // The coordinates whose angles and rates are drawn (and whose latches'
+  // loads); empty: the first max_joints.
+  std::vector<int> coordinates;
+  int max_joints = 12;
+  std::optional<std::pair<double, double>> time_range;  // a zoom
+};
+
+PlotSpec trajectory_plot(PlotKind kind, const Scene& scene, const Trajectory& trajectory, const PlotChoice& choice = {});
+
+// The coordinates a plot of joints draws under `choice`.
+std::vector<int> chosen_coordinates(const Model& model, const PlotChoice& choice);
 
 }  // namespace unfurl::render
