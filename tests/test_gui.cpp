@@ -337,5 +337,52 @@ TEST(Gui, StudyCasesOpenFromTheStudyTab) {
   EXPECT_GT(cell_pixels(shot, 0, 60, shot.width * 6 / 10, shot.height / 2), 2000);
 }
 
+// What a failure case put into its scene (an added friction, a stuck
+// hinge's stop, here latches.8 beside j2's own latch, a broken spring) is
+// the study file's: an edit of it is refused with a message (it used to fail to load, or be undone by the
+// failure), while the case's other parameters stay editable.
+TEST(Gui, AFailureCasesInjectedElementsAreReadOnly) {
+  if (!app::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
+  const fs::path dir = fs::temp_directory_path() / ("unfurl_gui_failure_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string study = std::string(UNFURL_SOURCE_DIR) + "/tests/studies/gui_failures.yaml";
+  const test::CommandOutcome sweep =
+      test::run_command(std::string(UNFURL_BINARY) + " sweep " + study + " --out " + (dir / "study").string() + " --quiet");
+  ASSERT_EQ(sweep.code, 0) << sweep.output;
+  std::ofstream(dir / "session.txt") << "case fail-hinge-j4-friction-0.05Nm\n"
+                                        "wait_run\n"
+                                        "set friction.j4.coulomb 0.2\n"
+                                        "report " << (dir / "friction.json").string() << "\n"
+                                        "case fail-hinge-j2-stuck\n"
+                                        "wait_run\n"
+                                        "set latches.8.stiffness 5\n"
+                                        "report " << (dir / "stuck.json").string() << "\n"
+                                        "case fail-spring-j1-breaks\n"
+                                        "wait_run\n"
+                                        "set springs.j1.stiffness 1\n"
+                                        "report " << (dir / "spring.json").string() << "\n"
+                                        "set latches.j3.stiffness 900\n"
+                                        "wait_run\n"
+                                        "report " << (dir / "other.json").string() << "\n"
+                                        "quit\n";
+  const std::string command = "timeout 300 xvfb-run -a -s '-screen 0 1280x800x24' " + std::string(UNFURL_BINARY) +
+                              " gui --study " + study + " --out " + (dir / "study").string() + " --script " +
+                              (dir / "session.txt").string() + " > " + (dir / "log.txt").string() + " 2>&1";
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << slurp(dir / "log.txt");
+  const std::regex no_edits("\"edits\": \\[\\s*\\]");
+  for (const auto& [file, element] : {std::pair{"friction.json", "friction.j4"}, std::pair{"stuck.json", "latches.8"},
+                                      std::pair{"spring.json", "springs.j1"}}) {
+    const std::string report = slurp(dir / file);
+    EXPECT_NE(report.find("belongs to the case's failure"), std::string::npos) << report;
+    EXPECT_NE(report.find("\"" + std::string(element) + "\""), std::string::npos) << report;  // failure_elements
+    EXPECT_TRUE(std::regex_search(report, no_edits)) << report;
+  }
+  const std::string other = slurp(dir / "other.json");
+  EXPECT_NE(other.find("latches.j3.stiffness=900"), std::string::npos) << other;
+  EXPECT_NE(other.find("\"study_case\": \"fail-spring-j1-breaks\""), std::string::npos) << other;
+}
+
 }  // namespace
 }  // namespace unfurl

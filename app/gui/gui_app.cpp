@@ -113,6 +113,8 @@ bool GuiApp::load_and_run(const std::string& name) {
     SceneFile file = shown_case ? case_scene_file(state_.study->study, *shown_case, overrides)
                                 : read_scene_named(name, overrides);
     Scene& scene = file.scene;
+    std::vector<std::string> injected;
+    if (shown_case && shown_case->failure) injected = failure_elements(scene, *shown_case->failure);
     auto meshes = std::make_unique<render::MeshLibrary>(mesh_directories(scene));
     auto view = std::make_unique<render::SceneView>(scene, file.visuals, *meshes);
     const bool same_scene = name == state_.scene_name && same_structure(scene, state_.scene);
@@ -122,6 +124,8 @@ bool GuiApp::load_and_run(const std::string& name) {
     state_.scene_name = name;
     state_.scene_mtime = modification_time(name);
     state_.scene_error.clear();
+    state_.failure_elements = std::move(injected);
+    state_.failure_text = shown_case && shown_case->failure ? shown_case->failure->describe() : "";
     view_ = std::move(view);
     meshes_ = std::move(meshes);
     start_run();
@@ -301,6 +305,8 @@ void GuiApp::draw_plots_texture() {
   }
   plots_layer_->end_frame();
   plots_->resolve();
+  const bool whole_run = !state_.progress.running && state_.generation >= state_.requested_generation;
+  if (whole_run && state_.edited_at > state_.curves_at) state_.curves_at = now_seconds();
 }
 
 void GuiApp::keyboard_shortcuts(Requests& requests) {
@@ -414,6 +420,7 @@ void GuiApp::apply(const Requests& r) {
   auto edit_to = [&](std::vector<Override> edits) {
     std::vector<Override> before = state_.edits;
     if (!set_edits(std::move(edits))) return;
+    state_.edited_at = now_seconds();
     state_.undo.push_back(std::move(before));
     state_.redo.clear();
   };
@@ -424,7 +431,10 @@ void GuiApp::apply(const Requests& r) {
     from.pop_back();
     to.push_back(std::move(before));
   };
-  if (r.edit) {
+  if (r.edit && edits_element(r.edit->path, state_.failure_elements)) {
+    state_.notice = "not edited: " + r.edit->path + " belongs to the case's failure (" + state_.failure_text +
+                    "); the study file sets it";
+  } else if (r.edit) {
     // The latest value for a path replaces an earlier one.
     std::vector<Override> edits = state_.edits;
     edits.erase(std::remove_if(edits.begin(), edits.end(), [&](const Override& o) { return o.path == r.edit->path; }),

@@ -43,6 +43,34 @@ std::string element_path(const std::string& list, const std::vector<Element>& el
 
 double run_end(const GuiState& state) { return state.scene.run.t_end; }
 
+// An element the shown study case's failure put in the scene: its fields
+// are drawn disabled (from construction to the end of the scope) with a
+// note saying why.
+class FailureLock {
+ public:
+  FailureLock(const GuiState& state, const std::string& path)
+      : state_(state),
+        locked_(std::find(state.failure_elements.begin(), state.failure_elements.end(), path) !=
+                state.failure_elements.end()) {
+    if (locked_) ImGui::BeginDisabled();
+  }
+  ~FailureLock() {
+    if (locked_) ImGui::EndDisabled();
+  }
+  FailureLock(const FailureLock&) = delete;
+  FailureLock& operator=(const FailureLock&) = delete;
+
+  void note() const {
+    if (!locked_) return;
+    ImGui::SameLine();
+    ImGui::TextDisabled("(the case's failure: %s; set by the study file)", state_.failure_text.c_str());
+  }
+
+ private:
+  const GuiState& state_;
+  bool locked_;
+};
+
 }  // namespace
 
 void toolbar_panel(GuiState& state, Requests& requests) {
@@ -220,7 +248,9 @@ void parameters_panel(GuiState& state, Requests& requests) {
       const std::string path = damper ? element_path("dampers", scene.springs, k, joint_name, scene.dampers_from)
                                       : element_path("springs", scene.springs, k, joint_name, 0, scene.dampers_from);
       ImGui::PushID(static_cast<int>(k));
+      const FailureLock lock(state, path);
       ImGui::Text("%s %s", damper ? "damper" : "spring", model.joints[s.joint].name.c_str());
+      lock.note();
       if (s.curve) {
         ImGui::TextDisabled("  measured curve, %zu points (edit the file's table)", s.curve->angles().size());
       } else if (!damper) {
@@ -239,7 +269,9 @@ void parameters_panel(GuiState& state, Requests& requests) {
       const JointFriction& f = scene.friction[k];
       const std::string path = element_path("friction", scene.friction, k, joint_name);
       ImGui::PushID(500 + static_cast<int>(k));
+      const FailureLock lock(state, path);
       ImGui::Text("friction %s", model.joints[f.joint].name.c_str());
+      lock.note();
       value_field("Coulomb [N m]", path + ".coulomb", f.coulomb, 0.001, requests, 0, 1e9, "%.6g",
                   "sliding friction torque T_c: tau = -T_c tanh(dq / v_s) - c_v dq");
       value_field("viscous [N m s/rad]", path + ".viscous", f.viscous, 0.001, requests, 0, 1e9, "%.6g",
@@ -273,7 +305,9 @@ void parameters_panel(GuiState& state, Requests& requests) {
       const Latch& l = scene.latches[k];
       const std::string path = element_path("latches", scene.latches, k, joint_name);
       ImGui::PushID(1000 + static_cast<int>(k));
+      const FailureLock lock(state, path);
       ImGui::Text("latch %s at %.4g", model.joints[l.joint].name.c_str(), l.position);
+      lock.note();
       value_field("stiffness [N m/rad]##l", path + ".stiffness", l.stiffness, 10, requests, 1e-9, 1e12, "%.6g",
                   "k_L of the engaged latch: tau = -k_L (q - position) - c_L dq");
       value_field("damping [N m s/rad]##l", path + ".damping", l.damping, 0.1, requests, 0, 1e12, "%.6g",

@@ -81,6 +81,10 @@ struct GuiState {
   // replaces the scene file as what the edits apply to.
   std::optional<StudyBrowser> study;
   bool select_study_tab = false;  // bring the Study tab to the front once
+  // What the shown case's failure put into the scene (study_browser.hpp):
+  // read-only in the panel; and the failure, described.
+  std::vector<std::string> failure_elements;
+  std::string failure_text;
 
   // The runs: the current one as far as computed, and the previous one.
   long generation = -1;
@@ -126,6 +130,10 @@ struct GuiState {
   double fps = 0;
   long frames_while_running = 0;
   double seconds_while_running = 0, worst_frame_while_running = 0;
+
+  // The last edit, and when the plots first showed its whole run: the
+  // edit-to-new-curves latency (steady-clock seconds; 0 before).
+  double edited_at = 0, curves_at = 0;
 
   ExportForm export_form;
   ExportProgress export_progress;

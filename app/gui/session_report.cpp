@@ -53,6 +53,7 @@ void write_session_report(const GuiState& state, const std::string& path) {
   json.end_array();
   json.value("status", state.progress.running ? "running" : run_status_name(state.progress.status));
   json.value("run_wall_time_s", state.progress.wall_time_s).value("run_steps", state.progress.steps);
+  json.value("edit_to_curves_s", state.curves_at > state.edited_at ? state.curves_at - state.edited_at : -1.0);
   json.value("play_time", state.play_time);
   json.value("fps", state.fps);
   json.value("frames_while_running", state.frames_while_running);
@@ -60,6 +61,10 @@ void write_session_report(const GuiState& state, const std::string& path) {
              state.seconds_while_running > 0 ? state.frames_while_running / state.seconds_while_running : 0.0);
   json.value("worst_frame_ms_while_running", 1000 * state.worst_frame_while_running);
   json.value("idle_cpu_fraction", state.idle_cpu_fraction).value("idle_frames", state.idle_frames);
+  json.value("notice", state.notice);
+  json.begin_array("failure_elements");
+  for (const std::string& e : state.failure_elements) json.value("", e);
+  json.end_array();
   json.begin_array("edits");
   for (const Override& o : state.edits) json.value("", o.path + "=" + o.value);
   json.end_array();

@@ -68,4 +68,47 @@ void StudyBrowser::sort(int column, bool ascending) {
   std::stable_sort(order.begin(), order.end(), less);
 }
 
+namespace {
+
+// Element k of a list as a path names it: by its joint when no other
+// element of the list has that joint, and always by index.
+template <class Element>
+void name_element(const std::string& list, const std::vector<Element>& elements, std::size_t k, const Model& model,
+                  std::vector<std::string>& out) {
+  out.push_back(list + "." + std::to_string(k));
+  const int joint = elements[k].joint;
+  const auto shared = std::count_if(elements.begin(), elements.end(), [&](const Element& e) { return e.joint == joint; });
+  if (shared == 1) out.push_back(list + "." + model.joints[joint].name);
+}
+
+}  // namespace
+
+std::vector<std::string> failure_elements(const Scene& scene, const StudyFailure& failure) {
+  std::vector<std::string> elements;
+  const Model& model = scene.model;
+  switch (failure.kind) {
+    case StudyFailure::Kind::latch_fails: break;  // nothing left to edit
+    case StudyFailure::Kind::spring_breaks:
+    case StudyFailure::Kind::preload_loss: {
+      const std::vector<JointSpring> springs(scene.springs.begin(),
+                                             scene.springs.begin() + static_cast<long>(scene.dampers_from));
+      for (std::size_t k = 0; k < springs.size(); ++k)
+        if (model.joints[springs[k].joint].name == failure.joint) name_element("springs", springs, k, model, elements);
+      break;
+    }
+    case StudyFailure::Kind::stuck:  // the stop is the last latch
+      if (!scene.latches.empty()) name_element("latches", scene.latches, scene.latches.size() - 1, model, elements);
+      break;
+    case StudyFailure::Kind::extra_friction:  // the added friction is the last entry
+      if (!scene.friction.empty()) name_element("friction", scene.friction, scene.friction.size() - 1, model, elements);
+      break;
+  }
+  return elements;
+}
+
+bool edits_element(const std::string& path, const std::vector<std::string>& elements) {
+  return std::any_of(elements.begin(), elements.end(),
+                     [&](const std::string& e) { return path.rfind(e + ".", 0) == 0; });
+}
+
 }  // namespace unfurl::app

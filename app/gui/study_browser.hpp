@@ -36,6 +36,16 @@ struct StudyBrowser {
   std::string column_name(int column) const;
 };
 
+// The elements a case's failure put into its scene (a broken or weakened
+// spring, a stuck hinge's stop, an added friction), as the parameter paths
+// that name them ("springs.j1", "latches.8", "friction.j4"): they are the
+// study file's, not the scene's, so the workbench shows them read-only and
+// refuses an edit of them. `scene` is the case's scene, failure applied.
+std::vector<std::string> failure_elements(const Scene& scene, const StudyFailure& failure);
+
+// Whether an edit's path reaches into one of `elements`.
+bool edits_element(const std::string& path, const std::vector<std::string>& elements);
+
 // Reads the study file and the case records DIR holds. Throws
 // std::runtime_error when the study does not read or DIR holds no finished
 // case of it.
