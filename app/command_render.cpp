@@ -30,7 +30,7 @@ namespace {
 
 const char* kHelp =
     "usage: unfurl render [SCENE] [--out DIR] [--fps 30] [--size 1280x720] [--from T0] [--to T1]\n"
-    "                     [--video FILE.mp4] [--camera NAME|AZ,EL,DIST] [--plots] [--no-frames]\n"
+    "                     [--video FILE.mp4] [--camera NAME|AZ,EL,DIST] [--orthographic] [--plots] [--no-frames]\n"
     "                     [--trajectory FILE] [scene options]\n"
     "\n"
     "Simulates the scene (or reads a trajectory.csv written by `unfurl simulate`) and draws it\n"
@@ -44,6 +44,7 @@ const char* kHelp =
     "  --video FILE.mp4      also encode the frames as an H.264 video (needs ffmpeg)\n"
     "  --camera VIEW         a preset (iso, side, top, end, bottom; default iso) or AZ,EL,DIST in\n"
     "                        degrees and metres around the centre of the array\n"
+    "  --orthographic        parallel projection (with --camera side: a true view along the hinges)\n"
     "  --gl egl|osmesa|auto  the offscreen OpenGL context (default auto: EGL when it works, else\n"
     "                        OSMesa)\n"
     "  --plots               also write angles.png, rates.png, residuals.png (the loops' gaps;\n"
@@ -72,7 +73,7 @@ void remove_stale_frames(const std::string& dir, std::size_t written) {
 int command_render(const std::vector<std::string>& argv) {
   std::set<std::string> valued = scene_flags();
   valued.insert({"--out", "--fps", "--size", "--from", "--to", "--video", "--camera", "--trajectory", "--gl"});
-  const Args args(argv, valued, {"--help", "-h", "--plots", "--no-frames", "--quiet"});
+  const Args args(argv, valued, {"--help", "-h", "--plots", "--no-frames", "--quiet", "--orthographic"});
   if (args.has("--help") || args.has("-h")) {
     std::printf(kHelp, scene_flags_help());
     return 0;

@@ -29,6 +29,7 @@ RenderOptions parse_render_options(const Args& args) {
   if (o.from && o.to && *o.to < *o.from) throw UsageError("--to must not be before --from");
   o.video = args.get("--video");
   o.camera = args.get("--camera").value_or(o.camera);
+  o.orthographic = args.has("--orthographic");
   if (const auto gl = args.get("--gl")) {
     const auto backend = render::parse_gl_backend(*gl);
     if (!backend) throw UsageError("--gl: expected egl, osmesa or auto, got '" + *gl + "'");
@@ -75,9 +76,13 @@ render::Camera choose_camera(const RenderOptions& options, const Scene& scene, c
   body_poses(scene.model, q.data(), poses);
   bounds.extend(view.bounds(poses));
 
-  if (const auto preset = render::camera_preset(options.camera, bounds, aspect)) return *preset;
+  if (auto preset = render::camera_preset(options.camera, bounds, aspect)) {
+    preset->orthographic = options.orthographic;
+    return *preset;
+  }
   std::istringstream in(options.camera);
   render::Camera c;
+  c.orthographic = options.orthographic;
   char comma1 = 0, comma2 = 0;
   if (!(in >> c.azimuth_deg >> comma1 >> c.elevation_deg >> comma2 >> c.distance) || comma1 != ',' || comma2 != ',' ||
       !(c.distance > 0)) {

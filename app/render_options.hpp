@@ -22,6 +22,7 @@ struct RenderOptions {
   std::optional<double> from, to;
   std::optional<std::string> video;
   std::string camera = "iso";  // a preset or "AZ,EL,DIST"
+  bool orthographic = false;   // parallel projection
   render::GlBackend gl = render::GlBackend::automatic;
 };
 

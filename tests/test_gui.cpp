@@ -384,5 +384,43 @@ TEST(Gui, AFailureCasesInjectedElementsAreReadOnly) {
   EXPECT_NE(other.find("\"study_case\": \"fail-spring-j1-breaks\""), std::string::npos) << other;
 }
 
+// A long export can be cancelled: the frames written so far stay, each
+// complete, and no video (finished or partial) is left behind.
+TEST(Gui, ALongExportCancelsAndLeavesNoPartialVideo) {
+  if (!app::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
+  if (!app::on_path("ffmpeg")) GTEST_SKIP() << "ffmpeg is not installed";
+  const fs::path dir = fs::temp_directory_path() / ("unfurl_gui_cancel_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "session.txt") << "wait_run\n"
+                                        "export " << (dir / "frames").string() << " 0 9 60 "
+                                     << (dir / "frames" / "deployment.mp4").string() << "\n"
+                                        "wait 1\n"
+                                        "cancel_export\n"
+                                        "wait_export\n"
+                                        "report " << (dir / "report.json").string() << "\n"
+                                        "quit\n";
+  const std::string command = "timeout 300 xvfb-run -a -s '-screen 0 1280x800x24' " + std::string(UNFURL_BINARY) +
+                              " gui pantograph --t-end 9 --script " + (dir / "session.txt").string() + " > " +
+                              (dir / "log.txt").string() + " 2>&1";
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << slurp(dir / "log.txt");
+  const std::string report = slurp(dir / "report.json");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(report, m, std::regex("export cancelled after ([0-9]+) of 541 frames"))) << report;
+  const long written = std::stol(m[1]);
+  EXPECT_LT(written, 541);
+  long frames = 0;
+  for (const auto& entry : fs::directory_iterator(dir / "frames")) {
+    const std::string name = entry.path().filename().string();
+    EXPECT_EQ(name.rfind("deployment", 0), std::string::npos) << "a video was left: " << name;
+    if (name.rfind("frame_", 0) == 0) {
+      ++frames;
+      EXPECT_EQ(test::read_png(entry.path().string()).width, 1280) << name;  // complete, readable
+    }
+  }
+  EXPECT_EQ(frames, written);
+}
+
 }  // namespace
 }  // namespace unfurl

@@ -34,6 +34,16 @@ ExportJob::~ExportJob() {
   encoder_.join();
 }
 
+void ExportJob::cancel() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    cancelled_ = true;
+    finished_drawing_ = true;
+    queue_.clear();
+  }
+  ready_.notify_all();
+}
+
 bool ExportJob::step(double budget_ms) {
   const auto start = std::chrono::steady_clock::now();
   std::vector<double> q;
@@ -42,7 +52,7 @@ bool ExportJob::step(double budget_ms) {
     {
       // Do not run ahead of the encoder by more than a few frames.
       std::lock_guard<std::mutex> lock(mutex_);
-      if (!error_.empty()) break;
+      if (!error_.empty() || cancelled_) break;
       if (queue_.size() >= 4) return true;
     }
     trajectory_.coordinates_at(times_[drawn_], q);
@@ -81,6 +91,8 @@ void ExportJob::encode() {
         write_png(item.second, request_.dir + name);
       }
       if (video_) video_->add(item.second);
+      std::lock_guard<std::mutex> lock(mutex_);
+      ++encoded_;
     } catch (const std::exception& e) {
       std::lock_guard<std::mutex> lock(mutex_);
       error_ = e.what();
@@ -90,6 +102,12 @@ void ExportJob::encode() {
     ready_.notify_all();
   }
   std::string error;
+  bool cancelled = false;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    cancelled = cancelled_;
+  }
+  if (cancelled) video_.reset();  // abandons the unfinished video
   if (video_) {
     try {
       if (error_.empty()) video_->finish();
@@ -105,6 +123,10 @@ void ExportJob::encode() {
 std::string ExportJob::result() {
   std::lock_guard<std::mutex> lock(mutex_);
   if (!error_.empty()) return "export failed: " + error_;
+  if (cancelled_)
+    return "export cancelled after " + std::to_string(encoded_) + " of " + std::to_string(times_.size()) + " frames" +
+           (request_.frames && encoded_ > 0 ? " (those frames are in " + request_.dir + ")" : "") +
+           (request_.options.video ? "; no video written" : "");
   std::string what = std::to_string(times_.size()) + " frames";
   if (request_.frames) what += " in " + request_.dir;
   if (request_.options.video) what += ", video " + *request_.options.video;

@@ -31,6 +31,9 @@ class ExportJob {
   bool step(double budget_ms);
   std::size_t done() const { return drawn_; }
   std::size_t total() const { return times_.size(); }
+  // Stops at the frame being encoded: the frames written stay (each one
+  // complete), an unfinished video is removed.
+  void cancel();
   // What happened: the files written, or the error.
   std::string result();
 
@@ -49,7 +52,8 @@ class ExportJob {
   std::mutex mutex_;
   std::condition_variable ready_;
   std::deque<std::pair<std::size_t, render::Image>> queue_;
-  bool finished_drawing_ = false, encoder_done_ = false;
+  bool finished_drawing_ = false, encoder_done_ = false, cancelled_ = false;
+  std::size_t encoded_ = 0;
   std::string error_;
   std::unique_ptr<VideoPipe> video_;
   std::thread encoder_;

@@ -264,8 +264,10 @@ void GuiApp::draw_viewport_texture() {
     viewport_ = std::make_unique<render::Framebuffer>(w, h);
   // Frame the whole motion until the first run is done (or after "reset").
   if (!state_.camera_fitted) {
-    const render::Camera fitted = *render::camera_preset("iso", swept_bounds(), float(w) / h);
-    state_.camera = fitted;
+    const bool orthographic = state_.camera.orthographic;
+    state_.camera = *render::camera_preset("iso", swept_bounds(), float(w) / h);
+    state_.camera.orthographic = orthographic;
+    state_.camera_name = "iso";
     state_.camera_fitted = !state_.progress.running && state_.generation >= state_.requested_generation;
   }
   std::vector<Pose> poses;
@@ -334,7 +336,11 @@ void GuiApp::layout_and_panels(Requests& requests) {
   int W = 0, H = 0;
   window_.framebuffer_size(W, H);
   const float w = static_cast<float>(W), h = static_cast<float>(H);
-  const float toolbar = state_.scene_error.empty() && state_.progress.failure.empty() ? 40.0f : 84.0f;
+  // The toolbar grows with the lines an error wraps to.
+  const std::string error = toolbar_error(state_);
+  const float toolbar =
+      std::round(ImGui::GetFrameHeightWithSpacing() + 2 * ImGui::GetStyle().WindowPadding.y + 4 +
+                 (error.empty() ? 0.0f : ImGui::CalcTextSize(error.c_str(), nullptr, false, w - 24).y + 4));
   // "all" plots take more of the left column than one plot does.
   const bool all_plots = state_.plot_tab >= static_cast<int>(render::plot_kinds(state_.scene).size());
   const float status = 30, left = std::round(0.62f * w);
@@ -478,6 +484,7 @@ void GuiApp::apply(const Requests& r) {
       state_.notice = e.what();
     }
   }
+  if (r.cancel_export && export_job_) export_job_->cancel();
   if (r.export_range && !export_job_) {
     try {
       if (state_.trajectory.empty()) throw std::runtime_error("nothing computed yet");
@@ -547,8 +554,13 @@ void GuiApp::screenshot(const std::string& path) {
 
 void GuiApp::camera_preset(const std::string& name) {
   if (const auto cam = render::camera_preset(name, swept_bounds(),
-                                             float(state_.viewport_width) / std::max(1, state_.viewport_height)))
-    state_.camera = *cam, state_.camera_fitted = true;
+                                             float(state_.viewport_width) / std::max(1, state_.viewport_height))) {
+    const bool orthographic = state_.camera.orthographic;
+    state_.camera = *cam;
+    state_.camera.orthographic = orthographic;
+    state_.camera_name = name;
+    state_.camera_fitted = true;
+  }
 }
 
 void GuiApp::record_frame_time(double seconds) {

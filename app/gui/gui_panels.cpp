@@ -73,6 +73,13 @@ class FailureLock {
 
 }  // namespace
 
+std::string toolbar_error(const GuiState& state) {
+  std::string error = state.scene_error;
+  if (state.progress.status == RunStatus::failed && !state.progress.failure.empty())
+    error += (error.empty() ? "" : "\n") + std::string("run failed: ") + state.progress.failure;
+  return error;
+}
+
 void toolbar_panel(GuiState& state, Requests& requests) {
   char* path = state.scene_path;
   if (path[0] == 0) std::snprintf(path, sizeof state.scene_path, "%s", state.scene_name.c_str());
@@ -98,18 +105,31 @@ void toolbar_panel(GuiState& state, Requests& requests) {
     const float pulse = 0.6f + 0.4f * std::sin(static_cast<float>(ImGui::GetTime()) * 6);
     ImGui::TextColored(ImVec4(1.0f, 0.75f * pulse, 0.2f, 1), "re-simulating...");
   }
-  if (!state.scene_error.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", state.scene_error.c_str());
-  if (state.progress.status == RunStatus::failed && !state.progress.failure.empty())
-    ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "run failed: %s", state.progress.failure.c_str());
+  const std::string error = toolbar_error(state);
+  if (error.empty()) return;
+  ImGui::PushTextWrapPos(0.0f);
+  ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", error.c_str());
+  ImGui::PopTextWrapPos();
 }
 
 void viewport_panel(GuiState& state, unsigned texture, const Eigen::AlignedBox3f& bounds) {
+  // The presets, the active one highlighted (until the view is orbited).
   for (const std::string& name : render::camera_preset_names()) {
-    if (ImGui::SmallButton(name.c_str()))
+    const bool active = name == state.camera_name;
+    if (active) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyle().Colors[ImGuiCol_ButtonActive]);
+    if (ImGui::SmallButton(name.c_str())) {
+      const bool orthographic = state.camera.orthographic;
       state.camera = *render::camera_preset(name, bounds, float(state.viewport_width) / std::max(1, state.viewport_height));
+      state.camera.orthographic = orthographic;
+      state.camera_name = name;
+    }
+    if (active) ImGui::PopStyleColor();
     ImGui::SameLine();
   }
   if (ImGui::SmallButton("reset view")) state.camera_fitted = false;
+  ImGui::SameLine();
+  ImGui::Checkbox("orthographic", &state.camera.orthographic);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("parallel projection: with side, a true view along the hinge axes");
   const ImVec2 size = ImGui::GetContentRegionAvail();
   state.viewport_width = std::max(16, static_cast<int>(size.x));
   state.viewport_height = std::max(16, static_cast<int>(size.y));
@@ -118,6 +138,7 @@ void viewport_panel(GuiState& state, unsigned texture, const Eigen::AlignedBox3f
   const ImGuiIO& io = ImGui::GetIO();
   render::Camera& c = state.camera;
   if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
+    state.camera_name.clear();
     c.azimuth_deg -= 0.3f * io.MouseDelta.x;
     c.elevation_deg = std::clamp(c.elevation_deg + 0.3f * io.MouseDelta.y, -89.9f, 89.9f);
   }
@@ -559,7 +580,9 @@ void export_panel(GuiState& state, Requests& requests) {
   }
   const ExportProgress& ex = state.export_progress;
   if (ex.active) {
-    ImGui::ProgressBar(ex.total ? float(ex.done) / ex.total : 0.0f, ImVec2(-1, 0));
+    ImGui::ProgressBar(ex.total ? float(ex.done) / ex.total : 0.0f, ImVec2(-90, 0));
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel##export")) requests.cancel_export = true;
   } else if (ImGui::Button("Export")) {
     ExportRequest r;
     r.dir = dir;

@@ -10,7 +10,11 @@
 
 namespace unfurl::app {
 
-// Scene path, open, reload, and the re-simulating indicator.
+// What the toolbar reports as wrong: the scene's error, a failed run.
+std::string toolbar_error(const GuiState& state);
+
+// Scene path, open, reload, the re-simulating indicator, and errors
+// (wrapped to the window's width).
 void toolbar_panel(GuiState& state, Requests& requests);
 
 // The 3D view (a texture rendered beforehand at the size this panel asks

@@ -8,12 +8,14 @@
 //   speed X | loop on|off
 //   scrub T               move the play-head to T seconds
 //   camera NAME           a camera preset
+//   orthographic on|off   parallel projection
 //   set PATH VALUE        change a scene value as the parameters panel does
 //                         (for example set springs.0.free_position 1.2)
 //   screenshot FILE.png   the whole window, read back from its framebuffer
 //   save_frame FILE.png   the 3D view, as the export panel saves it
 //   export DIR FROM TO FPS [VIDEO.mp4]   frames (and video) of a range
 //   wait_export           until the export has finished
+//   cancel_export         stop the export (as its Cancel button does)
 //   report FILE.json      the state: runs and their latch times, frame rate
 //   open SCENE            another scene (a path or a built-in name)
 //   case ID               a case of the study opened with --study

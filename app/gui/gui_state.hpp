@@ -43,6 +43,7 @@ struct Requests {
   std::optional<std::string> save_frame;       // PNG of the current view
   std::optional<std::string> save_trajectory;  // CSV of the current run
   std::optional<ExportRequest> export_range;   // frames / video of a time range
+  bool cancel_export = false;
 };
 
 struct ExportProgress {
@@ -111,6 +112,7 @@ struct GuiState {
 
   // View.
   render::Camera camera;
+  std::string camera_name = "iso";  // the preset the view shows; "" once orbited
   bool camera_fitted = false;
   int viewport_width = 0, viewport_height = 0;
   int plots_width = 0, plots_height = 0;

@@ -33,6 +33,10 @@ void ScriptRunner::step(ScriptTarget& target, double now) {
       if (state.progress.running || state.generation < state.requested_generation) return;
     } else if (c.name == "wait_export") {
       if (target.exporting()) return;
+    } else if (c.name == "cancel_export") {
+      Requests r;
+      r.cancel_export = true;
+      target.request(r);
     } else if (c.name == "play") {
       state.playing = true;
     } else if (c.name == "pause") {
@@ -43,6 +47,8 @@ void ScriptRunner::step(ScriptTarget& target, double now) {
       state.loop = arg(0) == "on";
     } else if (c.name == "scrub") {
       state.play_time = std::stod(arg(0));
+    } else if (c.name == "orthographic") {
+      state.camera.orthographic = arg(0) == "on";
     } else if (c.name == "camera") {
       target.camera_preset(arg(0));
     } else if (c.name == "set") {

@@ -61,7 +61,7 @@ void write_session_report(const GuiState& state, const std::string& path) {
              state.seconds_while_running > 0 ? state.frames_while_running / state.seconds_while_running : 0.0);
   json.value("worst_frame_ms_while_running", 1000 * state.worst_frame_while_running);
   json.value("idle_cpu_fraction", state.idle_cpu_fraction).value("idle_frames", state.idle_frames);
-  json.value("notice", state.notice);
+  json.value("notice", state.notice).value("export", state.export_progress.message);
   json.begin_array("failure_elements");
   for (const std::string& e : state.failure_elements) json.value("", e);
   json.end_array();

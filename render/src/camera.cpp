@@ -34,6 +34,17 @@ Eigen::Matrix4f Camera::projection(float aspect) const {
   const float near = 0.01f * distance, far = 20.0f * distance;
   const float f = 1.0f / std::tan(0.5f * fov_deg * kDegree);
   Eigen::Matrix4f P = Eigen::Matrix4f::Zero();
+  if (orthographic) {
+    // The frustum's cross-section at the target: zooming (distance) still
+    // scales the picture.
+    const float half_h = distance / f;
+    P(0, 0) = 1 / (half_h * aspect);
+    P(1, 1) = 1 / half_h;
+    P(2, 2) = -2 / (far - near);
+    P(2, 3) = -(far + near) / (far - near);
+    P(3, 3) = 1;
+    return P;
+  }
   P(0, 0) = f / aspect;
   P(1, 1) = f;
   P(2, 2) = (far + near) / (near - far);
@@ -85,7 +96,7 @@ std::optional<Camera> camera_preset(const std::string& name, const Eigen::Aligne
   if (name == "iso") {
     c.azimuth_deg = -40, c.elevation_deg = 30;
   } else if (name == "side") {
-    c.azimuth_deg = 0, c.elevation_deg = 5;
+    c.azimuth_deg = 0, c.elevation_deg = 0;
   } else if (name == "top") {
     c.azimuth_deg = -90, c.elevation_deg = 89.9f;
   } else if (name == "end") {

@@ -27,8 +27,9 @@ void main() {
 }
 )";
 
-// A sun (directional, warm white) with a sky/ground ambient and a soft
-// specular highlight.
+// A sun (directional, warm white) with a sky/ground ambient, a soft
+// specular highlight, and a dim light from the eye on what the sun leaves
+// dark (a view from below would otherwise show ambient only).
 const char* kFragment = R"(#version 330 core
 in vec3 world_normal;
 in vec3 world_position;
@@ -44,7 +45,8 @@ void main() {
   vec3 h = normalize(sun_direction + v);
   float specular = pow(max(dot(n, h), 0.0), 48.0) * step(0.0, dot(n, sun_direction));
   vec3 ambient = mix(vec3(0.16, 0.15, 0.14), vec3(0.30, 0.33, 0.40), 0.5 + 0.5 * n.z);
-  vec3 lit = color * (ambient + 0.85 * sun * vec3(1.0, 0.97, 0.92)) + 0.35 * specular * vec3(1.0);
+  float fill = 0.35 * max(dot(n, v), 0.0) * (1.0 - sun);
+  vec3 lit = color * (ambient + 0.85 * sun * vec3(1.0, 0.97, 0.92) + fill) + 0.35 * specular * vec3(1.0);
   fragment = vec4(pow(lit, vec3(1.0 / 1.1)), 1.0);
 }
 )";

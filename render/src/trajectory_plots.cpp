@@ -93,9 +93,20 @@ void add_curves(PlotSpec& spec, PlotKind kind, const Scene& scene, const Traject
     case PlotKind::energy:
       added.push_back(series(tr, "total", palette(0), [](const Sample& s) { return s.energy.total(); }));
       if (!tr.empty() && tr.samples.front().energy.unattributed != 0) break;  // only the total is known
+      // Every store, and the work taken out: total + dissipated is the
+      // balance, flat when the energy is accounted for (the drop at
+      // latch-up is the latches' damping, in "dissipated").
       added.push_back(series(tr, "kinetic", palette(1), [](const Sample& s) { return s.energy.kinetic; }));
-      added.push_back(series(tr, "springs + latches", palette(2),
-                             [](const Sample& s) { return s.energy.springs + s.energy.latches; }));
+      added.push_back(series(tr, "springs", palette(2), [](const Sample& s) { return s.energy.springs; }));
+      added.push_back(series(tr, "latches", palette(3), [](const Sample& s) { return s.energy.latches; }));
+      if (scene.model.gravity.norm() > 0)
+        added.push_back(series(tr, "gravity", palette(4), [](const Sample& s) { return s.energy.gravity; }));
+      if (!scene.loops.empty())
+        added.push_back(series(tr, "regulator", palette(5), [](const Sample& s) { return s.energy.regulator; }));
+      added.push_back(series(tr, "dissipated", palette(6), [](const Sample& s) { return s.energy.dissipated; }));
+      added.back().dashed = true;
+      added.push_back(series(tr, "total + dissipated", palette(7), [](const Sample& s) { return s.energy.balance(); }));
+      added.back().dashed = true;
       break;
   }
   for (Series& s : added) {
