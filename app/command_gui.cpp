@@ -29,6 +29,7 @@ const char* kHelp =
     "options:\n"
     "  --script FILE         run a scripted session (see app/gui/gui_script.hpp for the commands)\n"
     "  --window WxH          the window's size in pixels (default 1280x800)\n"
+    "  --ui-scale X          text and widget size (default 1; times the monitor's content scale)\n"
     "  --study STUDY.yaml    a study file, with --out DIR: the directory its sweep wrote\n"
     "  --case ID             the case to show first (default: the first finished one)\n"
     "%s";
@@ -41,6 +42,7 @@ int command_gui(const std::vector<std::string>& argv) {
   valued.insert("--out");
   valued.insert("--case");
   valued.insert("--window");
+  valued.insert("--ui-scale");
   const Args args(argv, valued, {"--help", "-h"});
   if (args.has("--help") || args.has("-h")) {
     std::printf(kHelp, scene_flags_help());
@@ -58,8 +60,10 @@ int command_gui(const std::vector<std::string>& argv) {
     throw UsageError("--out and --case go with --study");
   }
   const auto [width, height] = parse_pixel_size("--window", args.get("--window").value_or("1280x800"));
+  const double ui_scale = args.number("--ui-scale").value_or(1.0);
+  if (!(ui_scale >= 0.5 && ui_scale <= 4)) throw UsageError("--ui-scale: expected a number from 0.5 to 4");
   GuiApp app(args.positionals().empty() ? "pantograph" : args.positionals()[0], overrides_from(args), script, study,
-             width, height);
+             width, height, static_cast<float>(ui_scale));
   return app.run();
 }
 

@@ -47,4 +47,10 @@ void GlfwWindow::request_close() { glfwSetWindowShouldClose(window_, GLFW_TRUE);
 void GlfwWindow::swap() { glfwSwapBuffers(window_); }
 void GlfwWindow::framebuffer_size(int& width, int& height) const { glfwGetFramebufferSize(window_, &width, &height); }
 
+float GlfwWindow::content_scale() const {
+  float x = 1, y = 1;
+  glfwGetWindowContentScale(window_, &x, &y);
+  return y > 0 ? y : 1;
+}
+
 }  // namespace unfurl::app

@@ -25,6 +25,9 @@ class GlfwWindow : public render::GlContext {
   void request_close();
   void swap();
   void framebuffer_size(int& width, int& height) const;
+  // The monitor's content scale (1 on a standard display, 2 on a HiDPI
+  // one), as GLFW reports it for the window.
+  float content_scale() const;
 
  private:
   GLFWwindow* window_ = nullptr;

@@ -39,16 +39,16 @@ std::optional<std::filesystem::file_time_type> modification_time(const std::stri
 }  // namespace
 
 GuiApp::GuiApp(const std::string& scene_name, std::vector<Override> command_line_set, std::vector<ScriptCommand> script,
-               std::optional<StudyToOpen> study, int width, int height)
+               std::optional<StudyToOpen> study, int width, int height, float ui_scale)
     : window_(width, height, "unfurl"), script_(std::move(script)) {
   state_.command_line_set = std::move(command_line_set);
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;
-  ImGui::StyleColorsDark();
-  render::load_font(17);
   ImGui_ImplGlfw_InitForOpenGL(window_.handle(), true);
   ImGui_ImplOpenGL3_Init("#version 330");
+  state_.ui_scale = state_.ui_scale_field = ui_scale;
+  apply_ui_scale();
   meshes_ = std::make_unique<render::MeshLibrary>(std::vector<std::string>{});
   if (study) {
     state_.study = open_study(study->study_path, study->dir);
@@ -76,6 +76,24 @@ GuiApp::~GuiApp() {
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
+}
+
+void GuiApp::apply_ui_scale() {
+  // The font is rasterized at its size (a scaled bitmap would blur): the
+  // atlas is rebuilt when the scale changes, between frames.
+  const float scale = std::clamp(state_.ui_scale * window_.content_scale(), 0.5f, 4.0f);
+  if (scale == state_.applied_scale) return;
+  ImGuiIO& io = ImGui::GetIO();
+  io.Fonts->Clear();
+  render::load_font(std::round(17 * scale));
+  ImGui_ImplOpenGL3_DestroyFontsTexture();
+  ImGui_ImplOpenGL3_CreateFontsTexture();
+  ImGui::GetStyle() = ImGuiStyle();
+  ImGui::StyleColorsDark();
+  ImGui::GetStyle().ScaleAllSizes(scale);
+  state_.applied_scale = scale;
+  plots_layer_.reset();  // its own font, made again at the new size
+  plots_.reset();
 }
 
 bool GuiApp::show_case(const std::string& id) {
@@ -288,7 +306,7 @@ void GuiApp::draw_plots_texture() {
   if (plots_ && key == plots_key_) return;
   if (plots_ && state_.progress.running && now - plots_drawn_at_ < 0.5) return;
   if (!plots_ || plots_->width() != w || plots_->height() != h) plots_ = std::make_unique<render::Framebuffer>(w, h, 1);
-  if (!plots_layer_) plots_layer_ = std::make_unique<render::ImGuiLayer>(15);
+  if (!plots_layer_) plots_layer_ = std::make_unique<render::ImGuiLayer>(std::round(15 * state_.applied_scale));
   plots_key_ = key;
   plots_drawn_at_ = now;
   plot_frames_.clear();
@@ -336,17 +354,17 @@ void GuiApp::layout_and_panels(Requests& requests) {
   int W = 0, H = 0;
   window_.framebuffer_size(W, H);
   const float w = static_cast<float>(W), h = static_cast<float>(H);
+  const ImGuiStyle& style = ImGui::GetStyle();
   // The toolbar grows with the lines an error wraps to.
   const std::string error = toolbar_error(state_);
   const float toolbar =
-      std::round(ImGui::GetFrameHeightWithSpacing() + 2 * ImGui::GetStyle().WindowPadding.y + 4 +
+      std::round(ImGui::GetFrameHeightWithSpacing() + 2 * style.WindowPadding.y + 4 +
                  (error.empty() ? 0.0f : ImGui::CalcTextSize(error.c_str(), nullptr, false, w - 24).y + 4));
   // "all" plots take more of the left column than one plot does.
   const bool all_plots = state_.plot_tab >= static_cast<int>(render::plot_kinds(state_.scene).size());
-  const float status = 30, left = std::round(0.62f * w);
+  const float status = std::round(ImGui::GetFrameHeight() + 2 * style.WindowPadding.y), left = std::round(0.62f * w);
   const float view_h = std::round((all_plots ? 0.36f : 0.5f) * (h - toolbar - status));
   // Buttons, scrubber and its tick labels, without a scroll bar.
-  const ImGuiStyle& style = ImGui::GetStyle();
   const float timeline = std::round(2 * ImGui::GetFrameHeightWithSpacing() + ImGui::GetTextLineHeight() + 4 +
                                     2 * style.WindowPadding.y + ImGui::GetFontSize() + 2 * style.FramePadding.y + 8);
   // No window backgrounds: the clear colour is the background, so a
@@ -609,6 +627,7 @@ void GuiApp::frame() {
       export_job_.reset();
     }
   }
+  apply_ui_scale();
   draw_viewport_texture();
   draw_plots_texture();
   ImGui_ImplOpenGL3_NewFrame();

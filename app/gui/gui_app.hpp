@@ -32,7 +32,7 @@ class GuiApp : private ScriptTarget {
  public:
   GuiApp(const std::string& scene_name, std::vector<Override> command_line_set,
          std::vector<ScriptCommand> script, std::optional<StudyToOpen> study = std::nullopt, int width = 1280,
-         int height = 800);
+         int height = 800, float ui_scale = 1);
   ~GuiApp();
   GuiApp(const GuiApp&) = delete;
   GuiApp& operator=(const GuiApp&) = delete;
@@ -47,6 +47,8 @@ class GuiApp : private ScriptTarget {
   bool busy() const;
   void wait_for_events();
   void sync_run();
+  // Fonts and sizes for the UI scale times the monitor's content scale.
+  void apply_ui_scale();
   void advance_playback(double dt);
   void watch_scene_file();
   void draw_viewport_texture();

@@ -21,7 +21,7 @@ constexpr double kFrame = 1.0 / 30;  // one frame of playback
 void value_field(const char* label, const std::string& path, double value, double step, Requests& requests,
                  double lo = 0, double hi = 0, const char* format = "%.6g", const char* help = nullptr) {
   double v = value;
-  ImGui::SetNextItemWidth(190);
+  ImGui::SetNextItemWidth(em(190));
   const bool stepped = ImGui::InputScalar(label, ImGuiDataType_Double, &v, &step, nullptr, format);
   if (help && ImGui::IsItemHovered()) ImGui::SetTooltip("%s\n%s", help, path.c_str());
   const bool commit = ImGui::IsItemDeactivatedAfterEdit() || (stepped && !ImGui::IsItemActive());
@@ -85,7 +85,7 @@ void toolbar_panel(GuiState& state, Requests& requests) {
   if (path[0] == 0) std::snprintf(path, sizeof state.scene_path, "%s", state.scene_name.c_str());
   ImGui::TextUnformatted("Scene");
   ImGui::SameLine();
-  ImGui::SetNextItemWidth(360);
+  ImGui::SetNextItemWidth(em(360));
   if (state.focus_scene_field) {
     ImGui::SetKeyboardFocusHere();
     state.focus_scene_field = false;
@@ -95,6 +95,12 @@ void toolbar_panel(GuiState& state, Requests& requests) {
   if (ImGui::Button("Open") || entered) requests.open = std::string(path);
   ImGui::SameLine();
   if (ImGui::Button("Reload")) requests.reload = true;
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(em(110));
+  ImGui::SliderFloat("UI scale", &state.ui_scale_field, 0.75f, 2.5f, "%.2fx");
+  // Applied on release: the fonts are made again at the new size.
+  if (ImGui::IsItemDeactivatedAfterEdit()) state.ui_scale = state.ui_scale_field;
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("text and widget size, on top of the monitor's content scale");
   ImGui::SameLine();
   if (state.study && !state.study->shown.empty())
     ImGui::TextDisabled("%s of study %s", state.study->shown.c_str(), state.study->study_path.c_str());
@@ -153,13 +159,13 @@ void viewport_panel(GuiState& state, unsigned texture, const Eigen::AlignedBox3f
 
 void timeline_panel(GuiState& state) {
   const double t_end = run_end(state);
-  if (ImGui::Button(state.playing ? "Pause" : "Play", ImVec2(70, 0))) state.playing = !state.playing;
+  if (ImGui::Button(state.playing ? "Pause" : "Play", ImVec2(em(70), 0))) state.playing = !state.playing;
   ImGui::SameLine();
   if (ImGui::ArrowButton("back", ImGuiDir_Left)) state.playing = false, state.play_time -= kFrame;
   ImGui::SameLine();
   if (ImGui::ArrowButton("forward", ImGuiDir_Right)) state.playing = false, state.play_time += kFrame;
   ImGui::SameLine();
-  ImGui::SetNextItemWidth(140);
+  ImGui::SetNextItemWidth(em(140));
   ImGui::SliderFloat("speed", &state.speed, 0.1f, 10.0f, "%.2fx", ImGuiSliderFlags_Logarithmic);
   ImGui::SameLine();
   ImGui::Checkbox("loop", &state.loop);
@@ -237,7 +243,7 @@ void parameters_panel(GuiState& state, Requests& requests) {
   ImGui::BeginDisabled(state.redo.empty());
   if (ImGui::Button("Redo")) requests.redo = true;
   ImGui::EndDisabled();
-  ImGui::SetNextItemWidth(220);
+  ImGui::SetNextItemWidth(em(220));
   ImGui::InputText("##save", state.save_path, sizeof state.save_path);
   ImGui::SameLine();
   if (ImGui::Button("Save scene (YAML)")) requests.save_scene = std::string(state.save_path);
@@ -341,7 +347,7 @@ void parameters_panel(GuiState& state, Requests& requests) {
   if (!scene.loops.empty() && ImGui::CollapsingHeader("Loop regulator", ImGuiTreeNodeFlags_DefaultOpen)) {
     const RegulatorSettings& r = scene.regulator;
     int gains = r.gains == GainTuning::full ? 0 : 1;
-    ImGui::SetNextItemWidth(160);
+    ImGui::SetNextItemWidth(em(160));
     if (ImGui::Combo("gains", &gains, "full (current W)\0paper (16), diagonal\0"))
       requests.edit = Override{"regulator.gains", gains == 0 ? "full" : "paper"};
     value_field("v_max [rad/s]", "regulator.v_max", r.v_max, 10, requests, 1e-3, 1e9, "%.6g",
@@ -355,7 +361,7 @@ void parameters_panel(GuiState& state, Requests& requests) {
     const auto& kinds = all_integrators();
     for (std::size_t k = 0; k < kinds.size(); ++k)
       if (kinds[k] == run.integrator) current = static_cast<int>(k);
-    ImGui::SetNextItemWidth(160);
+    ImGui::SetNextItemWidth(em(160));
     if (ImGui::Combo("integrator", &current, "cvode-bdf\0cvode-adams\0arkode-erk\0arkode-dirk\0rk4\0"))
       requests.edit = Override{"run.integrator", integrator_name(kinds[current])};
     if (run.integrator == IntegratorKind::rk4) {
@@ -421,7 +427,7 @@ void curves_checklist(GuiState& state) {
   // Empty means the first 12: show them as ticked.
   std::vector<int> shown = render::chosen_coordinates(model, plot_choice(state));
   const float rows = std::min(20.0f, static_cast<float>(model.nq));
-  ImGui::BeginChild("joints", ImVec2(220, rows * ImGui::GetFrameHeightWithSpacing()));
+  ImGui::BeginChild("joints", ImVec2(em(220), rows * ImGui::GetFrameHeightWithSpacing()));
   for (int c = 0; c < model.nq; ++c) {
     bool on = std::find(shown.begin(), shown.end(), c) != shown.end();
     ImGui::PushStyleColor(ImGuiCol_Text, render::palette(c));
@@ -548,39 +554,39 @@ void export_panel(GuiState& state, Requests& requests) {
   bool& frames = f.frames;
   if (to <= 0) to = static_cast<float>(state.scene.run.t_end);
 
-  ImGui::SetNextItemWidth(200);
+  ImGui::SetNextItemWidth(em(200));
   ImGui::InputInt2("size [px]", size);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("of a saved frame and of exported frames and video");
-  ImGui::SetNextItemWidth(260);
+  ImGui::SetNextItemWidth(em(260));
   ImGui::InputText("##frame", frame_path, sizeof f.frame_path);
   ImGui::SameLine();
   if (ImGui::Button("Save frame (PNG)")) requests.save_frame = std::string(frame_path);
 
-  ImGui::SetNextItemWidth(260);
+  ImGui::SetNextItemWidth(em(260));
   ImGui::InputText("##csv", csv_path, sizeof f.csv_path);
   ImGui::SameLine();
   if (ImGui::Button("Save trajectory (CSV)")) requests.save_trajectory = std::string(csv_path);
 
   ImGui::Separator();
   ImGui::TextUnformatted("Frames or video of a time range");
-  ImGui::SetNextItemWidth(200);
+  ImGui::SetNextItemWidth(em(200));
   ImGui::InputFloat("from [s]", &from, 0.1f, 1.0f, "%.3f");
-  ImGui::SetNextItemWidth(200);
+  ImGui::SetNextItemWidth(em(200));
   ImGui::InputFloat("to [s]", &to, 0.1f, 1.0f, "%.3f");
-  ImGui::SetNextItemWidth(200);
+  ImGui::SetNextItemWidth(em(200));
   ImGui::InputFloat("fps", &fps, 1, 10, "%.1f");
-  ImGui::SetNextItemWidth(260);
+  ImGui::SetNextItemWidth(em(260));
   ImGui::InputText("directory", dir, sizeof f.dir);
   ImGui::Checkbox("PNG frames", &frames);
   ImGui::SameLine();
   ImGui::Checkbox("video", &with_video);
   if (with_video) {
-    ImGui::SetNextItemWidth(260);
+    ImGui::SetNextItemWidth(em(260));
     ImGui::InputText("video file", video, sizeof f.video);
   }
   const ExportProgress& ex = state.export_progress;
   if (ex.active) {
-    ImGui::ProgressBar(ex.total ? float(ex.done) / ex.total : 0.0f, ImVec2(-90, 0));
+    ImGui::ProgressBar(ex.total ? float(ex.done) / ex.total : 0.0f, ImVec2(-em(90), 0));
     ImGui::SameLine();
     if (ImGui::Button("Cancel##export")) requests.cancel_export = true;
   } else if (ImGui::Button("Export")) {

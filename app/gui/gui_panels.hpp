@@ -10,6 +10,10 @@
 
 namespace unfurl::app {
 
+// A width laid out for the 17 px font, at the current font's size: the
+// panels scale with the UI scale.
+inline float em(float pixels_at_17) { return pixels_at_17 * ImGui::GetFontSize() / 17.0f; }
+
 // What the toolbar reports as wrong: the scene's error, a failed run.
 std::string toolbar_error(const GuiState& state);
 

@@ -9,6 +9,7 @@
 //   scrub T               move the play-head to T seconds
 //   camera NAME           a camera preset
 //   orthographic on|off   parallel projection
+//   ui_scale X            the UI scale (as the toolbar's field sets it)
 //   set PATH VALUE        change a scene value as the parameters panel does
 //                         (for example set springs.0.free_position 1.2)
 //   screenshot FILE.png   the whole window, read back from its framebuffer

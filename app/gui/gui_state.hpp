@@ -121,6 +121,11 @@ struct GuiState {
   std::optional<std::pair<double, double>> time_zoom;  // the plots' time span; none: the whole run
   long plots_version = 0;  // changes with what the plots show beyond the runs' data
 
+  // The UI's scale, on top of the monitor's content scale: fonts, widgets
+  // and plots (the toolbar's field edits ui_scale_field, applied on release).
+  float ui_scale = 1, ui_scale_field = 1;
+  float applied_scale = 0;  // font size / 17 of the atlas in use
+
   // Frames drawn; what the last scripted idle cost (CPU seconds per second
   // over all threads, and frames; -1 before one).
   long frames = 0;

@@ -85,7 +85,7 @@ void runs_panel(GuiState& state, Requests& requests) {
     std::snprintf(state.pin_name, sizeof state.pin_name, "%s", offered.c_str());
     state.pin_name_offered = offered;
   }
-  ImGui::SetNextItemWidth(220);
+  ImGui::SetNextItemWidth(em(220));
   ImGui::InputText("##pin_name", state.pin_name, sizeof state.pin_name);
   ImGui::SameLine();
   ImGui::BeginDisabled(!finished);
@@ -102,7 +102,7 @@ void runs_panel(GuiState& state, Requests& requests) {
     if (ImGui::Checkbox("##shown", &p.shown)) ++state.plots_version;
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("draw it in the plots");
     ImGui::SameLine();
-    ImGui::SetNextItemWidth(220);
+    ImGui::SetNextItemWidth(em(220));
     if (ImGui::InputText("##name", p.name_field, sizeof p.name_field, ImGuiInputTextFlags_EnterReturnsTrue) ||
         ImGui::IsItemDeactivatedAfterEdit()) {
       p.name = p.name_field;

@@ -47,6 +47,8 @@ void ScriptRunner::step(ScriptTarget& target, double now) {
       state.loop = arg(0) == "on";
     } else if (c.name == "scrub") {
       state.play_time = std::stod(arg(0));
+    } else if (c.name == "ui_scale") {
+      state.ui_scale = state.ui_scale_field = std::stof(arg(0));
     } else if (c.name == "orthographic") {
       state.camera.orthographic = arg(0) == "on";
     } else if (c.name == "camera") {

@@ -350,15 +350,20 @@ PlotFrame draw_plot(ImDrawList* draw, ImVec2 origin, ImVec2 size, const PlotSpec
   // As many ticks as the axes have room for.
   const int x_room = std::max(2, static_cast<int>((f.plot_max.x - f.plot_min.x) / (6 * font)));
   const int y_room = std::max(3, static_cast<int>((f.plot_max.y - f.plot_min.y) / (2.5f * font)));
-  // A linear axis gets at least three labelled ticks, even when its range
-  // sits just past a round step (-1.6 to 1.6 at a step of 2 has one).
-  const auto linear_ticks = [](double lo, double hi, int target) {
+  // A linear axis gets three labelled ticks where they fit, even when its
+  // range sits just past a round step (-1.6 to 1.6 at a step of 2 has one),
+  // and never more than its length has room for.
+  const int y_fit = std::max(2, static_cast<int>((f.plot_max.y - f.plot_min.y) / (1.3f * font)) + 1);
+  const auto linear_ticks = [](double lo, double hi, int target, int fit) {
     std::vector<double> ticks = nice_ticks(lo, hi, target);
-    while (ticks.size() < 3 && target < 12) ticks = nice_ticks(lo, hi, ++target);
+    while (static_cast<int>(ticks.size()) < std::min(3, fit) && target < 12) ticks = nice_ticks(lo, hi, ++target);
+    while (static_cast<int>(ticks.size()) > fit && target > 1) ticks = nice_ticks(lo, hi, --target);
     return ticks;
   };
-  const std::vector<double> xt = spec.log_x ? decade_ticks(x0, x1, x_room) : linear_ticks(x0, x1, std::min(8, x_room));
-  const std::vector<double> yt = spec.log_y ? decade_ticks(y0, y1, y_room) : linear_ticks(y0, y1, std::min(6, y_room));
+  const std::vector<double> xt =
+      spec.log_x ? decade_ticks(x0, x1, x_room) : linear_ticks(x0, x1, std::min(8, x_room), x_room + 1);
+  const std::vector<double> yt =
+      spec.log_y ? decade_ticks(y0, y1, std::min(y_room, y_fit)) : linear_ticks(y0, y1, std::min(6, y_room), y_fit);
   const ImVec2 xs = ImGui::CalcTextSize(spec.x_label.c_str());
   const float x_label_left = compact ? f.plot_max.x - xs.x : corner.x;
   for (double x : xt) {
