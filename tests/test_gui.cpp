@@ -13,6 +13,7 @@
 
 #include "png_read.hpp"
 #include "support.hpp"
+#include "gui/file_dialog.hpp"
 #include "video_pipe.hpp"
 
 namespace unfurl {
@@ -420,6 +421,59 @@ TEST(Gui, ALongExportCancelsAndLeavesNoPartialVideo) {
     }
   }
   EXPECT_EQ(frames, written);
+}
+
+// The file dialog's listing: folders first, then the wanted files, each
+// sorted; hidden entries and other extensions left out.
+TEST(FileDialog, ListsFoldersThenTheWantedFiles) {
+  const fs::path dir = fs::temp_directory_path() / ("unfurl_dialog_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir / "zeta");
+  fs::create_directories(dir / "alpha");
+  fs::create_directories(dir / ".git");
+  for (const char* name : {"b.yaml", "a.yml", "c.txt", ".hidden.yaml"}) std::ofstream(dir / name) << "x";
+  std::vector<std::string> listed;
+  for (const app::DirectoryEntry& e : app::directory_entries(dir, {".yaml", ".yml"}))
+    listed.push_back(e.name + (e.directory ? "/" : ""));
+  EXPECT_EQ(listed, (std::vector<std::string>{"alpha/", "zeta/", "a.yml", "b.yaml"}));
+  EXPECT_EQ(app::directory_entries(dir, {}).size(), 5u);  // every file but the hidden one
+  EXPECT_THROW(app::directory_entries(dir / "missing", {}), fs::filesystem_error);
+  fs::remove_all(dir);
+}
+
+// Opening a scene through the file dialog with real keyboard events
+// (xdotool): the dialog opens in the scene's folder with the name field
+// focused; typing a file name and Enter opens it.
+TEST(Gui, TheFileDialogOpensASceneTypedWithTheKeyboard) {
+  if (!app::on_path("xvfb-run") || !app::on_path("xdotool")) GTEST_SKIP() << "needs xvfb-run and xdotool";
+  const fs::path dir = fs::temp_directory_path() / ("unfurl_gui_dialog_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path scenes = fs::path(UNFURL_SOURCE_DIR) / "assets" / "scenes";
+  fs::copy_file(scenes / "pendulum.yaml", dir / "pendulum.yaml");
+  fs::copy_file(scenes / "fourbar.yaml", dir / "fourbar.yaml");
+  std::ofstream(dir / "session.txt") << "wait_run\n"
+                                        "browse open\n"
+                                        "wait 6\n"
+                                        "wait_run\n"
+                                        "report " << (dir / "report.json").string() << "\n"
+                                        "quit\n";
+  // Enter is held for a moment: Dear ImGui 1.86 reads keys as states once a
+  // frame, and xdotool's press and release would land in one frame.
+  std::ofstream(dir / "keys.sh") << std::string(UNFURL_BINARY) << " gui " << (dir / "pendulum.yaml").string()
+                                 << " --script " << (dir / "session.txt").string() << " & pid=$!\n"
+                                 << "w=$(xdotool search --sync --name '^unfurl$' | head -1)\n"
+                                    "sleep 2\n"
+                                    "xdotool windowfocus --sync $w\n"
+                                    "xdotool type --delay 30 fourbar.yaml\n"
+                                    "xdotool keydown Return; sleep 0.2; xdotool keyup Return\n"
+                                    "wait $pid\n";
+  const std::string command = "cd " + dir.string() + " && timeout 120 xvfb-run -a -s '-screen 0 1280x800x24' sh " +
+                              (dir / "keys.sh").string() + " > " + (dir / "log.txt").string() + " 2>&1";
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << slurp(dir / "log.txt");
+  const std::string report = slurp(dir / "report.json");
+  EXPECT_NE(report.find("\"scene\": \"fourbar\""), std::string::npos) << report;
 }
 
 }  // namespace

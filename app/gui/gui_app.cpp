@@ -331,7 +331,8 @@ void GuiApp::draw_plots_texture() {
 
 void GuiApp::keyboard_shortcuts(Requests& requests) {
   const ImGuiIO& io = ImGui::GetIO();
-  if (io.WantTextInput) return;  // the keys belong to the field being typed in
+  // The keys belong to the field being typed in, or to the file dialog.
+  if (io.WantTextInput || state_.file_dialog.shown()) return;
   const auto pressed = [](int glfw_key) { return ImGui::IsKeyPressed(glfw_key, false); };
   const double frame = 1.0 / 30, t_end = state_.scene.run.t_end;
   if (io.KeyCtrl) {
@@ -428,6 +429,8 @@ void GuiApp::layout_and_panels(Requests& requests) {
   ImGui::Begin("status", nullptr, fixed | ImGuiWindowFlags_NoTitleBar);
   status_bar(state_);
   ImGui::End();
+
+  file_dialog_panel(state_, requests);
 }
 
 bool GuiApp::set_edits(std::vector<Override> edits) {

@@ -93,6 +93,7 @@ void toolbar_panel(GuiState& state, Requests& requests) {
   const bool entered = ImGui::InputText("##scene", path, sizeof state.scene_path, ImGuiInputTextFlags_EnterReturnsTrue);
   ImGui::SameLine();
   if (ImGui::Button("Open") || entered) requests.open = std::string(path);
+  browse_button(state, FileField::open_scene, "Browse...");
   ImGui::SameLine();
   if (ImGui::Button("Reload")) requests.reload = true;
   ImGui::SameLine();
@@ -245,6 +246,7 @@ void parameters_panel(GuiState& state, Requests& requests) {
   ImGui::EndDisabled();
   ImGui::SetNextItemWidth(em(220));
   ImGui::InputText("##save", state.save_path, sizeof state.save_path);
+  browse_button(state, FileField::save_scene, "...##save");
   ImGui::SameLine();
   if (ImGui::Button("Save scene (YAML)")) requests.save_scene = std::string(state.save_path);
   if (ImGui::IsItemHovered())
@@ -559,11 +561,13 @@ void export_panel(GuiState& state, Requests& requests) {
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("of a saved frame and of exported frames and video");
   ImGui::SetNextItemWidth(em(260));
   ImGui::InputText("##frame", frame_path, sizeof f.frame_path);
+  browse_button(state, FileField::frame, "...##frame");
   ImGui::SameLine();
   if (ImGui::Button("Save frame (PNG)")) requests.save_frame = std::string(frame_path);
 
   ImGui::SetNextItemWidth(em(260));
   ImGui::InputText("##csv", csv_path, sizeof f.csv_path);
+  browse_button(state, FileField::trajectory, "...##csv");
   ImGui::SameLine();
   if (ImGui::Button("Save trajectory (CSV)")) requests.save_trajectory = std::string(csv_path);
 
@@ -576,13 +580,19 @@ void export_panel(GuiState& state, Requests& requests) {
   ImGui::SetNextItemWidth(em(200));
   ImGui::InputFloat("fps", &fps, 1, 10, "%.1f");
   ImGui::SetNextItemWidth(em(260));
-  ImGui::InputText("directory", dir, sizeof f.dir);
+  ImGui::InputText("##directory", dir, sizeof f.dir);
+  browse_button(state, FileField::export_dir, "...##dir");
+  ImGui::SameLine();
+  ImGui::TextUnformatted("directory");
   ImGui::Checkbox("PNG frames", &frames);
   ImGui::SameLine();
   ImGui::Checkbox("video", &with_video);
   if (with_video) {
     ImGui::SetNextItemWidth(em(260));
-    ImGui::InputText("video file", video, sizeof f.video);
+    ImGui::InputText("##video", video, sizeof f.video);
+    browse_button(state, FileField::video, "...##video");
+    ImGui::SameLine();
+    ImGui::TextUnformatted("video file");
   }
   const ExportProgress& ex = state.export_progress;
   if (ex.active) {
@@ -602,6 +612,64 @@ void export_panel(GuiState& state, Requests& requests) {
     requests.export_range = r;
   }
   if (!ex.message.empty()) ImGui::TextWrapped("%s", ex.message.c_str());
+}
+
+namespace {
+
+// The text field a file field is, and what its dialog looks like.
+struct FileFieldSpec {
+  char* text;
+  std::size_t size;
+  const char* title;
+  FileDialog::Mode mode;
+  std::vector<std::string> extensions;
+};
+
+FileFieldSpec file_field_spec(GuiState& state, FileField field) {
+  ExportForm& f = state.export_form;
+  using Mode = FileDialog::Mode;
+  switch (field) {
+    case FileField::open_scene:
+      return {state.scene_path, sizeof state.scene_path, "Open a scene", Mode::open_file, {".yaml", ".yml"}};
+    case FileField::save_scene:
+      return {state.save_path, sizeof state.save_path, "Save the scene as", Mode::save_file, {".yaml", ".yml"}};
+    case FileField::frame: return {f.frame_path, sizeof f.frame_path, "Save the frame as", Mode::save_file, {".png"}};
+    case FileField::trajectory:
+      return {f.csv_path, sizeof f.csv_path, "Save the trajectory as", Mode::save_file, {".csv"}};
+    case FileField::export_dir: return {f.dir, sizeof f.dir, "Export frames to", Mode::choose_directory, {}};
+    case FileField::video: return {f.video, sizeof f.video, "Save the video as", Mode::save_file, {".mp4"}};
+    case FileField::none: break;
+  }
+  return {nullptr, 0, "", Mode::open_file, {}};
+}
+
+}  // namespace
+
+void open_file_dialog(GuiState& state, FileField field) {
+  const FileFieldSpec spec = file_field_spec(state, field);
+  if (!spec.text) return;
+  state.file_field = field;
+  state.file_dialog.show(spec.title, spec.mode, spec.text, spec.extensions);
+}
+
+void browse_button(GuiState& state, FileField field, const char* id) {
+  ImGui::SameLine();
+  if (ImGui::Button(id)) open_file_dialog(state, field);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("choose with a file browser");
+}
+
+void file_dialog_panel(GuiState& state, Requests& requests) {
+  const std::optional<std::string> chosen = state.file_dialog.draw();
+  if (!chosen) return;
+  // Relative to the working directory when inside it: shorter, and what
+  // the user typed before.
+  std::error_code ec;
+  const std::filesystem::path relative = std::filesystem::relative(*chosen, std::filesystem::current_path(ec), ec);
+  const std::string path = !ec && !relative.empty() && relative.string().rfind("..", 0) != 0 ? relative.string() : *chosen;
+  const FileFieldSpec spec = file_field_spec(state, state.file_field);
+  if (spec.text) std::snprintf(spec.text, spec.size, "%s", path.c_str());
+  if (state.file_field == FileField::open_scene) requests.open = path;
+  state.file_field = FileField::none;
 }
 
 void status_bar(const GuiState& state) {

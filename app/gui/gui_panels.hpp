@@ -58,6 +58,16 @@ void study_panel(GuiState& state, Requests& requests);
 // (runs_panel.cpp).
 void runs_panel(GuiState& state, Requests& requests);
 
+// Shows the file dialog for a path field, starting at the field's path.
+void open_file_dialog(GuiState& state, FileField field);
+
+// A "..." button after a path field: opens the file dialog for it.
+void browse_button(GuiState& state, FileField field, const char* id);
+
+// The file dialog, when shown; its choice goes into its field (and opening
+// a scene is requested).
+void file_dialog_panel(GuiState& state, Requests& requests);
+
 // Simulated time, wall time, steps, RHS calls, real-time factor, integrator.
 void status_bar(const GuiState& state);
 

@@ -10,6 +10,8 @@
 //   camera NAME           a camera preset
 //   orthographic on|off   parallel projection
 //   ui_scale X            the UI scale (as the toolbar's field sets it)
+//   browse open|save_scene|frame|trajectory|export_dir|video
+//                         show the file dialog of that field (as its button does)
 //   set PATH VALUE        change a scene value as the parameters panel does
 //                         (for example set springs.0.free_position 1.2)
 //   screenshot FILE.png   the whole window, read back from its framebuffer

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "unfurl/render/camera.hpp"
+#include "file_dialog.hpp"
 #include "render_options.hpp"
 #include "run_comparison.hpp"
 #include "unfurl/sim/scene.hpp"
@@ -62,6 +63,9 @@ struct ExportForm {
   int size[2] = {1280, 720};
   bool with_video = true, frames = true;
 };
+
+// Which field a file dialog's choice goes to.
+enum class FileField { none, open_scene, save_scene, frame, trajectory, export_dir, video };
 
 struct GuiState {
   char scene_path[512] = "";  // the toolbar's field
@@ -141,6 +145,9 @@ struct GuiState {
   // The last edit, and when the plots first showed its whole run: the
   // edit-to-new-curves latency (steady-clock seconds; 0 before).
   double edited_at = 0, curves_at = 0;
+
+  FileDialog file_dialog;
+  FileField file_field = FileField::none;
 
   ExportForm export_form;
   ExportProgress export_progress;

@@ -2,6 +2,7 @@
 
 #include <ctime>
 
+#include "gui_panels.hpp"
 #include "session_report.hpp"
 #include "unfurl/render/trajectory_plots.hpp"
 
@@ -47,6 +48,12 @@ void ScriptRunner::step(ScriptTarget& target, double now) {
       state.loop = arg(0) == "on";
     } else if (c.name == "scrub") {
       state.play_time = std::stod(arg(0));
+    } else if (c.name == "browse") {
+      static const std::pair<const char*, FileField> fields[] = {
+          {"open", FileField::open_scene}, {"save_scene", FileField::save_scene}, {"frame", FileField::frame},
+          {"trajectory", FileField::trajectory}, {"export_dir", FileField::export_dir}, {"video", FileField::video}};
+      for (const auto& [name, field] : fields)
+        if (arg(0) == name) open_file_dialog(state, field);
     } else if (c.name == "ui_scale") {
       state.ui_scale = state.ui_scale_field = std::stof(arg(0));
     } else if (c.name == "orthographic") {
