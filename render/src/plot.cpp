@@ -258,13 +258,14 @@ void draw_legend(ImDrawList* draw, const PlotFrame& f, const PlotSpec& spec, con
 
 }  // namespace
 
+// Every hue reads on white (the PNGs) and on the GUI's dark background.
 ImU32 palette(int i) {
   static const ImU32 colors[] = {IM_COL32(31, 119, 180, 255),  IM_COL32(255, 127, 14, 255),
                                  IM_COL32(44, 160, 44, 255),   IM_COL32(214, 39, 40, 255),
                                  IM_COL32(148, 103, 189, 255), IM_COL32(140, 86, 75, 255),
                                  IM_COL32(227, 119, 194, 255), IM_COL32(127, 127, 127, 255),
                                  IM_COL32(188, 189, 34, 255),  IM_COL32(23, 190, 207, 255),
-                                 IM_COL32(0, 0, 128, 255),     IM_COL32(128, 128, 0, 255)};
+                                 IM_COL32(110, 110, 255, 255), IM_COL32(190, 150, 0, 255)};
   return colors[i % 12];
 }
 
