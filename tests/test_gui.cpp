@@ -28,6 +28,31 @@ std::string slurp(const fs::path& path) {
   return text.str();
 }
 
+// A test's scratch directory under /tmp, made empty; removed afterwards
+// unless the test failed (its files are then what to look at).
+struct Scratch {
+  explicit Scratch(const std::string& name)
+      : path(fs::temp_directory_path() / (name + "_" + std::to_string(::getpid()))) {
+    fs::remove_all(path);
+    fs::create_directories(path);
+  }
+  ~Scratch() {
+    if (!::testing::Test::HasFailure()) fs::remove_all(path);
+  }
+  fs::path path;
+};
+
+// Runs `unfurl gui ARGS --script DIR/session.txt` under Xvfb at 1280x800;
+// "" when it exits 0, else its log.
+std::string gui_session_failure(const fs::path& dir, const std::string& args) {
+  const std::string command = "timeout 300 xvfb-run -a -s '-screen 0 1280x800x24' " + std::string(UNFURL_BINARY) +
+                              " gui " + args + " --script " + (dir / "session.txt").string() + " > " +
+                              (dir / "log.txt").string() + " 2>&1";
+  const int status = std::system(command.c_str());
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return "";
+  return "exit status " + std::to_string(status) + ":\n" + slurp(dir / "log.txt");
+}
+
 // Latch time of `joint` in the report's run `which` ("current"/"previous").
 double latch_time(const std::string& report, const std::string& which, const std::string& joint) {
   const auto at = report.find("\"" + which + "\"");
@@ -50,9 +75,8 @@ int cell_pixels(const render::Image& image, int x0, int y0, int x1, int y1) {
 
 TEST(Gui, ScriptedSessionPlaysScrubsChangesAPreloadAndReruns) {
   if (!app::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
-  const fs::path dir = fs::temp_directory_path() / ("unfurl_gui_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const Scratch scratch("unfurl_gui");
+  const fs::path& dir = scratch.path;
   std::ofstream(dir / "session.txt") << "wait_run\n"
                                         "play\n"
                                         "wait 1\n"
@@ -72,11 +96,7 @@ TEST(Gui, ScriptedSessionPlaysScrubsChangesAPreloadAndReruns) {
                                         "idle 3\n"
                                         "report " << (dir / "second.json").string() << "\n"
                                         "quit\n";
-  const std::string command = "timeout 300 xvfb-run -a -s '-screen 0 1280x800x24' " + std::string(UNFURL_BINARY) +
-                              " gui pantograph --script " + (dir / "session.txt").string() + " > " +
-                              (dir / "log.txt").string() + " 2>&1";
-  const int status = std::system(command.c_str());
-  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << slurp(dir / "log.txt");
+  ASSERT_EQ(gui_session_failure(dir, "pantograph"), "");
 
   // Not blank, and the 3D view (top left) shows the array's cells.
   const render::Image shot = test::read_png((dir / "second.png").string());
@@ -116,9 +136,8 @@ TEST(Gui, ScriptedSessionPlaysScrubsChangesAPreloadAndReruns) {
 // (it crashed the loop-gap and energy plots).
 TEST(Gui, OpeningAnotherSceneDropsThePreviousScenesRuns) {
   if (!app::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
-  const fs::path dir = fs::temp_directory_path() / ("unfurl_gui_open_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const Scratch scratch("unfurl_gui_open");
+  const fs::path& dir = scratch.path;
   std::ofstream(dir / "session.txt") << "wait_run\n"
                                         "plot energy\n"
                                         "set springs.0.free_position 1.0\n"
@@ -132,11 +151,7 @@ TEST(Gui, OpeningAnotherSceneDropsThePreviousScenesRuns) {
                                         "wait 0.3\n"
                                         "report " << (dir / "opened.json").string() << "\n"
                                         "quit\n";
-  const std::string command = "timeout 300 xvfb-run -a -s '-screen 0 1280x800x24' " + std::string(UNFURL_BINARY) +
-                              " gui zfold --script " + (dir / "session.txt").string() + " > " +
-                              (dir / "log.txt").string() + " 2>&1";
-  const int status = std::system(command.c_str());
-  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << slurp(dir / "log.txt");
+  ASSERT_EQ(gui_session_failure(dir, "zfold"), "");
   const std::string report = slurp(dir / "opened.json");
   EXPECT_FALSE(std::isnan(latch_time(report, "current", "j8"))) << report;  // the pantograph's own run
   EXPECT_TRUE(std::isnan(latch_time(report, "previous", "j1"))) << "the z-fold's run became the ghost: " << report;
@@ -146,9 +161,8 @@ TEST(Gui, OpeningAnotherSceneDropsThePreviousScenesRuns) {
 // to the same run.
 TEST(Gui, EditsUndoRedoAndSaveAsAFileThatReloadsToTheSameRun) {
   if (!app::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
-  const fs::path dir = fs::temp_directory_path() / ("unfurl_gui_edits_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const Scratch scratch("unfurl_gui_edits");
+  const fs::path& dir = scratch.path;
   std::ofstream(dir / "session.txt") << "wait_run\n"
                                         "set springs.j1.free_position 1.3\n"
                                         "wait_run\n"
@@ -162,11 +176,7 @@ TEST(Gui, EditsUndoRedoAndSaveAsAFileThatReloadsToTheSameRun) {
                                         "report " << (dir / "redone.json").string() << "\n"
                                         "save_scene " << (dir / "edited.yaml").string() << "\n"
                                         "quit\n";
-  const std::string command = "timeout 300 xvfb-run -a -s '-screen 0 1280x800x24' " + std::string(UNFURL_BINARY) +
-                              " gui pantograph --t-end 9 --script " + (dir / "session.txt").string() + " > " +
-                              (dir / "log.txt").string() + " 2>&1";
-  const int status = std::system(command.c_str());
-  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << slurp(dir / "log.txt");
+  ASSERT_EQ(gui_session_failure(dir, "pantograph --t-end 9"), "");
   const std::string undone = slurp(dir / "undone.json"), redone = slurp(dir / "redone.json");
   EXPECT_NE(undone.find("springs.j1.free_position=1.3"), std::string::npos) << undone;
   EXPECT_EQ(undone.find("latches.j3.stiffness"), std::string::npos) << undone;
@@ -217,9 +227,8 @@ int pinned_yellow_pixels(const render::Image& image, int x0, int y0, int x1, int
 // another shape drops them.
 TEST(Gui, PinnedRunsAreTabledAndDrawnAgainstTheCurrentRun) {
   if (!app::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
-  const fs::path dir = fs::temp_directory_path() / ("unfurl_gui_pins_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const Scratch scratch("unfurl_gui_pins");
+  const fs::path& dir = scratch.path;
   std::ofstream(dir / "session.txt") << "wait_run\n"
                                         "report " << (dir / "first.json").string() << "\n"
                                         "pin file values\n"
@@ -241,11 +250,7 @@ TEST(Gui, PinnedRunsAreTabledAndDrawnAgainstTheCurrentRun) {
                                         "wait_run\n"
                                         "report " << (dir / "other.json").string() << "\n"
                                         "quit\n";
-  const std::string command = "timeout 300 xvfb-run -a -s '-screen 0 1280x800x24' " + std::string(UNFURL_BINARY) +
-                              " gui pantograph --t-end 9 --script " + (dir / "session.txt").string() + " > " +
-                              (dir / "log.txt").string() + " 2>&1";
-  const int status = std::system(command.c_str());
-  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << slurp(dir / "log.txt");
+  ASSERT_EQ(gui_session_failure(dir, "pantograph --t-end 9"), "");
   const std::string first = slurp(dir / "first.json"), second = slurp(dir / "second.json");
   const std::string third = slurp(dir / "third.json");
   EXPECT_NE(third.find("\"name\": \"file values\""), std::string::npos) << third;
@@ -283,9 +288,8 @@ TEST(Gui, PinnedRunsAreTabledAndDrawnAgainstTheCurrentRun) {
 // loads without drawing the other case's run as its ghost.
 TEST(Gui, StudyCasesOpenFromTheStudyTab) {
   if (!app::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
-  const fs::path dir = fs::temp_directory_path() / ("unfurl_gui_study_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const Scratch scratch("unfurl_gui_study");
+  const fs::path& dir = scratch.path;
   const std::string study = std::string(UNFURL_SOURCE_DIR) + "/tests/studies/small_monte_carlo.yaml";
   const test::CommandOutcome sweep =
       test::run_command(std::string(UNFURL_BINARY) + " sweep " + study + " --out " + (dir / "study").string() + " --quiet");
@@ -302,11 +306,7 @@ TEST(Gui, StudyCasesOpenFromTheStudyTab) {
                                         "wait_run\n"
                                         "report " << (dir / "failure.json").string() << "\n"
                                         "quit\n";
-  const std::string command = "timeout 300 xvfb-run -a -s '-screen 0 1280x800x24' " + std::string(UNFURL_BINARY) +
-                              " gui --study " + study + " --out " + (dir / "study").string() + " --script " +
-                              (dir / "session.txt").string() + " > " + (dir / "log.txt").string() + " 2>&1";
-  const int status = std::system(command.c_str());
-  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << slurp(dir / "log.txt");
+  ASSERT_EQ(gui_session_failure(dir, "--study " + study + " --out " + (dir / "study").string()), "");
 
   const std::string nominal = slurp(dir / "nominal.json"), shown = slurp(dir / "case.json");
   EXPECT_NE(nominal.find("\"study_case\": \"nominal\""), std::string::npos) << nominal;
@@ -344,9 +344,8 @@ TEST(Gui, StudyCasesOpenFromTheStudyTab) {
 // failure), while the case's other parameters stay editable.
 TEST(Gui, AFailureCasesInjectedElementsAreReadOnly) {
   if (!app::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
-  const fs::path dir = fs::temp_directory_path() / ("unfurl_gui_failure_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const Scratch scratch("unfurl_gui_failure");
+  const fs::path& dir = scratch.path;
   const std::string study = std::string(UNFURL_SOURCE_DIR) + "/tests/studies/gui_failures.yaml";
   const test::CommandOutcome sweep =
       test::run_command(std::string(UNFURL_BINARY) + " sweep " + study + " --out " + (dir / "study").string() + " --quiet");
@@ -367,11 +366,7 @@ TEST(Gui, AFailureCasesInjectedElementsAreReadOnly) {
                                         "wait_run\n"
                                         "report " << (dir / "other.json").string() << "\n"
                                         "quit\n";
-  const std::string command = "timeout 300 xvfb-run -a -s '-screen 0 1280x800x24' " + std::string(UNFURL_BINARY) +
-                              " gui --study " + study + " --out " + (dir / "study").string() + " --script " +
-                              (dir / "session.txt").string() + " > " + (dir / "log.txt").string() + " 2>&1";
-  const int status = std::system(command.c_str());
-  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << slurp(dir / "log.txt");
+  ASSERT_EQ(gui_session_failure(dir, "--study " + study + " --out " + (dir / "study").string()), "");
   const std::regex no_edits("\"edits\": \\[\\s*\\]");
   for (const auto& [file, element] : {std::pair{"friction.json", "friction.j4"}, std::pair{"stuck.json", "latches.8"},
                                       std::pair{"spring.json", "springs.j1"}}) {
@@ -390,9 +385,8 @@ TEST(Gui, AFailureCasesInjectedElementsAreReadOnly) {
 TEST(Gui, ALongExportCancelsAndLeavesNoPartialVideo) {
   if (!app::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
   if (!app::on_path("ffmpeg")) GTEST_SKIP() << "ffmpeg is not installed";
-  const fs::path dir = fs::temp_directory_path() / ("unfurl_gui_cancel_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const Scratch scratch("unfurl_gui_cancel");
+  const fs::path& dir = scratch.path;
   std::ofstream(dir / "session.txt") << "wait_run\n"
                                         "export " << (dir / "frames").string() << " 0 9 60 "
                                      << (dir / "frames" / "deployment.mp4").string() << "\n"
@@ -401,11 +395,7 @@ TEST(Gui, ALongExportCancelsAndLeavesNoPartialVideo) {
                                         "wait_export\n"
                                         "report " << (dir / "report.json").string() << "\n"
                                         "quit\n";
-  const std::string command = "timeout 300 xvfb-run -a -s '-screen 0 1280x800x24' " + std::string(UNFURL_BINARY) +
-                              " gui pantograph --t-end 9 --script " + (dir / "session.txt").string() + " > " +
-                              (dir / "log.txt").string() + " 2>&1";
-  const int status = std::system(command.c_str());
-  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << slurp(dir / "log.txt");
+  ASSERT_EQ(gui_session_failure(dir, "pantograph --t-end 9"), "");
   const std::string report = slurp(dir / "report.json");
   std::smatch m;
   ASSERT_TRUE(std::regex_search(report, m, std::regex("export cancelled after ([0-9]+) of 541 frames"))) << report;
@@ -426,8 +416,8 @@ TEST(Gui, ALongExportCancelsAndLeavesNoPartialVideo) {
 // The file dialog's listing: folders first, then the wanted files, each
 // sorted; hidden entries and other extensions left out.
 TEST(FileDialog, ListsFoldersThenTheWantedFiles) {
-  const fs::path dir = fs::temp_directory_path() / ("unfurl_dialog_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
+  const Scratch scratch("unfurl_dialog");
+  const fs::path& dir = scratch.path;
   fs::create_directories(dir / "zeta");
   fs::create_directories(dir / "alpha");
   fs::create_directories(dir / ".git");
@@ -438,7 +428,6 @@ TEST(FileDialog, ListsFoldersThenTheWantedFiles) {
   EXPECT_EQ(listed, (std::vector<std::string>{"alpha/", "zeta/", "a.yml", "b.yaml"}));
   EXPECT_EQ(app::directory_entries(dir, {}).size(), 5u);  // every file but the hidden one
   EXPECT_THROW(app::directory_entries(dir / "missing", {}), fs::filesystem_error);
-  fs::remove_all(dir);
 }
 
 // Opening a scene through the file dialog with real keyboard events
@@ -446,9 +435,8 @@ TEST(FileDialog, ListsFoldersThenTheWantedFiles) {
 // focused; typing a file name and Enter opens it.
 TEST(Gui, TheFileDialogOpensASceneTypedWithTheKeyboard) {
   if (!app::on_path("xvfb-run") || !app::on_path("xdotool")) GTEST_SKIP() << "needs xvfb-run and xdotool";
-  const fs::path dir = fs::temp_directory_path() / ("unfurl_gui_dialog_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const Scratch scratch("unfurl_gui_dialog");
+  const fs::path& dir = scratch.path;
   const fs::path scenes = fs::path(UNFURL_SOURCE_DIR) / "assets" / "scenes";
   fs::copy_file(scenes / "pendulum.yaml", dir / "pendulum.yaml");
   fs::copy_file(scenes / "fourbar.yaml", dir / "fourbar.yaml");

@@ -17,7 +17,18 @@ Regulator::Regulator(const Model& model, const std::vector<Loop>& loops, std::ve
     solver_ = make_closure_solver(settings_.solver, model, loops_, components_);
 }
 
+bool Regulator::factorize(const Sweep& sweep) {
+  // R = W + delta I depends on q alone: at the q it was factorized for (the
+  // same sweep, the same configuration) it is the same matrix.
+  if (&sweep == factorized_sweep_ && sweep.configuration() == factorized_configuration_) return factorized_ok_;
+  factorized_ok_ = solver_->factorize(sweep, delta_);
+  factorized_sweep_ = &sweep;
+  factorized_configuration_ = sweep.configuration();
+  return factorized_ok_;
+}
+
 void Regulator::calibrate(const Sweep& sweep) {
+  factorized_sweep_ = nullptr;  // delta changes
   if (settings_.gains == GainTuning::full) {
     delta_ = settings_.regularization * mobility_.largest_eigenvalue(sweep);
     return;
@@ -56,7 +67,7 @@ bool Regulator::control(const Sweep& sweep, const double* g, const double* u, co
     ud_ = b;
     return true;
   }
-  if (!solver_->factorize(sweep, delta_)) {
+  if (!factorize(sweep)) {
     lambda_.setConstant(std::numeric_limits<double>::quiet_NaN());
     return false;
   }
@@ -77,7 +88,7 @@ double Regulator::energy(const Sweep& sweep, const double* g, const double* u) {
   auto s = rhs_.col(0);
   s = g_ + u_;
   if (settings_.gains == GainTuning::paper) return 0.5 * v2 * s.cwiseAbs2().cwiseQuotient(diagonal_W0_).sum();
-  if (!solver_->factorize(sweep, delta_)) return std::numeric_limits<double>::quiet_NaN();
+  if (!factorize(sweep)) return std::numeric_limits<double>::quiet_NaN();
   solver_->solve(rhs_.data(), solved_.data(), 1);
   return 0.5 * v2 * s.dot(solved_.col(0));
 }

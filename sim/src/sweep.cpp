@@ -1,5 +1,7 @@
 #include "unfurl/sim/sweep.hpp"
 
+#include <algorithm>
+
 namespace unfurl {
 
 Sweep::Sweep(const Model& model)
@@ -9,7 +11,8 @@ Sweep::Sweep(const Model& model)
       X_(model.size()),
       M_star_(model.size()),
       M_star_A_(model.size()),
-      D_(model.size(), 0.0) {
+      D_(model.size(), 0.0),
+      q_(model.nq, 0.0) {
   for (int i = 0; i < model.size(); ++i) {
     A_[i] = model.joints[i].motion_axis();
     M_[i] = model.bodies[i].spatial_mass();
@@ -17,6 +20,10 @@ Sweep::Sweep(const Model& model)
 }
 
 void Sweep::set_configuration(const double* q, const double* joint_diagonal) {
+  if (configuration_ > 0 && !joint_diagonal && !with_diagonal_ && std::equal(q_.begin(), q_.end(), q)) return;
+  std::copy(q, q + model_.nq, q_.begin());
+  with_diagonal_ = joint_diagonal != nullptr;
+  ++configuration_;
   const int N = model_.size();
   for (int i = 0; i < N; ++i) {
     const int c = model_.coordinate[i];

@@ -1,162 +1,47 @@
-// The MuJoCo side of the peer tests: runs a model exported by `unfurl export
-// mjcf` from its keyframe 'initial' with RK4 at a fixed step, applies the
-// latches the model keeps as custom numeric data (latch:JOINT = position,
-// stiffness, damping, side) through mjcb_passive, and writes the joint
-// angles and the energy at fixed times, and the latch times.
+// The MuJoCo side of the peer tests (mujoco_runner.hpp does the running):
 //
 //   unfurl_mujoco_peer MODEL.xml T_END DT SAMPLE OUT_PREFIX
 //
 // writes OUT_PREFIX.csv (t, q.JOINT..., energy) and OUT_PREFIX_events.csv
 // (t, joint). Exits 1 when the model loads with an error or a warning, or
 // MuJoCo warns while it runs.
-#include <mujoco/mujoco.h>
-
-#include <cmath>
 #include <cstdio>
-#include <algorithm>
 #include <cstdlib>
+#include <exception>
 #include <fstream>
 #include <string>
-#include <vector>
 
-namespace {
-
-struct Latch {
-  int joint = 0, qpos = 0, dof = 0;
-  double position = 0, stiffness = 0, damping = 0, side = 0;
-  bool engaged = false;
-  double engaged_at = NAN;
-};
-
-std::vector<Latch> latches;
-
-// Engaged latches as joint torques, at every stage of the step.
-void latch_torques(const mjModel*, mjData* d) {
-  for (const Latch& l : latches)
-    if (l.engaged)
-      d->qfrc_passive[l.dof] += -l.stiffness * (d->qpos[l.qpos] - l.position) - l.damping * d->qvel[l.dof];
-}
-
-std::vector<Latch> read_latches(const mjModel* m) {
-  std::vector<Latch> out;
-  for (int i = 0; i < m->nnumeric; ++i) {
-    const std::string name = mj_id2name(m, mjOBJ_NUMERIC, i);
-    if (name.rfind("latch:", 0) != 0 || m->numeric_size[i] != 4) continue;
-    Latch l;
-    l.joint = mj_name2id(m, mjOBJ_JOINT, name.substr(6).c_str());
-    if (l.joint < 0) continue;
-    l.qpos = m->jnt_qposadr[l.joint];
-    l.dof = m->jnt_dofadr[l.joint];
-    const mjtNum* data = m->numeric_data + m->numeric_adr[i];
-    l.position = data[0], l.stiffness = data[1], l.damping = data[2], l.side = data[3];
-    l.engaged = l.side == 0;
-    if (l.engaged) l.engaged_at = 0;
-    out.push_back(l);
-  }
-  return out;
-}
-
-double latch_energy(const mjData* d) {
-  double e = 0;
-  for (const Latch& l : latches)
-    if (l.engaged) e += 0.5 * l.stiffness * std::pow(d->qpos[l.qpos] - l.position, 2);
-  return e;
-}
-
-int warnings(const mjData* d) {
-  int n = 0;
-  for (int i = 0; i < mjNWARNING; ++i) n += d->warning[i].number;
-  return n;
-}
-
-}  // namespace
+#include "mujoco_runner.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 6) {
     std::fprintf(stderr, "usage: unfurl_mujoco_peer MODEL.xml T_END DT SAMPLE OUT_PREFIX\n");
     return 64;
   }
-  const double t_end = std::atof(argv[2]), dt = std::atof(argv[3]), sample = std::atof(argv[4]);
   const std::string prefix = argv[5];
-  char error[1000] = "";
-  mjModel* m = mj_loadXML(argv[1], nullptr, error, sizeof error);
-  if (!m || error[0]) {
-    std::fprintf(stderr, "unfurl_mujoco_peer: %s: %s\n", argv[1], error[0] ? error : "cannot load");
+  unfurl::peer::MujocoRun run;
+  try {
+    run = unfurl::peer::run_mujoco(argv[1], std::atof(argv[2]), std::atof(argv[3]), std::atof(argv[4]));
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "unfurl_mujoco_peer: %s\n", e.what());
     return 1;
   }
-  m->opt.timestep = dt;
-  m->opt.integrator = mjINT_RK4;
-  mjData* d = mj_makeData(m);
-  if (m->nkey > 0) mj_resetDataKeyframe(m, d, 0);
-  latches = read_latches(m);
-  mjcb_passive = latch_torques;
-
   std::ofstream csv(prefix + ".csv");
   csv.precision(17);
   csv << "t";
-  for (int j = 0; j < m->njnt; ++j) csv << ",q." << mj_id2name(m, mjOBJ_JOINT, j);
+  for (const std::string& joint : run.joints) csv << ",q." << joint;
   csv << ",energy\n";
-  auto record = [&](double t) {
-    mj_forward(m, d);
-    csv << t;
-    for (int j = 0; j < m->njnt; ++j) csv << ',' << d->qpos[m->jnt_qposadr[j]];
-    csv << ',' << d->energy[0] + d->energy[1] + latch_energy(d) << '\n';
-  };
-  const long steps = std::lround(t_end / dt), per_sample = std::max(1L, std::lround(sample / dt));
-  std::vector<mjtNum> qpos(m->nq), qvel(m->nv);
-  record(0);
-  for (long k = 1; k <= steps; ++k) {
-    // One step of dt, cut at every latch crossing inside it: step to the
-    // earliest crossing (on the straight line between the ends of the trial
-    // step), engage, go on with the rest. Each cut engages a latch.
-    double remaining = dt;
-    while (remaining > 0) {
-      std::copy(d->qpos, d->qpos + m->nq, qpos.begin());
-      std::copy(d->qvel, d->qvel + m->nv, qvel.begin());
-      const double t0 = d->time;
-      std::vector<double> before(latches.size());
-      for (std::size_t i = 0; i < latches.size(); ++i)
-        before[i] = latches[i].side * (d->qpos[latches[i].qpos] - latches[i].position);
-      m->opt.timestep = remaining;
-      mj_step(m, d);
-      double first = 2.0;
-      std::vector<double> crossing(latches.size(), 2.0);
-      for (std::size_t i = 0; i < latches.size(); ++i) {
-        const Latch& l = latches[i];
-        const double after = l.side * (d->qpos[l.qpos] - l.position);
-        if (l.engaged || after > 0) continue;
-        crossing[i] = before[i] <= 0 ? 0.0 : before[i] / (before[i] - after);
-        first = std::min(first, crossing[i]);
-      }
-      if (first > 1.0) break;
-      std::copy(qpos.begin(), qpos.end(), d->qpos);
-      std::copy(qvel.begin(), qvel.end(), d->qvel);
-      d->time = t0;
-      const double h = first * remaining;
-      if (h > 0) {
-        m->opt.timestep = h;
-        mj_step(m, d);
-      }
-      for (std::size_t i = 0; i < latches.size(); ++i)
-        if (crossing[i] <= first + 1e-9) {
-          latches[i].engaged = true;
-          latches[i].engaged_at = t0 + h;
-        }
-      remaining -= h;
-    }
-    m->opt.timestep = dt;
-    if (k % per_sample == 0) record(k * dt);
+  for (std::size_t k = 0; k < run.t.size(); ++k) {
+    csv << run.t[k];
+    for (double q : run.q[k]) csv << ',' << q;
+    csv << ',' << run.energy[k] << '\n';
   }
   std::ofstream events(prefix + "_events.csv");
   events.precision(17);
   events << "t,joint\n";
-  for (const Latch& l : latches)
-    if (l.engaged) events << l.engaged_at << ',' << mj_id2name(m, mjOBJ_JOINT, l.joint) << '\n';
-  const int warned = warnings(d);
-  mj_deleteData(d);
-  mj_deleteModel(m);
-  if (warned) {
-    std::fprintf(stderr, "unfurl_mujoco_peer: MuJoCo warned %d times while running\n", warned);
+  for (const auto& [t, joint] : run.latches) events << t << ',' << joint << '\n';
+  if (run.warnings) {
+    std::fprintf(stderr, "unfurl_mujoco_peer: MuJoCo warned %d times while running\n", run.warnings);
     return 1;
   }
   return 0;

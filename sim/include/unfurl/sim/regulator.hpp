@@ -98,6 +98,11 @@ class Regulator {
   std::unique_ptr<ClosureSolver> solver_;  // the full tuning's solves with R
   double delta_ = 0;
   Eigen::VectorXd diagonal_W0_;  // paper tuning: diag W(0)
+  // The solver's factorization: for which sweep and configuration.
+  bool factorize(const Sweep& sweep);
+  const Sweep* factorized_sweep_ = nullptr;
+  long factorized_configuration_ = 0;
+  bool factorized_ok_ = false;
 
   // Scratch, sized once: the right-hand sides of (12) and (13) side by
   // side, and R^-1 applied to them.

@@ -24,7 +24,14 @@ class Sweep {
   // With joint_diagonal (one value per coordinate, k_c), the passes solve
   // with Mtilde + diag(k) instead: D_i = (A_i^T M*_i A_i + k_i)^-1, as a
   // joint's armature enters the articulated inertia.
+  // Called again with the q it has (and no joint_diagonal), it keeps what it
+  // computed: the finite-difference Jacobian's momentum columns and the
+  // observers after a step revisit the same q.
   void set_configuration(const double* q, const double* joint_diagonal = nullptr);
+
+  // Changes whenever set_configuration computes anew: what depends on q
+  // alone (the regulator's factorized W) is kept while it stays.
+  long configuration() const { return configuration_; }
 
   // phi*_i of the first backward pass for momenta p (v*_i = 0).
   void bias(const double* p, std::vector<Vec6>& phi) const { bias_pass(coordinates(p), phi); }
@@ -98,6 +105,9 @@ class Sweep {
   std::vector<Mat6> M_star_;    // M*_i
   std::vector<Vec6> M_star_A_;  // M*_i A_i
   std::vector<double> D_;       // D_i = (A_i^T M*_i A_i)^-1
+  std::vector<double> q_;       // the q of the quantities above
+  bool with_diagonal_ = false;  // ... and whether a joint diagonal entered them
+  long configuration_ = 0;      // 0: none yet
 };
 
 template <class S, class P>
