@@ -159,7 +159,10 @@ std::string generate_chain(int links) {
         << "name: chain_" << N << "\n"
         << "description: A hanging chain of " << N << " links.\n\n"
         << "base:\n  name: ground\n\ngravity: [0, 0, -9.81]\n\nbodies:\n";
-  const double inertia[3] = {I, I, 1e-3 * I + 1e-12};
+  // A thin rod: about its own axis a thousandth of I (the radius a
+  // hundredth of the length), which keeps the principal moments a rigid
+  // body can have at any N (a floor of 1e-12 did not, from 10,000 links).
+  const double inertia[3] = {I, I, 1e-3 * I};
   std::ostringstream dampers, q;
   for (int i = 1; i <= N; ++i) {
     const std::string parent = i == 1 ? "ground" : "link" + std::to_string(i - 1);
