@@ -4,12 +4,19 @@
 
 namespace unfurl {
 
-std::vector<double> rhs_timing_state(Dynamics& dynamics) {
-  std::vector<double> y = dynamics.initial_state(), ydot(y.size());
+RhsTimingStates rhs_timing_states(Dynamics& dynamics) {
+  RhsTimingStates states;
+  std::vector<double>& y = states.a;
+  y = dynamics.initial_state();
+  std::vector<double> ydot(y.size());
   for (double& x : y) x += 1e-3;
-  if (!dynamics.rhs(0, y.data(), ydot.data()))
-    throw std::runtime_error(dynamics.scene().name + ": the right-hand side is not finite at the timing state");
-  return y;
+  states.b = y;
+  const StateLayout& L = dynamics.layout();
+  for (int c = 0; c < L.nq; ++c) states.b[L.q() + c] += 1e-9;
+  for (const std::vector<double>* state : {&states.a, &states.b})
+    if (!dynamics.rhs(0, state->data(), ydot.data()))
+      throw std::runtime_error(dynamics.scene().name + ": the right-hand side is not finite at the timing state");
+  return states;
 }
 
 }  // namespace unfurl

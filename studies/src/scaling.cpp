@@ -32,7 +32,8 @@ RhsTiming time_right_hand_side(const ScalingScene& s, double seconds) {
   using Clock = std::chrono::steady_clock;
   const Scene scene = load_scaling_scene(s);
   Dynamics dynamics(scene);
-  std::vector<double> y = rhs_timing_state(dynamics), ydot(y.size());
+  const RhsTimingStates y = rhs_timing_states(dynamics);
+  std::vector<double> ydot(y.a.size());
   RhsTiming t;
   t.scene = s;
   t.bodies = scene.model.size();
@@ -42,7 +43,7 @@ RhsTiming time_right_hand_side(const ScalingScene& s, double seconds) {
   long calls = 1;
   for (;;) {
     const auto start = Clock::now();
-    for (long k = 0; k < calls; ++k) dynamics.rhs(0, y.data(), ydot.data());
+    for (long k = 0; k < calls; ++k) dynamics.rhs(0, y[k].data(), ydot.data());
     if (std::chrono::duration<double>(Clock::now() - start).count() > seconds / 20) break;
     calls *= 2;
   }
@@ -50,7 +51,7 @@ RhsTiming time_right_hand_side(const ScalingScene& s, double seconds) {
   std::vector<double> per_call;
   for (int batch = 0; batch < 5; ++batch) {
     const auto start = Clock::now();
-    for (long k = 0; k < calls; ++k) dynamics.rhs(0, y.data(), ydot.data());
+    for (long k = 0; k < calls; ++k) dynamics.rhs(0, y[k].data(), ydot.data());
     per_call.push_back(std::chrono::duration<double>(Clock::now() - start).count() / calls);
   }
   std::sort(per_call.begin(), per_call.end());
