@@ -278,8 +278,10 @@ Eigen::AlignedBox3f GuiApp::swept_bounds() const {
 
 void GuiApp::draw_viewport_texture() {
   const int w = std::max(16, state_.viewport_width), h = std::max(16, state_.viewport_height);
-  if (!viewport_ || viewport_->width() != w || viewport_->height() != h)
+  if (!viewport_ || viewport_->width() != w || viewport_->height() != h) {
     viewport_ = std::make_unique<render::Framebuffer>(w, h);
+    viewport_drawn_ = false;
+  }
   // Frame the whole motion until the first run is done (or after "reset").
   if (!state_.camera_fitted) {
     const bool orthographic = state_.camera.orthographic;
@@ -288,6 +290,18 @@ void GuiApp::draw_viewport_texture() {
     state_.camera_name = "iso";
     state_.camera_fitted = !state_.progress.running && state_.generation >= state_.requested_generation;
   }
+  // Redrawn only when what it shows changed: while a run computes, a
+  // software renderer would otherwise spend a core redrawing a still view.
+  const render::Camera& c = state_.camera;
+  const Trajectory& tr = state_.trajectory;
+  const bool past_computed = tr.empty() || state_.play_time > tr.t_end();
+  const ViewportKey key{view_.get(), w, h, state_.generation,
+                        past_computed ? static_cast<long>(tr.samples.size()) : -1L, state_.play_time,
+                        {c.target.x(), c.target.y(), c.target.z(), c.azimuth_deg, c.elevation_deg, c.distance,
+                         c.fov_deg, c.orthographic ? 1.0f : 0.0f}};
+  if (key == viewport_key_ && viewport_drawn_) return;
+  viewport_key_ = key;
+  viewport_drawn_ = true;
   std::vector<Pose> poses;
   current_poses(poses);
   viewport_->bind();

@@ -4,6 +4,7 @@
 // requests into new runs.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -97,6 +98,21 @@ class GuiApp : private ScriptTarget {
   std::unique_ptr<render::Framebuffer> plots_;
   std::unique_ptr<render::ImGuiLayer> plots_layer_;
   std::vector<render::PlotFrame> plot_frames_;
+  // What the 3D view was last drawn for: view, size, run, samples (when the
+  // play-head is past them), play-head, camera.
+  struct ViewportKey {
+    const render::SceneView* view = nullptr;
+    int w = 0, h = 0;
+    long generation = 0, samples = 0;
+    double play_time = 0;
+    std::array<float, 8> camera{};
+    bool operator==(const ViewportKey& o) const {
+      return view == o.view && w == o.w && h == o.h && generation == o.generation && samples == o.samples &&
+             play_time == o.play_time && camera == o.camera;
+    }
+  };
+  ViewportKey viewport_key_;
+  bool viewport_drawn_ = false;
   using PlotsKey = std::tuple<long, std::size_t, std::size_t, int, int, int, long>;
   PlotsKey plots_key_{};
   double plots_drawn_at_ = 0;
