@@ -282,13 +282,16 @@ void GuiApp::draw_viewport_texture() {
     viewport_ = std::make_unique<render::Framebuffer>(w, h);
     viewport_drawn_ = false;
   }
-  // Frame the whole motion until the first run is done (or after "reset").
-  if (!state_.camera_fitted) {
+  // Frame the whole motion until the first run is done (or after "reset"),
+  // twice a second while it streams in: each refit redraws the view.
+  const bool run_done = !state_.progress.running && state_.generation >= state_.requested_generation;
+  if (!state_.camera_fitted && (run_done || now_seconds() - camera_fitted_at_ >= 0.5)) {
+    camera_fitted_at_ = now_seconds();
     const bool orthographic = state_.camera.orthographic;
     state_.camera = *render::camera_preset("iso", swept_bounds(), float(w) / h);
     state_.camera.orthographic = orthographic;
     state_.camera_name = "iso";
-    state_.camera_fitted = !state_.progress.running && state_.generation >= state_.requested_generation;
+    state_.camera_fitted = run_done;
   }
   // Redrawn only when what it shows changed: while a run computes, a
   // software renderer would otherwise spend a core redrawing a still view.
