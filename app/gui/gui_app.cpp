@@ -177,8 +177,7 @@ void GuiApp::keep_comparable_pins(const SceneShape& previous) {
 }
 
 void GuiApp::pin_current_run(const std::string& name) {
-  if (state_.progress.running || state_.generation < state_.requested_generation || !state_.progress.summary ||
-      state_.trajectory.empty()) {
+  if (!state_.run_pinnable()) {
     state_.notice = "not pinned: the run has not finished";
     return;
   }
@@ -284,7 +283,7 @@ void GuiApp::draw_viewport_texture() {
   }
   // Frame the whole motion until the first run is done (or after "reset"),
   // twice a second while it streams in: each refit redraws the view.
-  const bool run_done = !state_.progress.running && state_.generation >= state_.requested_generation;
+  const bool run_done = state_.run_settled();
   if (!state_.camera_fitted && (run_done || now_seconds() - camera_fitted_at_ >= 0.5)) {
     camera_fitted_at_ = now_seconds();
     const bool orthographic = state_.camera.orthographic;
@@ -342,8 +341,7 @@ void GuiApp::draw_plots_texture() {
   }
   plots_layer_->end_frame();
   plots_->resolve();
-  const bool whole_run = !state_.progress.running && state_.generation >= state_.requested_generation;
-  if (whole_run && state_.edited_at > state_.curves_at) state_.curves_at = now_seconds();
+  if (state_.run_settled() && state_.edited_at > state_.curves_at) state_.curves_at = now_seconds();
 }
 
 void GuiApp::keyboard_shortcuts(Requests& requests) {
@@ -615,7 +613,7 @@ void GuiApp::record_frame_time(double seconds) {
 }
 
 bool GuiApp::busy() const {
-  return state_.playing || state_.progress.running || state_.generation < state_.requested_generation ||
+  return state_.playing || !state_.run_settled() ||
          export_job_ || (!script_.finished() && !script_.idling()) || ImGui::GetIO().WantTextInput;
 }
 

@@ -107,7 +107,7 @@ void toolbar_panel(GuiState& state, Requests& requests) {
     ImGui::TextDisabled("%s of study %s", state.study->shown.c_str(), state.study->study_path.c_str());
   else
     ImGui::TextDisabled("%s", state.scene.source.c_str());
-  if (state.progress.running || state.generation < state.requested_generation) {
+  if (!state.run_settled()) {
     ImGui::SameLine();
     const float pulse = 0.6f + 0.4f * std::sin(static_cast<float>(ImGui::GetTime()) * 6);
     ImGui::TextColored(ImVec4(1.0f, 0.75f * pulse, 0.2f, 1), "re-simulating...");

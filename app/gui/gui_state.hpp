@@ -151,6 +151,12 @@ struct GuiState {
 
   ExportForm export_form;
   ExportProgress export_progress;
+
+  // The last requested run has run to its end (finished or failed): it is
+  // neither computing nor waiting for the simulation thread to take it.
+  bool run_settled() const { return !progress.running && generation >= requested_generation; }
+  // ... and has a result to keep: what "Pin this run" needs.
+  bool run_pinnable() const { return run_settled() && progress.summary && !trajectory.empty(); }
   std::string notice;  // the last file saved, or error
 };
 

@@ -12,11 +12,6 @@ namespace unfurl::app {
 
 namespace {
 
-bool run_finished(const GuiState& state) {
-  return !state.progress.running && state.generation >= state.requested_generation && state.progress.summary &&
-         !state.trajectory.empty();
-}
-
 // A name that says what the run was: its edits, or the file's values.
 std::string default_pin_name(const GuiState& state) {
   std::string name = state.study && !state.study->shown.empty() ? state.study->shown : "file values";
@@ -78,7 +73,7 @@ void difference_table(const GuiState& state) {
 }  // namespace
 
 void runs_panel(GuiState& state, Requests& requests) {
-  const bool finished = run_finished(state);
+  const bool finished = state.run_pinnable();
   // The name field offers a name for each new run; what is typed stays
   // until the run changes.
   if (const std::string offered = default_pin_name(state); offered != state.pin_name_offered) {

@@ -31,7 +31,7 @@ void ScriptRunner::step(ScriptTarget& target, double now) {
       state.idle_frames = state.frames - idle_frames_start_;
       idle_until_ = 0;
     } else if (c.name == "wait_run") {
-      if (state.progress.running || state.generation < state.requested_generation) return;
+      if (!state.run_settled()) return;
     } else if (c.name == "wait_export") {
       if (target.exporting()) return;
     } else if (c.name == "cancel_export") {

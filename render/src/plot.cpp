@@ -182,7 +182,6 @@ void draw_legend(ImDrawList* draw, const PlotFrame& f, const PlotSpec& spec, con
     bool dot = false;  // a scatter's series: a dot, not a line
   };
   std::vector<Entry> entries, runs;
-  bool unnamed_ghost = false;
   for (const Series& s : spec.series) {
     if (!s.ghost) {
       entries.push_back({s.label, s.color, s.dashed, !s.lines});
@@ -191,9 +190,8 @@ void draw_legend(ImDrawList* draw, const PlotFrame& f, const PlotSpec& spec, con
     // One entry per other run; the unnamed ones (the previous run, the
     // other cases) share the spec's ghost label.
     const std::string label = s.run.empty() ? spec.ghost_label : s.run;
-    if (label.empty() || (s.run.empty() && unnamed_ghost)) continue;
-    if (std::any_of(runs.begin(), runs.end(), [&](const Entry& e) { return e.label == label; })) continue;
-    unnamed_ghost = unnamed_ghost || s.run.empty();
+    if (label.empty() || std::any_of(runs.begin(), runs.end(), [&](const Entry& e) { return e.label == label; }))
+      continue;
     const ImU32 color = ghost_color(s.color);
     runs.push_back({label, (color >> IM_COL32_A_SHIFT) < 0x90 ? (color & 0x00FFFFFF) | 0x90000000 : color, false,
                     !s.lines});
