@@ -27,12 +27,13 @@ namespace {
 
 using SparseMatrix = Eigen::SparseMatrix<double>;
 
-// The joint's 6 - n constrained directions: an orthonormal complement of A.
-Eigen::Matrix<double, 6, Eigen::Dynamic> constrained_directions(const Vec6& A, int dof) {
+// The joint's 6 - n constrained directions: an orthonormal complement of
+// the n columns of A.
+Eigen::Matrix<double, 6, Eigen::Dynamic> constrained_directions(const Mat6& A, int dof) {
   if (dof == 0) return Mat6::Identity();
-  const Eigen::HouseholderQR<Vec6> qr(A);
+  const Eigen::HouseholderQR<Eigen::Matrix<double, 6, Eigen::Dynamic>> qr(A.leftCols(dof));
   const Mat6 Q = qr.householderQ();
-  return Q.rightCols<5>();
+  return Q.rightCols(6 - dof);
 }
 
 // C_i of (1) as a matrix: v_child = C v_parent.
@@ -55,7 +56,7 @@ class SparseClosureSolver : public ClosureSolver {
     joint_row_.resize(N);
     N_.resize(N);
     for (int i = 0; i < N; ++i) {
-      N_[i] = constrained_directions(model.joints[i].motion_axis(), model.joints[i].dof());
+      N_[i] = constrained_directions(model.joints[i].motion_axes(), model.joints[i].dof());
       joint_row_[i] = rows;
       rows += static_cast<int>(N_[i].cols());
     }

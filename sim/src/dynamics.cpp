@@ -28,10 +28,12 @@ Dynamics::Dynamics(const Scene& scene)
       poses_(scene_.model.size()),
       bias_(scene_.model.size()),
       a_(scene_.model.size()),
-      Q_(scene_.model.nq),
-      Q_joint_(scene_.model.nq),
-      ddq_(scene_.model.nq) {
+      Q_(scene_.model.nv),
+      Q_joint_(scene_.model.nv),
+      ddq_(scene_.model.nv),
+      w_(scene_.model.nv) {
   layout_.nq = scene_.model.nq;
+  layout_.nv = scene_.model.nv;
   if (!scene_.loops.empty()) {
     auto components = active_loop_components(scene_.model, scene_.loops, scene_.q0, sweep_);
     layout_.m = static_cast<int>(components.size());
@@ -65,8 +67,8 @@ std::vector<double> Dynamics::initial_state() {
     for (int i = 0; i < model.size(); ++i) {
       const int k = model.parent[i];
       v_[i] = sweep_.placement(i).transform_velocity(k == kBase ? model.base_velocity : v_[k]);
-      const int c = model.coordinate[i];
-      if (c >= 0) v_[i] += sweep_.motion_axis(i) * scene_.dq0[c];
+      for (int r = 0; r < model.joints[i].dof(); ++r)
+        v_[i] += sweep_.motion_axes(i).col(r) * scene_.dq0[model.velocity[i] + r];
       F_[i] = model.bodies[i].spatial_mass() * v_[i];
     }
     sweep_.generalized_forces(F_, y.data() + layout_.p());
@@ -89,6 +91,15 @@ void Dynamics::joint_torques(const double* q, const double* dq, double* Q) const
   }
 }
 
+void Dynamics::position_rates(const double* q, const double* w, double* dq) const {
+  const Model& model = scene_.model;
+  std::copy_n(w, model.scalar_coordinates, dq);
+  if (!model.has_multi_dof_joints()) return;
+  for (int i = 0; i < model.size(); ++i)
+    if (model.joints[i].dof() > 1)
+      model.joints[i].position_rates(q + model.coordinate[i], w + model.velocity[i], dq + model.coordinate[i]);
+}
+
 void Dynamics::add_point_springs() {
   for (const PointSpring& s : scene_.point_springs) {
     const PointSpringGeometry g = point_spring_geometry(s, poses_, v_, scene_.model.base_velocity);
@@ -103,7 +114,11 @@ double Dynamics::dissipation(const double* q, const double* dq) {
     // The rate of a length is the same seen from the base at rest.
     sweep_.set_configuration(q);
     sweep_.poses(poses_);
-    sweep_.velocities_from_rates(dq, v_);
+    std::copy_n(dq, model.scalar_coordinates, w_.begin());
+    for (int i = 0; i < model.size(); ++i)
+      if (model.joints[i].dof() > 1)
+        model.joints[i].rates(q + model.coordinate[i], dq + model.coordinate[i], w_.data() + model.velocity[i]);
+    sweep_.velocities_from_rates(w_.data(), v_);
     for (const PointSpring& s : scene_.point_springs) {
       const PointSpringGeometry g = point_spring_geometry(s, poses_, v_, Vec6::Zero());
       P += (s.tension(g.length, g.rate) - s.elastic(g.length)) * g.rate;
@@ -138,21 +153,23 @@ bool Dynamics::evaluate(double, const double* y, double* ydot) {
 
   sweep_.set_configuration(q);
   sweep_.bias(p, phi_);
-  sweep_.velocities(p, phi_, model.base_velocity, dq, v_);
+  sweep_.velocities(p, phi_, model.base_velocity, w_.data(), v_);
   sweep_.momenta(v_, phi_, mu_);
+  position_rates(q, w_.data(), dq);
+  const double* w = w_.data();
 
   for (Vec6& f : F_) f.setZero();
   if (loads_need_poses_ || regulator_) sweep_.poses(poses_);
   add_body_loads(model, scene_.loads, poses_, F_);
   add_point_springs();
   std::fill(Q_joint_.begin(), Q_joint_.end(), 0.0);
-  joint_torques(q, dq, Q_joint_.data());
+  joint_torques(q, w, Q_joint_.data());
   if (regulator_) {
     regulator_->gap(poses_, g_.data());
     regulator_->residual_rate(v_, g_dot_.data());
     if (regulator_->uses_feedforward()) {
       // d = eps a under every force but the loops'.
-      sweep_.accelerations(v_, dq, F_, Q_joint_.data(), bias_, a_, ddq_.data());
+      sweep_.accelerations(v_, w, F_, Q_joint_.data(), bias_, a_, ddq_.data());
       regulator_->residual_rate(a_, d_.data());
     }
     if (!regulator_->control(sweep_, g_.data(), y + L.u(), g_dot_.data(), d_.data(), lambda_.data(), ydot + L.u()))
@@ -161,7 +178,7 @@ bool Dynamics::evaluate(double, const double* y, double* ydot) {
   }
   sweep_.generalized_forces(F_, Q_.data());
   sweep_.gyroscopic(v_, mu_, dp);
-  for (int c = 0; c < L.nq; ++c) dp[c] += Q_[c] + Q_joint_[c];
+  for (int c = 0; c < L.nv; ++c) dp[c] += Q_[c] + Q_joint_[c];
 
   for (int k = 0; k < L.size(); ++k)
     if (!std::isfinite(ydot[k])) return false;
@@ -178,7 +195,7 @@ void Dynamics::loads(double t, const double* y, Loads& out, std::vector<ClosureE
   const StateLayout& L = layout_;
   evaluate(t, y, ydot_.data());
   const double* q = y + L.q();
-  const double* dq = ydot_.data() + L.q();
+  const double* dq = w_.data();  // the rates (a one-coordinate joint's q')
   out.joints.assign(model.size(), JointLoad{});
   for (const JointSpring& s : scene_.springs) {
     const int c = model.coordinate[s.joint];
@@ -225,6 +242,7 @@ void Dynamics::observe(double t, const double* y, Observation& out) {
   const StateLayout& L = layout_;
   loads(t, y, out.loads);
   out.dq.assign(ydot_.begin() + L.q(), ydot_.begin() + L.q() + L.nq);
+  out.rates = w_;
   out.velocity = v_;
   body_poses(model, y + L.q(), out.poses);
 

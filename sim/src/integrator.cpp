@@ -26,10 +26,8 @@ SolverStats& SolverStats::operator+=(const SolverStats& segment) {
 
 std::vector<double> absolute_tolerances(const StateLayout& layout, double atol) {
   std::vector<double> tol(layout.size());
-  for (int k = 0; k < layout.nq; ++k) {
-    tol[layout.q() + k] = atol;
-    tol[layout.p() + k] = 100 * atol;
-  }
+  for (int k = 0; k < layout.nq; ++k) tol[layout.q() + k] = atol;
+  for (int k = 0; k < layout.nv; ++k) tol[layout.p() + k] = 100 * atol;
   for (int k = 0; k < layout.m; ++k) tol[layout.u() + k] = atol;
   return tol;
 }

@@ -7,43 +7,174 @@ const char* joint_type_name(JointType type) {
     case JointType::revolute: return "revolute";
     case JointType::prismatic: return "prismatic";
     case JointType::fixed: return "fixed";
+    case JointType::spherical: return "spherical";
+    case JointType::planar: return "planar";
+    case JointType::free: return "free";
   }
   return "?";
 }
 
-Placement Joint::placement(double q) const {
+int Joint::dof() const {
+  switch (type) {
+    case JointType::revolute:
+    case JointType::prismatic: return 1;
+    case JointType::fixed: return 0;
+    case JointType::spherical:
+    case JointType::planar: return 3;
+    case JointType::free: return 6;
+  }
+  return 0;
+}
+
+int Joint::positions() const {
+  switch (type) {
+    case JointType::spherical: return 4;
+    case JointType::free: return 7;
+    default: return dof();
+  }
+}
+
+Mat3 quaternion_rotation(const double* q) {
+  return Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized().toRotationMatrix();
+}
+
+Placement Joint::placement(const double* q) const {
   Placement P;
   switch (type) {
     case JointType::revolute:
       // The child turns by q about the axis: G = R(axis, q)^T.
-      P.G = Eigen::AngleAxisd(q, axis).toRotationMatrix().transpose();
+      P.G = Eigen::AngleAxisd(q[0], axis).toRotationMatrix().transpose();
       P.rho = parent_point - P.G.transpose() * child_point;
       break;
     case JointType::prismatic:
-      P.rho = parent_point - child_point + axis * q;
+      P.rho = parent_point - child_point + axis * q[0];
       break;
     case JointType::fixed:
       P.rho = parent_point - child_point;
+      break;
+    case JointType::spherical:
+      P.G = quaternion_rotation(q).transpose();
+      P.rho = parent_point - P.G.transpose() * child_point;
+      break;
+    case JointType::planar:
+      P.G = Eigen::AngleAxisd(q[2], axis).toRotationMatrix().transpose();
+      P.rho = parent_point + q[0] * plane_axis_1() + q[1] * plane_axis_2() - P.G.transpose() * child_point;
+      break;
+    case JointType::free:
+      P.G = quaternion_rotation(q + 3).transpose();
+      P.rho = parent_point + Vec3(q[0], q[1], q[2]) - P.G.transpose() * child_point;
       break;
   }
   return P;
 }
 
-Vec6 Joint::motion_axis() const {
-  Vec6 A = Vec6::Zero();
+Mat6 Joint::motion_axes() const {
+  // A rotation w about the joint point moves the child origin by
+  // -w x r^i = r^i x w; a translation moves it by itself.
+  Mat6 A = Mat6::Zero();
   switch (type) {
     case JointType::revolute:
-      // G R~ R^T = axis~, so a^v = -axis x r^i and a^w = axis.
-      A.head<3>() = child_point.cross(axis);
-      A.tail<3>() = axis;
+      A.col(0).head<3>() = child_point.cross(axis);
+      A.col(0).tail<3>() = axis;
       break;
     case JointType::prismatic:
-      A.head<3>() = axis;
+      A.col(0).head<3>() = axis;
       break;
     case JointType::fixed:
       break;
+    case JointType::spherical:
+      A.block<3, 3>(0, 0) = skew(child_point);
+      A.block<3, 3>(3, 0).setIdentity();
+      break;
+    case JointType::planar:
+      // The child's in-plane velocity in its own frame (its frame turns
+      // about the normal only, so e1 and e2 stay in the plane).
+      A.col(0).head<3>() = plane_axis_1();
+      A.col(1).head<3>() = plane_axis_2();
+      A.col(2).head<3>() = child_point.cross(axis);
+      A.col(2).tail<3>() = axis;
+      break;
+    case JointType::free:
+      A.block<3, 3>(0, 0).setIdentity();
+      A.block<3, 3>(0, 3) = skew(child_point);
+      A.block<3, 3>(3, 3).setIdentity();
+      break;
   }
   return A;
+}
+
+namespace {
+
+// q' = q (x) (0, w) / 2 for a body-frame rate w.
+void quaternion_rate(const double* q, const double* w, double* dq) {
+  dq[0] = 0.5 * (-q[1] * w[0] - q[2] * w[1] - q[3] * w[2]);
+  dq[1] = 0.5 * (q[0] * w[0] + q[2] * w[2] - q[3] * w[1]);
+  dq[2] = 0.5 * (q[0] * w[1] + q[3] * w[0] - q[1] * w[2]);
+  dq[3] = 0.5 * (q[0] * w[2] + q[1] * w[1] - q[2] * w[0]);
+}
+
+}  // namespace
+
+void Joint::position_rates(const double* q, const double* w, double* dq) const {
+  switch (type) {
+    case JointType::revolute:
+    case JointType::prismatic: dq[0] = w[0]; break;
+    case JointType::fixed: break;
+    case JointType::spherical: quaternion_rate(q, w, dq); break;
+    case JointType::planar: {
+      // x' = R (u1 e1 + u2 e2), R turning by q[2] in the plane.
+      const double c = std::cos(q[2]), s = std::sin(q[2]);
+      dq[0] = c * w[0] - s * w[1];
+      dq[1] = s * w[0] + c * w[1];
+      dq[2] = w[2];
+      break;
+    }
+    case JointType::free: {
+      const Vec3 x_dot = quaternion_rotation(q + 3) * Vec3(w[0], w[1], w[2]);
+      for (int k = 0; k < 3; ++k) dq[k] = x_dot[k];
+      quaternion_rate(q + 3, w + 3, dq + 3);
+      break;
+    }
+  }
+}
+
+namespace {
+
+// w = 2 vec(conj(q) (x) q') / |q|^2, the body-frame rate of q'.
+void quaternion_to_rate(const double* q, const double* dq, double* w) {
+  const double n2 = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
+  w[0] = 2 * (q[0] * dq[1] - q[1] * dq[0] - q[2] * dq[3] + q[3] * dq[2]) / n2;
+  w[1] = 2 * (q[0] * dq[2] - q[2] * dq[0] - q[3] * dq[1] + q[1] * dq[3]) / n2;
+  w[2] = 2 * (q[0] * dq[3] - q[3] * dq[0] - q[1] * dq[2] + q[2] * dq[1]) / n2;
+}
+
+}  // namespace
+
+void Joint::rates(const double* q, const double* dq, double* w) const {
+  switch (type) {
+    case JointType::revolute:
+    case JointType::prismatic: w[0] = dq[0]; break;
+    case JointType::fixed: break;
+    case JointType::spherical: quaternion_to_rate(q, dq, w); break;
+    case JointType::planar: {
+      const double c = std::cos(q[2]), s = std::sin(q[2]);
+      w[0] = c * dq[0] + s * dq[1];
+      w[1] = -s * dq[0] + c * dq[1];
+      w[2] = dq[2];
+      break;
+    }
+    case JointType::free: {
+      const Vec3 u = quaternion_rotation(q + 3).transpose() * Vec3(dq[0], dq[1], dq[2]);
+      for (int k = 0; k < 3; ++k) w[k] = u[k];
+      quaternion_to_rate(q + 3, dq + 3, w + 3);
+      break;
+    }
+  }
+}
+
+void Joint::neutral_positions(double* q) const {
+  for (int k = 0; k < positions(); ++k) q[k] = 0;
+  if (has_quaternion()) q[quaternion_offset()] = 1;
 }
 
 }  // namespace unfurl

@@ -7,7 +7,7 @@ void body_poses(const Model& model, const double* q, std::vector<Pose>& poses) {
   for (int i = 0; i < model.size(); ++i) {
     const int c = model.coordinate[i];
     const int k = model.parent[i];
-    poses[i] = (k == kBase ? Pose{} : poses[k]).child(model.joints[i].placement(c >= 0 ? q[c] : 0.0));
+    poses[i] = (k == kBase ? Pose{} : poses[k]).child(model.joints[i].placement(c >= 0 ? q + c : nullptr));
   }
 }
 

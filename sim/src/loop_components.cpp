@@ -21,7 +21,7 @@ std::vector<LoopComponent> active_loop_components(const Model& model, const std:
   // backward force pass per component.
   std::vector<double> row_norm(6 * L, 0.0);
   std::vector<Vec6> F(N);
-  std::vector<double> x(model.nq);
+  std::vector<double> x(model.nv);
   for (const auto& q : samples) {
     sweep.set_configuration(q.data());
     for (int l = 0; l < L; ++l) {

@@ -12,13 +12,13 @@ Mobility::Mobility(const Model& model, const std::vector<Loop>& loops, const std
       F_(model.size()),
       phi_(model.size()),
       v_(model.size()),
-      x_(model.nq),
-      dq_(model.nq) {
+      x_(model.nv),
+      dq_(model.nv) {
   if (size() > kMaxDenseComponents) return;
   W_.resize(size(), size());
   for (auto* blocks : {&loads_, &phi_m_, &v_m_}) blocks->assign(model.size(), Spatial::Zero(6, size()));
-  x_m_.resize(model.nq, size());
-  dq_m_.resize(model.nq, size());
+  x_m_.resize(model.nv, size());
+  dq_m_.resize(model.nv, size());
 }
 
 void Mobility::product(const Sweep& sweep, const double* x, double* Wx) {

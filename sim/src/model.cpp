@@ -14,18 +14,60 @@ void Model::finalize() {
     throw std::invalid_argument("model: bodies, joints and parents differ in number");
   children.assign(N, {});
   coordinate.assign(N, -1);
+  velocity.assign(N, -1);
   joint_of_coordinate.clear();
-  nq = 0;
+  joint_of_velocity.clear();
+  nq = nv = 0;
   for (int i = 0; i < N; ++i) {
     if (parent[i] != kBase && (parent[i] < 0 || parent[i] >= i))
       throw std::invalid_argument("model: numbering is not regular: body '" + bodies[i].name +
                                   "' comes before its parent");
     if (parent[i] != kBase) children[parent[i]].push_back(i);
-    if (joints[i].dof() == 1) {
-      coordinate[i] = nq++;
-      joint_of_coordinate.push_back(i);
-    }
   }
+  const auto place = [&](int i) {
+    coordinate[i] = nq;
+    velocity[i] = nv;
+    nq += joints[i].positions();
+    nv += joints[i].dof();
+    joint_of_coordinate.insert(joint_of_coordinate.end(), joints[i].positions(), i);
+    joint_of_velocity.insert(joint_of_velocity.end(), joints[i].dof(), i);
+  };
+  for (int i = 0; i < N; ++i)
+    if (joints[i].is_scalar()) place(i);
+  scalar_coordinates = nv;
+  for (int i = 0; i < N; ++i)
+    if (joints[i].dof() > 1) place(i);
+}
+
+namespace {
+
+const char* entry_name(JointType type, int k, bool position) {
+  static const char* const free_q[] = {"x", "y", "z", "qw", "qx", "qy", "qz"};
+  static const char* const free_v[] = {"vx", "vy", "vz", "wx", "wy", "wz"};
+  static const char* const ball_q[] = {"qw", "qx", "qy", "qz"};
+  static const char* const ball_v[] = {"wx", "wy", "wz"};
+  static const char* const planar_q[] = {"x1", "x2", "angle"};
+  static const char* const planar_v[] = {"v1", "v2", "w"};
+  switch (type) {
+    case JointType::free: return position ? free_q[k] : free_v[k];
+    case JointType::spherical: return position ? ball_q[k] : ball_v[k];
+    case JointType::planar: return position ? planar_q[k] : planar_v[k];
+    default: return "";
+  }
+}
+
+}  // namespace
+
+std::string Model::position_name(int c) const {
+  const int i = joint_of_coordinate[c];
+  if (joints[i].is_scalar()) return joints[i].name;
+  return joints[i].name + "." + entry_name(joints[i].type, c - coordinate[i], true);
+}
+
+std::string Model::velocity_name(int c) const {
+  const int i = joint_of_velocity[c];
+  if (joints[i].is_scalar()) return joints[i].name;
+  return joints[i].name + "." + entry_name(joints[i].type, c - velocity[i], false);
 }
 
 int Model::find_body(const std::string& name) const {

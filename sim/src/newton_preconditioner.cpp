@@ -10,13 +10,14 @@ namespace unfurl {
 NewtonPreconditioner::NewtonPreconditioner(Dynamics& dynamics)
     : dynamics_(dynamics),
       sweep_(dynamics.model()),
-      stiffness_(dynamics.model().nq),
-      damping_(dynamics.model().nq),
-      diagonal_(dynamics.model().nq),
-      r_(dynamics.model().nq),
-      x_(dynamics.model().nq),
-      rates_(dynamics.model().nq),
+      stiffness_(dynamics.model().nv),
+      damping_(dynamics.model().nv),
+      diagonal_(dynamics.model().nv),
+      r_(dynamics.model().nv),
+      x_(dynamics.model().nv),
+      rates_(dynamics.model().nv),
       g_dot_(dynamics.layout().m),
+      q_(dynamics.model().nq),
       phi_(dynamics.model().size()),
       v_(dynamics.model().size()) {}
 
@@ -46,8 +47,9 @@ void NewtonPreconditioner::setup(const double* y, const double* ydot, double gam
     stiffness_[model.coordinate[latch.joint]] += latch.stiffness;
     damping_[model.coordinate[latch.joint]] += latch.damping;
   }
-  for (int c = 0; c < model.nq; ++c) diagonal_[c] = gamma * damping_[c] + gamma * gamma * stiffness_[c];
-  sweep_.set_configuration(y + dynamics_.layout().q(), diagonal_.data());
+  for (int c = 0; c < model.nv; ++c) diagonal_[c] = gamma * damping_[c] + gamma * gamma * stiffness_[c];
+  std::copy_n(q, model.nq, q_.begin());
+  sweep_.set_configuration(q, diagonal_.data());
 }
 
 void NewtonPreconditioner::solve(const double* r, double* z) {
@@ -58,21 +60,34 @@ void NewtonPreconditioner::solve(const double* r, double* z) {
   double* zq = z + L.q();
   double* zp = z + L.p();
   // (Mtilde + gamma D + gamma^2 K) x = rp - gamma K rq, then back-substitute.
-  for (int c = 0; c < L.nq; ++c) r_[c] = rp[c] - gamma * stiffness_[c] * rq[c];
-  Eigen::Map<const Eigen::VectorXd> r_map(r_.data(), L.nq);
-  Eigen::Map<Eigen::VectorXd> x_map(x_.data(), L.nq);
+  // Springs and latches act on one-coordinate joints only (the first n1
+  // entries of q and p alike); a ball or free joint's positions follow its
+  // rates through q' = N(q) w.
+  const Model& model = dynamics_.model();
+  const int n1 = model.scalar_coordinates;
+  for (int c = 0; c < L.nv; ++c) r_[c] = rp[c] - (c < n1 ? gamma * stiffness_[c] * rq[c] : 0.0);
+  Eigen::Map<const Eigen::VectorXd> r_map(r_.data(), L.nv);
+  Eigen::Map<Eigen::VectorXd> x_map(x_.data(), L.nv);
   sweep_.bias_pass(r_map, phi_);
   sweep_.velocity_pass(r_map, phi_, Vec6::Zero(), x_map, v_);
-  for (int c = 0; c < L.nq; ++c) {
+  for (int c = 0; c < n1; ++c) {
     zq[c] = rq[c] + gamma * x_[c];
     zp[c] = rp[c] - gamma * (stiffness_[c] * zq[c] + damping_[c] * x_[c]);
+  }
+  for (int i = 0; i < model.size(); ++i) {
+    const Joint& joint = model.joints[i];
+    if (joint.dof() < 2) continue;
+    const int cq = model.coordinate[i], cv = model.velocity[i];
+    joint.position_rates(q_.data() + cq, x_.data() + cv, zq + cq);
+    for (int k = 0; k < joint.positions(); ++k) zq[cq + k] = rq[cq + k] + gamma * zq[cq + k];
+    for (int k = 0; k < joint.dof(); ++k) zp[cv + k] = rp[cv + k];
   }
   Regulator* regulator = dynamics_.regulator();
   if (!regulator) return;
   const RegulatorSettings& s = regulator->settings();
   const double k_pi = s.k_pi(), k_v = s.k_v();  // (16)
   // J (k_pi zq + k_v x) by one kinematic pass: J is linear in the rates.
-  for (int c = 0; c < L.nq; ++c) rates_[c] = k_pi * zq[c] + k_v * x_[c];
+  for (int c = 0; c < L.nv; ++c) rates_[c] = (c < n1 ? k_pi * zq[c] : k_pi * gamma * x_[c]) + k_v * x_[c];
   sweep_.velocities_from_rates(rates_.data(), v_);
   regulator->residual_rate(v_, g_dot_.data());
   for (int c = 0; c < L.m; ++c) z[L.u() + c] = r[L.u() + c] + gamma * g_dot_[c];

@@ -38,10 +38,11 @@ class NewtonPreconditioner {
   Dynamics& dynamics_;
   Sweep sweep_;
   double gamma_ = 0;
-  std::vector<double> stiffness_, damping_, diagonal_;  // per coordinate
+  std::vector<double> stiffness_, damping_, diagonal_;  // per velocity coordinate
 
   // Scratch, sized once.
   std::vector<double> r_, x_, rates_, g_dot_;
+  std::vector<double> q_;  // the positions of the last setup
   std::vector<Vec6> phi_, v_;
 };
 

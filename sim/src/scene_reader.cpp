@@ -23,6 +23,19 @@ namespace {
 // Limits of what a scene may ask for (each error message names them).
 constexpr long kMostSteps = 1'000'000'000'000;
 constexpr double kLargestClosureTolerance = 0.05;
+constexpr const char* kInertialFrame = "inertial";
+
+// "x, y, z, qw, qx, qy, qz": the names of a joint's positions or rates.
+std::string entry_names(const Model& model, int joint, bool positions) {
+  std::string names;
+  const int from = positions ? model.coordinate[joint] : model.velocity[joint];
+  const int n = positions ? model.joints[joint].positions() : model.joints[joint].dof();
+  for (int k = 0; k < n; ++k) {
+    const std::string full = positions ? model.position_name(from + k) : model.velocity_name(from + k);
+    names += (k ? ", " : "") + full.substr(full.rfind('.') + 1);
+  }
+  return names;
+}
 
 // Whether one of two bodies is an ancestor of the other.
 bool on_one_branch(const Model& model, int a, int b) {
@@ -43,6 +56,7 @@ class SceneReader : private YamlFields {
  private:
   void read_base(const YAML::Node& node, Scene& scene);
   void read_body(const YAML::Node& node, int index, const YAML::Node& all, Scene& scene);
+  void read_mass_properties(const YAML::Node& node, const std::string& field, Body& b) const;
   Joint read_joint(const YAML::Node& node, const std::string& field) const;
   Visual read_visual(const YAML::Node& node, const std::string& field) const;
   void read_springs(const YAML::Node& list, Scene& scene) const;
@@ -95,9 +109,32 @@ Visual SceneReader::read_visual(const YAML::Node& node, const std::string& field
 }
 
 void SceneReader::read_base(const YAML::Node& node, Scene& scene) {
-  check_keys(node, {"name", "mesh", "velocity"}, "base");
+  check_keys(node, {"name", "mesh", "velocity", "free", "mass", "com", "inertia"}, "base");
   if (node["name"]) scene.model.base_name = name(node["name"], "base.name");
   if (node["mesh"]) visuals_.base = read_visual(node["mesh"], "base.mesh");
+  const bool free = node["free"] && flag(node["free"], "base.free");
+  if (!free) {
+    for (const char* key : {"mass", "com", "inertia"})
+      if (node[key]) fail(node[key], std::string("base.") + key, "only a free base (`free: true`) has mass properties");
+  } else {
+    // The bus becomes body 0 on a free joint in the inertial frame (which
+    // keeps the name "inertial"); the bodies name it as their parent as before.
+    if (node["velocity"]) fail(node["velocity"], "base.velocity", "a free base moves by itself: give no velocity");
+    Body bus;
+    bus.name = scene.model.base_name;
+    read_mass_properties(node, "base", bus);
+    Joint joint;
+    joint.name = bus.name;
+    joint.type = JointType::free;
+    scene.model.base_name = kInertialFrame;
+    joint_index_[joint.name] = 0;
+    scene.model.bodies.push_back(bus);
+    scene.model.joints.push_back(joint);
+    scene.model.parent.push_back(kBase);
+    visuals_.bodies.push_back(visuals_.base);
+    visuals_.base = Visual{};
+    return;
+  }
   if (const YAML::Node v = node["velocity"]) {
     const std::vector<double> x = numbers(v, "base.velocity");
     if (x.size() != 6) fail(v, "base.velocity", "expected 6 numbers (vx, vy, vz, wx, wy, wz)");
@@ -116,15 +153,22 @@ Joint SceneReader::read_joint(const YAML::Node& node, const std::string& field) 
     j.type = JointType::prismatic;
   else if (t == "fixed")
     j.type = JointType::fixed;
+  else if (t == "spherical")
+    j.type = JointType::spherical;
+  else if (t == "planar")
+    j.type = JointType::planar;
+  else if (t == "free")
+    j.type = JointType::free;
   else
-    fail(type, field + ".type", "unknown joint type '" + t + "' (expected revolute, prismatic or fixed)");
-  if (j.type != JointType::fixed) {
+    fail(type, field + ".type",
+         "unknown joint type '" + t + "' (expected revolute, prismatic, fixed, spherical, planar or free)");
+  if (j.type == JointType::revolute || j.type == JointType::prismatic || j.type == JointType::planar) {
     const YAML::Node axis = require(node, "axis", field);
     j.axis = vec3(axis, field + ".axis");
     if (j.axis.norm() < 1e-12) fail(axis, field + ".axis", "the joint axis has zero length");
     j.axis.normalize();
   } else if (node["axis"]) {
-    fail(node["axis"], field + ".axis", "a fixed joint has no axis");
+    fail(node["axis"], field + ".axis", std::string("a ") + joint_type_name(j.type) + " joint has no axis");
   }
   j.parent_point = vec3(require(node, "parent_point", field), field + ".parent_point");
   j.child_point = vec3(require(node, "child_point", field), field + ".child_point");
@@ -132,27 +176,8 @@ Joint SceneReader::read_joint(const YAML::Node& node, const std::string& field) 
   return j;
 }
 
-void SceneReader::read_body(const YAML::Node& node, int index, const YAML::Node& all, Scene& scene) {
-  std::string field = index_field("bodies", index);
-  check_keys(node, {"name", "parent", "mass", "com", "inertia", "mesh", "joint"}, field);
-  Body b;
-  b.name = name(require(node, "name", field), field + ".name");
-  field += " (" + b.name + ")";
-  Model& model = scene.model;
-  if (model.find_body(b.name) != -2) fail(node["name"], field, "a body named '" + b.name + "' already exists");
-
-  const YAML::Node parent = require(node, "parent", field);
-  const std::string parent_name = text(parent, field + ".parent");
-  const int k = model.find_body(parent_name);
-  if (k == -2) {
-    for (std::size_t later = index + 1; later < all.size(); ++later)
-      if (all[later].IsMap() && all[later]["name"] && all[later]["name"].Scalar() == parent_name)
-        fail(parent, field + ".parent",
-             "numbering is not regular: the parent '" + parent_name + "' is listed after its child (list " +
-                 "every body after its parent)");
-    fail(parent, field + ".parent", "unknown parent '" + parent_name + "'");
-  }
-
+// mass, com and inertia of a body (or of a free base), checked.
+void SceneReader::read_mass_properties(const YAML::Node& node, const std::string& field, Body& b) const {
   const YAML::Node mass = require(node, "mass", field);
   b.mass = number(mass, field + ".mass");
   if (b.mass < 0) fail(mass, field + ".mass", "negative mass " + mass.Scalar());
@@ -184,10 +209,38 @@ void SceneReader::read_body(const YAML::Node& node, int index, const YAML::Node&
     fail(inertia, field + ".inertia", s.str());
   }
 
+}
+
+void SceneReader::read_body(const YAML::Node& node, int index, const YAML::Node& all, Scene& scene) {
+  std::string field = index_field("bodies", index);
+  check_keys(node, {"name", "parent", "mass", "com", "inertia", "mesh", "joint"}, field);
+  Body b;
+  b.name = name(require(node, "name", field), field + ".name");
+  field += " (" + b.name + ")";
+  Model& model = scene.model;
+  if (model.find_body(b.name) != -2) fail(node["name"], field, "a body named '" + b.name + "' already exists");
+
+  const YAML::Node parent = require(node, "parent", field);
+  const std::string parent_name = text(parent, field + ".parent");
+  const int k = model.find_body(parent_name);
+  if (k == -2) {
+    for (std::size_t later = index + 1; later < all.size(); ++later)
+      if (all[later].IsMap() && all[later]["name"] && all[later]["name"].Scalar() == parent_name)
+        fail(parent, field + ".parent",
+             "numbering is not regular: the parent '" + parent_name + "' is listed after its child (list " +
+                 "every body after its parent)");
+    fail(parent, field + ".parent", "unknown parent '" + parent_name + "'");
+  }
+
+  read_mass_properties(node, field, b);
+
   Joint j = read_joint(require(node, "joint", field), field + ".joint");
   if (j.name.empty()) j.name = b.name;
   if (joint_index_.count(j.name)) fail(node["joint"], field + ".joint", "a joint named '" + j.name + "' already exists");
-  joint_index_[j.name] = index;
+  if (j.type == JointType::free)
+    fail(node["joint"]["type"], field + ".joint.type",
+         "a free joint is for a free-floating base only: give the base `free: true` and its mass properties");
+  joint_index_[j.name] = model.size();
 
   visuals_.bodies.push_back(node["mesh"] ? read_visual(node["mesh"], field + ".mesh") : Visual{});
   model.bodies.push_back(b);
@@ -200,8 +253,12 @@ int SceneReader::joint_by_name(const YAML::Node& node, const Scene& scene, const
   const std::string name = text(node, field);
   const auto it = joint_index_.find(name);
   if (it == joint_index_.end()) fail(node, field, "unknown joint '" + name + "'");
-  if (needs_coordinate && scene.model.joints[it->second].dof() == 0)
-    fail(node, field, "joint '" + name + "' is fixed: it has no coordinate");
+  const Joint& joint = scene.model.joints[it->second];
+  if (needs_coordinate && joint.dof() == 0) fail(node, field, "joint '" + name + "' is fixed: it has no coordinate");
+  if (needs_coordinate && !joint.is_scalar())
+    fail(node, field,
+         "joint '" + name + "' is " + joint_type_name(joint.type) +
+             ": springs, dampers, friction and latches act on revolute and prismatic joints");
   return it->second;
 }
 
@@ -427,10 +484,35 @@ void SceneReader::read_initial(const YAML::Node& node, Scene& scene) const {
     if (!map) return;
     const std::string field = std::string("initial.") + key;
     check_map(map, field);
-    out.assign(scene.model.nq, 0.0);
+    const bool positions = std::string(key) == "q";
+    const Model& model = scene.model;
+    if (!positions || out.empty()) out.assign(positions ? model.nq : model.nv, 0.0);
     for (const auto& item : map) {
-      const int j = joint_by_name(item.first, scene, field, true);
-      out[scene.model.coordinate[j]] = number(item.second, field + "." + item.first.Scalar());
+      const std::string entry = field + "." + item.first.Scalar();
+      const std::string joint_name = text(item.first, field);
+      const auto it = joint_index_.find(joint_name);
+      if (it == joint_index_.end()) fail(item.first, field, "unknown joint '" + joint_name + "'");
+      const int j = it->second;
+      const Joint& joint = model.joints[j];
+      if (joint.dof() == 0) fail(item.first, field, "joint '" + joint_name + "' is fixed: it has no coordinate");
+      double* x = out.data() + (positions ? model.coordinate[j] : model.velocity[j]);
+      if (joint.is_scalar()) {
+        x[0] = number(item.second, entry);
+        continue;
+      }
+      // A ball, planar or free joint: all its entries as a list.
+      const int n = positions ? joint.positions() : joint.dof();
+      const std::vector<double> values = numbers(item.second, entry);
+      if (static_cast<int>(values.size()) != n)
+        fail(item.second, entry,
+             "a " + std::string(joint_type_name(joint.type)) + " joint takes " + std::to_string(n) + " numbers here (" +
+                 entry_names(model, j, positions) + ")");
+      std::copy(values.begin(), values.end(), x);
+      if (positions && joint.has_quaternion()) {
+        Eigen::Map<Eigen::Vector4d> quaternion(x + joint.quaternion_offset());
+        if (quaternion.norm() < 1e-9) fail(item.second, entry, "the quaternion has zero length");
+        quaternion.normalize();
+      }
     }
   };
   read("q", scene.q0);
@@ -532,9 +614,11 @@ SceneFile SceneReader::read(const std::string& text_in, const std::vector<Overri
   if (root["loops"]) read_loops(root["loops"], scene);
   if (root["regulator"]) read_regulator(root["regulator"], scene);
   scene.q0.assign(scene.model.nq, 0.0);
-  scene.dq0.assign(scene.model.nq, 0.0);
+  for (int i = 0; i < scene.model.size(); ++i)
+    if (scene.model.joints[i].dof() > 1) scene.model.joints[i].neutral_positions(&scene.q0[scene.model.coordinate[i]]);
+  scene.dq0.assign(scene.model.nv, 0.0);
   if (root["initial"]) read_initial(root["initial"], scene);
-  if (scene.dq0.size() != static_cast<std::size_t>(scene.model.nq)) scene.dq0.assign(scene.model.nq, 0.0);
+  if (scene.dq0.size() != static_cast<std::size_t>(scene.model.nv)) scene.dq0.assign(scene.model.nv, 0.0);
   if (root["point_springs"]) read_point_springs(root["point_springs"], scene);
   if (root["closure_tolerance"]) {
     scene.closure_tolerance = positive(root["closure_tolerance"], "closure_tolerance");

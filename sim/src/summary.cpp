@@ -32,7 +32,7 @@ RunSummary summarize(const Scene& scene, const RunResult& result) {
     s.energy_dissipated = tr.samples.back().energy.dissipated;
     s.t_reached = tr.samples.back().t;
     for (int c = 0; c < model.nq; ++c)
-      s.final_q.emplace_back(model.joints[model.joint_of_coordinate[c]].name, tr.samples.back().y[tr.layout.q() + c]);
+      s.final_q.emplace_back(model.position_name(c), tr.samples.back().y[tr.layout.q() + c]);
   }
   return s;
 }

@@ -1,5 +1,6 @@
 #include "unfurl/sim/sweep.hpp"
 
+#include <Eigen/Cholesky>
 #include <algorithm>
 
 namespace unfurl {
@@ -12,11 +13,29 @@ Sweep::Sweep(const Model& model)
       M_star_(model.size()),
       M_star_A_(model.size()),
       D_(model.size(), 0.0),
+      multi_(model.size(), -1),
       q_(model.nq, 0.0) {
   for (int i = 0; i < model.size(); ++i) {
     A_[i] = model.joints[i].motion_axis();
     M_[i] = model.bodies[i].spatial_mass();
+    if (model.joints[i].dof() > 1) {
+      multi_[i] = static_cast<int>(multi_axes_.size());
+      multi_axes_.push_back({model.joints[i].motion_axes(), Mat6::Zero(), Mat6::Zero(), model.joints[i].dof()});
+    }
   }
+}
+
+// D_i = (A_i^T M*_i A_i + diag k)^-1 of order n_i by its Cholesky factor;
+// the padding is made the identity for the factorization and zero after.
+void Sweep::factor_multi_axis(int i, const double* joint_diagonal) {
+  MultiAxis& J = multi_axes_[multi_[i]];
+  const int c = model_.velocity[i];
+  J.M_star_A.noalias() = M_star_[i] * J.A;
+  Mat6 K = J.A.transpose() * J.M_star_A;
+  for (int r = 0; r < 6; ++r) K(r, r) += r < J.n ? (joint_diagonal ? joint_diagonal[c + r] : 0.0) : 1.0;
+  J.D = Eigen::LLT<Mat6>(K).solve(Mat6::Identity());
+  J.D.bottomRows(6 - J.n).setZero();
+  J.D.rightCols(6 - J.n).setZero();
 }
 
 void Sweep::set_configuration(const double* q, const double* joint_diagonal) {
@@ -27,12 +46,16 @@ void Sweep::set_configuration(const double* q, const double* joint_diagonal) {
   const int N = model_.size();
   for (int i = 0; i < N; ++i) {
     const int c = model_.coordinate[i];
-    X_[i] = model_.joints[i].placement(c >= 0 ? q[c] : 0.0);
+    X_[i] = model_.joints[i].placement(c >= 0 ? q + c : nullptr);
     M_star_[i] = M_[i];
   }
   for (int i = N - 1; i >= 0; --i) {
     Mat6 HM = M_star_[i];  // H_i M*_i
-    if (const int c = model_.coordinate[i]; c >= 0) {
+    if (multi_[i] >= 0) {
+      factor_multi_axis(i, joint_diagonal);
+      const MultiAxis& J = multi_axes_[multi_[i]];
+      HM.noalias() -= J.M_star_A * J.D * J.M_star_A.transpose();
+    } else if (const int c = model_.velocity[i]; c >= 0) {
       M_star_A_[i] = M_star_[i] * A_[i];
       D_[i] = 1.0 / (A_[i].dot(M_star_A_[i]) + (joint_diagonal ? joint_diagonal[c] : 0.0));
       HM.noalias() -= D_[i] * M_star_A_[i] * M_star_A_[i].transpose();
@@ -56,8 +79,17 @@ void Sweep::velocities_from_rates(const double* dq, std::vector<Vec6>& v) const 
       v[i].setZero();
     else
       v[i] = X_[i].transform_velocity(v[k]);
-    if (const int c = model_.coordinate[i]; c >= 0) v[i] += A_[i] * dq[c];
+    if (multi_[i] >= 0)
+      v[i] += multi_axes_[multi_[i]].A * rates_of(i, dq);
+    else if (const int c = model_.velocity[i]; c >= 0)
+      v[i] += A_[i] * dq[c];
   }
+}
+
+Vec6 Sweep::rates_of(int i, const double* x) const {
+  Vec6 w = Vec6::Zero();
+  for (int r = 0; r < model_.joints[i].dof(); ++r) w[r] = x[model_.velocity[i] + r];
+  return w;
 }
 
 void Sweep::accelerations(const std::vector<Vec6>& v, const double* dq, const std::vector<Vec6>& F, const double* Q,
@@ -68,9 +100,14 @@ void Sweep::accelerations(const std::vector<Vec6>& v, const double* dq, const st
   // dq_i) and ddq the joint's unbalanced force u_i = Q_i - A_i^T p^A_i until
   // the forward pass.
   for (int i = N - 1; i >= 0; --i) {
-    const int c = model_.coordinate[i];
+    const int c = model_.velocity[i];
     a[i].setZero();
-    if (c >= 0) {
+    if (multi_[i] >= 0) {
+      const MultiAxis& J = multi_axes_[multi_[i]];
+      a[i] = motion_cross(v[i], J.A * rates_of(i, dq));
+      const Vec6 u = rates_of(i, Q) - J.A.transpose() * bias[i];
+      for (int r = 0; r < J.n; ++r) ddq[c + r] = u[r];
+    } else if (c >= 0) {
       a[i] = motion_cross(v[i], A_[i] * dq[c]);
       ddq[c] = Q[c] - A_[i].dot(bias[i]);
     }
@@ -78,13 +115,24 @@ void Sweep::accelerations(const std::vector<Vec6>& v, const double* dq, const st
     if (k == kBase) continue;
     // p^a = p^A + I^a c + M*A D u with I^a = H_i M*_i = M* - M*A D (M*A)^T.
     Vec6 carried = bias[i] + M_star_[i] * a[i];
-    if (c >= 0) carried += M_star_A_[i] * (D_[i] * (ddq[c] - M_star_A_[i].dot(a[i])));
+    if (multi_[i] >= 0) {
+      const MultiAxis& J = multi_axes_[multi_[i]];
+      carried += J.M_star_A * (J.D * (rates_of(i, ddq) - J.M_star_A.transpose() * a[i]));
+    } else if (c >= 0) {
+      carried += M_star_A_[i] * (D_[i] * (ddq[c] - M_star_A_[i].dot(a[i])));
+    }
     bias[k] += X_[i].transform_force(carried);
   }
   for (int i = 0; i < N; ++i) {
     const int k = model_.parent[i];
     if (k != kBase) a[i] += X_[i].transform_velocity(a[k]);
-    if (const int c = model_.coordinate[i]; c >= 0) {
+    const int c = model_.velocity[i];
+    if (multi_[i] >= 0) {
+      const MultiAxis& J = multi_axes_[multi_[i]];
+      const Vec6 ddq_i = J.D * (rates_of(i, ddq) - J.M_star_A.transpose() * a[i]);
+      for (int r = 0; r < J.n; ++r) ddq[c + r] = ddq_i[r];
+      a[i] += J.A * ddq_i;
+    } else if (c >= 0) {
       ddq[c] = D_[i] * (ddq[c] - M_star_A_[i].dot(a[i]));
       a[i] += A_[i] * ddq[c];
     }
@@ -97,8 +145,13 @@ void Sweep::momenta(const std::vector<Vec6>& v, const std::vector<Vec6>& phi, st
 
 void Sweep::gyroscopic(const std::vector<Vec6>& v, const std::vector<Vec6>& mu, double* dp) const {
   for (int i = 0; i < model_.size(); ++i) {
-    const int c = model_.coordinate[i];
-    if (c >= 0) dp[c] = -A_[i].dot(omega_times(v[i], mu[i]));
+    const int c = model_.velocity[i];
+    if (multi_[i] >= 0) {
+      const Vec6 dp_i = -multi_axes_[multi_[i]].A.transpose() * omega_times(v[i], mu[i]);
+      for (int r = 0; r < model_.joints[i].dof(); ++r) dp[c + r] = dp_i[r];
+    } else if (c >= 0) {
+      dp[c] = -A_[i].dot(omega_times(v[i], mu[i]));
+    }
   }
 }
 

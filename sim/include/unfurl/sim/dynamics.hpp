@@ -1,7 +1,7 @@
 // The equations of motion of a scene as a first-order system for the
 // integrators: the state is (q, p) for a tree and (q, p, u) for a scene with
 // loops, u the regulator's state on the active loop components:
-//   q' = the sweep's dq(q, p)                      (6)
+//   q' = N(q) w, w the sweep's rates (6)            (N = I but for quaternions)
 //   p' = -A^T Omega mu + A^T T^T (F - eps^T lambda) + Q_joint   (12)
 //   u' = k_pi g(q) + k_v eps v                     (13)
 // with g(q) the loops' true geometric gap (regulator.hpp). rhs() allocates
@@ -25,7 +25,8 @@ class NewtonPreconditioner;
 
 // Everything derived from a state at one instant.
 struct Observation {
-  std::vector<double> dq;
+  std::vector<double> dq;              // q'
+  std::vector<double> rates;           // the velocity coordinates (q' of one-coordinate joints)
   std::vector<Vec6> velocity;          // v_i, body frames
   std::vector<Pose> poses;
   std::vector<ClosureError> closure;   // per loop
@@ -78,6 +79,8 @@ class Dynamics {
  private:
   bool evaluate(double t, const double* y, double* ydot);
   void joint_torques(const double* q, const double* dq, double* Q) const;
+  // q' from the rates w (Joint::position_rates).
+  void position_rates(const double* q, const double* w, double* dq) const;
   // Adds the point springs' pulls to F_ (needs poses_ and v_).
   void add_point_springs();
 
@@ -94,7 +97,7 @@ class Dynamics {
   std::vector<Vec6> phi_, v_, mu_, F_;
   std::vector<Pose> poses_;
   std::vector<Vec6> bias_, a_;   // the accelerations pass
-  std::vector<double> Q_, Q_joint_, ddq_, lambda_, g_, g_dot_, d_, ydot_;
+  std::vector<double> Q_, Q_joint_, ddq_, w_, lambda_, g_, g_dot_, d_, ydot_;
 };
 
 }  // namespace unfurl

@@ -1,9 +1,19 @@
-// Joints of the tree: G_i(q), rho_i(q) and the motion axis A_i of (1).
+// Joints of the tree: G_i(q), rho_i(q) and the motion axes A_i of (1).
 //
-// The child frame coincides in orientation with the parent frame at q = 0;
-// the joint turns (or slides) it about (along) a unit axis fixed in both.
-// All supported joints are scleronomic (v*_i = 0) and have a constant A_i,
-// so dA_i/dt of (7) vanishes.
+// The child frame coincides in orientation with the parent frame at q = 0
+// (the identity quaternion for a ball or free joint). Every joint is
+// scleronomic (v*_i = 0) and its A_i is constant in the child frame, so
+// dA_i/dt of (7) vanishes: a revolute or prismatic joint turns or slides
+// about a fixed axis; a spherical, planar or free joint takes as velocity
+// coordinates the child's relative velocity in the child frame (angular
+// rate, and the joint point's linear velocity), quasi-velocities whose q'
+// is not their own rate but follows from them (position_rates).
+//
+// Coordinates: n_i velocity coordinates (dof) and m_i position coordinates
+// (positions): revolute and prismatic 1/1, fixed 0/0, spherical 3/4 (a unit
+// quaternion w, x, y, z), planar 3/3 (x1, x2 along two in-plane axes, angle
+// about the normal), free 6/7 (the joint point's displacement x, y, z in
+// the parent frame, then a quaternion).
 #pragma once
 
 #include <string>
@@ -12,25 +22,58 @@
 
 namespace unfurl {
 
-enum class JointType { revolute, prismatic, fixed };
+enum class JointType { revolute, prismatic, fixed, spherical, planar, free };
 
 const char* joint_type_name(JointType type);
 
 struct Joint {
   std::string name;
   JointType type = JointType::revolute;
-  Vec3 axis = Vec3::UnitX();        // unit vector, parent frame
+  Vec3 axis = Vec3::UnitX();        // unit vector, parent frame (a planar joint's normal)
   Vec3 parent_point = Vec3::Zero(); // r^k: the hinge point in the parent frame
   Vec3 child_point = Vec3::Zero();  // r^i: the same point in the child frame
 
-  // Number of coordinates n_i (0 or 1).
-  int dof() const { return type == JointType::fixed ? 0 : 1; }
+  // n_i: velocity coordinates (and momenta).
+  int dof() const;
+  // m_i: position coordinates (4 for a quaternion).
+  int positions() const;
+  // Whether the joint's coordinates are angles or lengths that a spring,
+  // a latch or friction can act on (one coordinate, q' its rate).
+  bool is_scalar() const { return dof() == 1; }
+  // Whether an orientation is a quaternion in q (spherical and free).
+  bool has_quaternion() const { return type == JointType::spherical || type == JointType::free; }
+  // Offset of the quaternion in the joint's positions.
+  int quaternion_offset() const { return type == JointType::free ? 3 : 0; }
 
-  // G_i(q) and rho_i(q) = r^k - G^T r^i (+ axis q for a slider).
-  Placement placement(double q) const;
+  // G_i and rho_i = r^k + (displacement) - G^T r^i for the joint's m_i
+  // positions q (a quaternion is normalized here, so its norm never enters
+  // the dynamics); q is not read for a fixed joint.
+  Placement placement(const double* q) const;
+  Placement placement(double q) const { return placement(&q); }
 
-  // A_i = (G drho/dq ; a) of (1); zero for a fixed joint.
-  Vec6 motion_axis() const;
+  // A_i = (G drho/dq ; a) of (1): 6 x n_i, in the leading columns of a 6 x 6
+  // (the rest zero).
+  Mat6 motion_axes() const;
+  // The single column of a one-coordinate joint.
+  Vec6 motion_axis() const { return motion_axes().col(0); }
+
+  // q' of the positions from the velocity coordinates w: the same numbers
+  // for revolute and prismatic joints; x' = G^T u and a quaternion's
+  // q' = q (x) (0, w) / 2 otherwise.
+  void position_rates(const double* q, const double* w, double* dq) const;
+
+  // The inverse: the rates w from q and q'.
+  void rates(const double* q, const double* dq, double* w) const;
+
+  // The positions of the reference configuration (identity quaternion).
+  void neutral_positions(double* q) const;
+
+  // The planar joint's in-plane axes (e1, e2, axis right-handed).
+  Vec3 plane_axis_1() const { return axis.unitOrthogonal(); }
+  Vec3 plane_axis_2() const { return axis.cross(plane_axis_1()); }
 };
+
+// The rotation of a quaternion (w, x, y, z), normalized, child to parent.
+Mat3 quaternion_rotation(const double* q);
 
 }  // namespace unfurl

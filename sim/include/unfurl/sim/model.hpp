@@ -37,17 +37,35 @@ struct Model {
 
   // Derived by finalize().
   std::vector<std::vector<int>> children;  // U_i
-  std::vector<int> coordinate;             // index of q_i in q, -1 for n_i = 0
-  std::vector<int> joint_of_coordinate;
-  int nq = 0;
+  // Where each joint's coordinates sit: its m_i positions from
+  // coordinate[i] in q, its n_i velocity coordinates (and momenta) from
+  // velocity[i] in the rates and p; -1 for a fixed joint. One-coordinate
+  // joints come first in both, in body order, so for them the two indices
+  // agree (springs, latches and friction index q and the rates alike).
+  std::vector<int> coordinate;
+  std::vector<int> velocity;
+  std::vector<int> joint_of_coordinate;  // per entry of q
+  std::vector<int> joint_of_velocity;    // per entry of the rates
+  int nq = 0;  // positions
+  int nv = 0;  // velocity coordinates
 
   int size() const { return static_cast<int>(bodies.size()); }
+  // Names of q's entry c and of the rates' entry c in outputs: the joint's
+  // name for a one-coordinate joint, "joint.qw" or "joint.wx" for the
+  // entries of a ball, planar or free joint.
+  std::string position_name(int c) const;
+  std::string velocity_name(int c) const;
   // Builds U_i and the coordinate map; throws std::invalid_argument when the
   // numbering is not regular (a parent after its child).
   void finalize();
   // Index of the body (or joint) named `name`, kBase for the base, or -2.
   int find_body(const std::string& name) const;
   bool base_rotates() const { return !base_velocity.tail<3>().isZero(0); }
+  // Whether some joint has several coordinates (then nq may differ from nv).
+  bool has_multi_dof_joints() const { return scalar_coordinates != nv; }
+  int scalar_coordinates = 0;  // the one-coordinate joints' (the first of q and of the rates)
+  // Body 0 on a free joint: a free-floating spacecraft bus.
+  bool free_floating() const { return !joints.empty() && joints[0].type == JointType::free; }
 };
 
 }  // namespace unfurl

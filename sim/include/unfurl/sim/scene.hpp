@@ -30,9 +30,9 @@ struct Scene {
   std::vector<Latch> latches;
   std::vector<Loop> loops;
   RegulatorSettings regulator;
-  std::vector<double> q0;     // per coordinate
-  std::vector<double> dq0;    // per coordinate (used when p0 is empty)
-  std::vector<double> p0;     // per coordinate, optional
+  std::vector<double> q0;     // per position coordinate
+  std::vector<double> dq0;    // per velocity coordinate (used when p0 is empty)
+  std::vector<double> p0;     // per velocity coordinate, optional
   double closure_tolerance = 1e-6;  // how far the initial loops may be open
   RunSettings run;
 };

@@ -1,7 +1,13 @@
 // The O(N) sweep of section 4: solves (6) for the joint rates dq, the body
 // velocities v and the subtree momenta mu from (q, p), and forms dp of (7).
-// Every pass visits each body once; only the n_i x n_i (here scalar) D_i is
-// inverted. All storage is allocated by the constructor.
+// Every pass visits each body once; only the n_i x n_i D_i is inverted (a
+// division for the one-coordinate joints, a fixed-size Cholesky factor for
+// ball, planar and free joints). All storage is allocated by the
+// constructor.
+//
+// Coordinate arrays p, dq, Q and joint_diagonal are per velocity coordinate
+// (Model::velocity, nv of them); only set_configuration's q is per position
+// (Model::coordinate, nq).
 //
 // The passes also run on k load cases at once (6 x k blocks per body, k x
 // columns of coordinates), which the loop regulator uses to form W.
@@ -78,7 +84,8 @@ class Sweep {
     return M_star_[i] * a[i] + bias[i];
   }
 
-  // dp_i = -A_i^T Omega_i mu_i, the velocity-dependent part of (7).
+  // dp_i = -A_i^T Omega_i mu_i, the velocity-dependent part of (7) (dA_i = 0:
+  // every joint's A_i is constant in the child frame).
   void gyroscopic(const std::vector<Vec6>& v, const std::vector<Vec6>& mu, double* dp) const;
 
   // The same three passes for k load cases: S[i] is 6 x k, P is nq x k.
@@ -91,20 +98,43 @@ class Sweep {
   void force_pass(std::vector<S>& F, Pout& Q) const;
 
   const Placement& placement(int i) const { return X_[i]; }
-  const Vec6& motion_axis(int i) const { return A_[i]; }
+  // A_i, 6 x n_i in the leading columns.
+  Mat6 motion_axes(int i) const { return model_.joints[i].motion_axes(); }
   const Model& model() const { return model_; }
 
  private:
-  Eigen::Map<Eigen::VectorXd> coordinates(double* x) const { return {x, model_.nq}; }
-  Eigen::Map<const Eigen::VectorXd> coordinates(const double* x) const { return {x, model_.nq}; }
+  Eigen::Map<Eigen::VectorXd> coordinates(double* x) const { return {x, model_.nv}; }
+  Eigen::Map<const Eigen::VectorXd> coordinates(const double* x) const { return {x, model_.nv}; }
+
+  // A joint of n_i > 1 coordinates: A_i, M*_i A_i and D_i padded to 6 x 6
+  // with zeros (so the passes stay fixed-size and allocation-free; the
+  // padding contributes nothing).
+  struct MultiAxis {
+    Mat6 A, M_star_A, D;
+    int n = 0;
+  };
+  // A 6 x k block whose first n rows are rows c.. of x, the rest zero.
+  template <class P>
+  static Eigen::Matrix<double, 6, P::ColsAtCompileTime, 0, 6, P::MaxColsAtCompileTime> padded(const P& x, int c,
+                                                                                                int n) {
+    Eigen::Matrix<double, 6, P::ColsAtCompileTime, 0, 6, P::MaxColsAtCompileTime> out(6, x.cols());
+    out.setZero();
+    out.topRows(n) = x.middleRows(c, n);
+    return out;
+  }
+  void factor_multi_axis(int i, const double* joint_diagonal);
+  // Joint i's entries of a per-velocity-coordinate array, padded to 6.
+  Vec6 rates_of(int i, const double* x) const;
 
   const Model& model_;
-  std::vector<Vec6> A_;         // A_i (constant)
+  std::vector<Vec6> A_;         // A_i (constant), one-coordinate joints
   std::vector<Mat6> M_;         // M_i (constant)
   std::vector<Placement> X_;    // G_i, rho_i
   std::vector<Mat6> M_star_;    // M*_i
   std::vector<Vec6> M_star_A_;  // M*_i A_i
   std::vector<double> D_;       // D_i = (A_i^T M*_i A_i)^-1
+  std::vector<int> multi_;      // index into multi_axes_, -1 for n_i <= 1
+  std::vector<MultiAxis> multi_axes_;
   std::vector<double> q_;       // the q of the quantities above
   bool with_diagonal_ = false;  // ... and whether a joint diagonal entered them
   long configuration_ = 0;      // 0: none yet
@@ -119,8 +149,13 @@ void Sweep::bias_pass(const P& p, std::vector<S>& phi) const {
     if (k == kBase) continue;
     // M*_j A_j D_j p_j + H_j phi*_j
     S carried = phi[j];
-    const int c = model_.coordinate[j];
-    if (c >= 0) carried.noalias() += M_star_A_[j] * (D_[j] * (p.row(c) - A_[j].transpose() * phi[j]));
+    const int c = model_.velocity[j];
+    if (multi_[j] >= 0) {
+      const MultiAxis& J = multi_axes_[multi_[j]];
+      carried.noalias() += J.M_star_A * (J.D * (padded(p, c, J.n) - J.A.transpose() * phi[j]));
+    } else if (c >= 0) {
+      carried.noalias() += M_star_A_[j] * (D_[j] * (p.row(c) - A_[j].transpose() * phi[j]));
+    }
     phi[k] += X_[j].transform_force(carried);
   }
 }
@@ -133,8 +168,13 @@ void Sweep::velocity_pass(const P& p, const std::vector<S>& phi, const Vec6& v_b
   for (int i = 0; i < N; ++i) {
     const int k = model_.parent[i];
     v[i] = X_[i].transform_velocity(k == kBase ? base : v[k]);
-    const int c = model_.coordinate[i];
-    if (c >= 0) {
+    const int c = model_.velocity[i];
+    if (multi_[i] >= 0) {
+      const MultiAxis& J = multi_axes_[multi_[i]];
+      const auto w = (J.D * (padded(p, c, J.n) - J.A.transpose() * (phi[i] + M_star_[i] * v[i]))).eval();
+      dq.middleRows(c, J.n) = w.topRows(J.n);
+      v[i].noalias() += J.A * w;
+    } else if (c >= 0) {
       dq.row(c) = D_[i] * (p.row(c) - A_[i].transpose() * (phi[i] + M_star_[i] * v[i]));
       v[i].noalias() += A_[i] * dq.row(c);
     }
@@ -144,8 +184,14 @@ void Sweep::velocity_pass(const P& p, const std::vector<S>& phi, const Vec6& v_b
 template <class S, class Pout>
 void Sweep::force_pass(std::vector<S>& F, Pout& Q) const {
   for (int i = model_.size() - 1; i >= 0; --i) {
-    const int c = model_.coordinate[i];
-    if (c >= 0) Q.row(c).noalias() = A_[i].transpose() * F[i];
+    const int c = model_.velocity[i];
+    if (multi_[i] >= 0) {
+      const MultiAxis& J = multi_axes_[multi_[i]];
+      const auto Q_i = (J.A.transpose() * F[i]).eval();
+      Q.middleRows(c, J.n) = Q_i.topRows(J.n);
+    } else if (c >= 0) {
+      Q.row(c).noalias() = A_[i].transpose() * F[i];
+    }
     const int k = model_.parent[i];
     if (k != kBase) F[k] += X_[i].transform_force(F[i]);
   }
