@@ -13,20 +13,40 @@ void write_trajectory_csv(const Scene& scene, const Trajectory& trajectory, cons
   const StateLayout& L = trajectory.layout;
   OutputFile file(path);
   std::ostream& out = file.stream();
+  // One-coordinate joints: q, its rate dq and p side by side; then each
+  // position of a ball, planar or free joint with its q', then their momenta.
+  const int n1 = model.scalar_coordinates;
+  const bool bus = model.free_floating();
   out << "t";
-  for (int c = 0; c < model.nq; ++c) {
-    const std::string& name = model.joints[model.joint_of_coordinate[c]].name;
+  for (int c = 0; c < n1; ++c) {
+    const std::string name = model.position_name(c);
     out << ",q." << name << ",dq." << name << ",p." << name;
   }
+  for (int c = n1; c < model.nq; ++c) out << ",q." << model.position_name(c) << ",dq." << model.position_name(c);
+  for (int c = n1; c < model.nv; ++c) out << ",p." << model.velocity_name(c);
   for (const Loop& loop : scene.loops) out << ",closure_m." << loop.name << ",closure_rad." << loop.name;
+  if (bus) {
+    const std::string& name = model.bodies[0].name;
+    for (const char* axis : {"x", "y", "z"}) out << ',' << name << "_rotation_vector." << axis;
+    for (const char* axis : {"x", "y", "z"}) out << ',' << name << "_rate." << axis;
+    for (const char* axis : {"x", "y", "z"}) out << ",momentum." << axis;
+    for (const char* axis : {"x", "y", "z"}) out << ",angular_momentum." << axis;
+  }
   out << ",energy,energy_dissipated\n";
   for (const Sample& s : trajectory.samples) {
     out << format_number(s.t);
-    for (int c = 0; c < model.nq; ++c)
+    for (int c = 0; c < n1; ++c)
       out << ',' << format_number(s.y[L.q() + c]) << ',' << format_number(s.dq[c]) << ','
           << format_number(s.y[L.p() + c]);
+    for (int c = n1; c < model.nq; ++c) out << ',' << format_number(s.y[L.q() + c]) << ',' << format_number(s.dq[c]);
+    for (int c = n1; c < model.nv; ++c) out << ',' << format_number(s.y[L.p() + c]);
     for (std::size_t l = 0; l < scene.loops.size(); ++l)
       out << ',' << format_number(s.closure[l].distance) << ',' << format_number(s.closure[l].angle);
+    if (bus) {
+      const BusMotion motion = bus_motion(model, s.y.data() + L.q(), s.dq.data());
+      for (const Vec3* x : {&motion.rotation_vector, &motion.rate, &s.momentum.linear, &s.momentum.angular})
+        for (int a = 0; a < 3; ++a) out << ',' << format_number((*x)[a]);
+    }
     out << ',' << format_number(s.energy.total()) << ',' << format_number(s.energy.dissipated) << '\n';
   }
   file.commit();
@@ -156,6 +176,14 @@ void write_summary_json(const Scene& scene, const RunResult& result, const RunSu
   json.begin_object("final_q");
   for (const auto& [joint, q] : summary.final_q) json.value(joint, q);
   json.end_object();
+  if (summary.free_bus) {
+    json.value("bus_peak_rate", summary.free_bus->peak_rate);
+    json.value("bus_final_attitude_change", summary.free_bus->final_attitude_change);
+    json.begin_object("momentum_drift");
+    json.value("linear", summary.free_bus->linear_momentum_drift);
+    json.value("angular", summary.free_bus->angular_momentum_drift);
+    json.end_object();
+  }
   json.end_object();
   file.commit();
 }

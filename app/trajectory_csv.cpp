@@ -128,11 +128,10 @@ Trajectory read_trajectory_csv(const Scene& scene, const std::string& path) {
   const int t_col = need("t");
   std::vector<int> q_col, dq_col, p_col, gap_m_col, gap_rad_col;
   for (int c = 0; c < model.nq; ++c) {
-    const std::string& joint = model.joints[model.joint_of_coordinate[c]].name;
-    q_col.push_back(need("q." + joint));
-    dq_col.push_back(need("dq." + joint));
-    p_col.push_back(need("p." + joint));
+    q_col.push_back(need("q." + model.position_name(c)));
+    dq_col.push_back(need("dq." + model.position_name(c)));
   }
+  for (int c = 0; c < model.nv; ++c) p_col.push_back(need("p." + model.velocity_name(c)));
   for (const Loop& loop : scene.loops) {
     gap_m_col.push_back(need("closure_m." + loop.name));
     gap_rad_col.push_back(need("closure_rad." + loop.name));
@@ -142,19 +141,20 @@ Trajectory read_trajectory_csv(const Scene& scene, const std::string& path) {
 
   Trajectory tr;
   tr.layout.nq = model.nq;
+  tr.layout.nv = model.nv;
   for (int n = 2; std::getline(in, line); ++n) {
     const auto cells = split(line);
     const std::string where = path + ":" + std::to_string(n);
     if (cells.size() != header.size()) throw std::runtime_error(where + ": expected " + std::to_string(header.size()) + " columns");
     Sample s;
     s.t = parse(cells[t_col], where);
-    s.y.resize(2 * model.nq);
+    s.y.resize(model.nq + model.nv);
     s.dq.resize(model.nq);
     for (int c = 0; c < model.nq; ++c) {
       s.y[c] = parse(cells[q_col[c]], where);
-      s.y[model.nq + c] = parse(cells[p_col[c]], where);
       s.dq[c] = parse(cells[dq_col[c]], where);
     }
+    for (int c = 0; c < model.nv; ++c) s.y[model.nq + c] = parse(cells[p_col[c]], where);
     for (std::size_t l = 0; l < scene.loops.size(); ++l) {
       s.closure.push_back({parse(cells[gap_m_col[l]], where), parse(cells[gap_rad_col[l]], where)});
     }

@@ -72,7 +72,7 @@ void SimulationWorker::loop() {
     observer.cancel = &cancel_;
     observer.on_sample = [&](const Sample& s) {
       std::lock_guard<std::mutex> lock(mutex_);
-      if (buffer_.samples.empty()) buffer_.layout = StateLayout{static_cast<int>(s.dq.size()), 0};
+      if (buffer_.samples.empty()) buffer_.layout = StateLayout{scene.model.nq, scene.model.nv, 0};
       buffer_.samples.push_back(s);
       progress_.t_reached = s.t;
       progress_.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

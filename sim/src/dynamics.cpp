@@ -255,6 +255,7 @@ void Dynamics::observe(double t, const double* y, Observation& out) {
     if (latch_state_.engaged(l))
       E.latches += scene_.latches[l].energy(y[L.q() + model.coordinate[scene_.latches[l].joint]]);
   E.gravity = gravity_energy(model, out.poses);
+  out.momentum = system_momentum(model, out.poses, v_);
   for (const PointSpring& s : scene_.point_springs)
     E.springs += s.energy(point_spring_geometry(s, out.poses, v_, model.base_velocity).length);
 

@@ -18,7 +18,18 @@ std::vector<LoopComponent> active_loop_components(const Model& model, const std:
     samples.push_back(q);
   }
   // Row (l, a) of eps T A equals (J^T e)^T = (A^T T^T eps^T e)^T: one
-  // backward force pass per component.
+  // backward force pass per component. The joints above both the body and
+  // its image (a free bus's, say) move the two alike and cannot open a
+  // closed loop; at the random samples, where the loop is open, they would
+  // seem to, so their columns are left out.
+  std::vector<std::vector<bool>> shared(L, std::vector<bool>(model.nv, false));
+  for (int l = 0; l < L; ++l) {
+    std::vector<bool> above_body(N, false);
+    for (int i = loops[l].body; i >= 0; i = model.parent[i]) above_body[i] = true;
+    for (int i = loops[l].image; i >= 0; i = model.parent[i])
+      if (above_body[i])
+        for (int r = 0; r < model.joints[i].dof(); ++r) shared[l][model.velocity[i] + r] = true;
+  }
   std::vector<double> row_norm(6 * L, 0.0);
   std::vector<Vec6> F(N);
   std::vector<double> x(model.nv);
@@ -30,7 +41,8 @@ std::vector<LoopComponent> active_loop_components(const Model& model, const std:
         F[loops[l].body][a] = 1;
         F[loops[l].image][a] = -1;
         sweep.generalized_forces(F, x.data());
-        for (double xi : x) row_norm[6 * l + a] = std::max(row_norm[6 * l + a], std::abs(xi));
+        for (int c = 0; c < model.nv; ++c)
+          if (!shared[l][c]) row_norm[6 * l + a] = std::max(row_norm[6 * l + a], std::abs(x[c]));
       }
     }
   }

@@ -36,6 +36,7 @@ class Recorder {
     s.dq = observation_.dq;
     s.closure = observation_.closure;
     s.energy = observation_.energy;
+    s.momentum = observation_.momentum;
     s.loads = observation_.loads;
     trajectory_.samples.push_back(std::move(s));
     if (observer_.on_sample) observer_.on_sample(trajectory_.samples.back());

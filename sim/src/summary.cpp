@@ -33,8 +33,28 @@ RunSummary summarize(const Scene& scene, const RunResult& result) {
     s.t_reached = tr.samples.back().t;
     for (int c = 0; c < model.nq; ++c)
       s.final_q.emplace_back(model.position_name(c), tr.samples.back().y[tr.layout.q() + c]);
+    if (model.free_floating()) s.free_bus = summarize_free_bus(model, tr);
   }
   return s;
+}
+
+RunSummary::FreeBus summarize_free_bus(const Model& model, const Trajectory& tr) {
+  RunSummary::FreeBus bus;
+  const Sample& first = tr.samples.front();
+  const Eigen::Vector4d start = bus_motion(model, first.y.data() + tr.layout.q(), first.dq.data()).quaternion;
+  double linear_scale = 0, angular_scale = 0, linear_change = 0, angular_change = 0;
+  for (const Sample& s : tr.samples) {
+    const BusMotion motion = bus_motion(model, s.y.data() + tr.layout.q(), s.dq.data());
+    bus.peak_rate = std::max(bus.peak_rate, motion.rate.norm());
+    bus.final_attitude_change = rotation_angle_between(start, motion.quaternion);
+    linear_scale = std::max(linear_scale, s.momentum.linear_scale);
+    angular_scale = std::max(angular_scale, s.momentum.angular_scale);
+    linear_change = std::max(linear_change, (s.momentum.linear - first.momentum.linear).norm());
+    angular_change = std::max(angular_change, (s.momentum.angular - first.momentum.angular).norm());
+  }
+  bus.linear_momentum_drift = linear_scale > 0 ? linear_change / linear_scale : 0;
+  bus.angular_momentum_drift = angular_scale > 0 ? angular_change / angular_scale : 0;
+  return bus;
 }
 
 }  // namespace unfurl

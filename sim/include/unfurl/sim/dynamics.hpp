@@ -14,6 +14,7 @@
 #include "unfurl/sim/energy.hpp"
 #include "unfurl/sim/latch.hpp"
 #include "unfurl/sim/loads.hpp"
+#include "unfurl/sim/momentum.hpp"
 #include "unfurl/sim/regulator.hpp"
 #include "unfurl/sim/scene.hpp"
 #include "unfurl/sim/state_layout.hpp"
@@ -31,6 +32,7 @@ struct Observation {
   std::vector<Pose> poses;
   std::vector<ClosureError> closure;   // per loop
   EnergyParts energy;
+  SystemMomentum momentum;
   Loads loads;
 };
 

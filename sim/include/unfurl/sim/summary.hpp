@@ -4,6 +4,7 @@
 // samples.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,7 +31,23 @@ struct RunSummary {
   double energy_dissipated = 0;  // by dampers, friction and latches up to t_reached
   double t_reached = 0;
   std::vector<std::pair<std::string, double>> final_q;  // joint name, q
+
+  // A free-floating bus (else nullopt): its largest angular rate over the
+  // samples (rad/s), the angle of its rotation between the first and the
+  // last sample (rad), and the largest change of the system's linear and
+  // angular momentum over the samples, each relative to the largest sum
+  // of the bodies' own momenta (SystemMomentum's scales).
+  struct FreeBus {
+    double peak_rate = 0;
+    double final_attitude_change = 0;
+    double linear_momentum_drift = 0;
+    double angular_momentum_drift = 0;
+  };
+  std::optional<FreeBus> free_bus;
 };
+
+// The free bus's figures of a trajectory.
+RunSummary::FreeBus summarize_free_bus(const Model& model, const Trajectory& trajectory);
 
 RunSummary summarize(const Scene& scene, const RunResult& result);
 

@@ -9,6 +9,7 @@
 #include "unfurl/sim/energy.hpp"
 #include "unfurl/sim/loads.hpp"
 #include "unfurl/sim/loop.hpp"
+#include "unfurl/sim/momentum.hpp"
 #include "unfurl/sim/state_layout.hpp"
 
 namespace unfurl {
@@ -16,9 +17,10 @@ namespace unfurl {
 struct Sample {
   double t = 0;
   std::vector<double> y;             // the full state
-  std::vector<double> dq;            // joint rates
+  std::vector<double> dq;            // q' (a one-coordinate joint's rate)
   std::vector<ClosureError> closure; // geometric gap per loop
   EnergyParts energy;
+  SystemMomentum momentum;
   Loads loads;
 };
 

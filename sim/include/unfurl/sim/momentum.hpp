@@ -1,0 +1,39 @@
+// The system's linear and angular momentum in the inertial frame (body 0's
+// parent), the angular part about the system's centre of mass; conserved
+// when nothing acts from outside, as on a free-floating bus.
+#pragma once
+
+#include <vector>
+
+#include "unfurl/sim/kinematics.hpp"
+#include "unfurl/sim/model.hpp"
+
+namespace unfurl {
+
+struct SystemMomentum {
+  Vec3 linear = Vec3::Zero();
+  Vec3 angular = Vec3::Zero();
+  // The sums of the bodies' own magnitudes: the scale a drift is measured
+  // against (the total is zero on a bus released at rest).
+  double linear_scale = 0;
+  double angular_scale = 0;
+};
+
+// From the poses and the body velocities v_i (body frames).
+SystemMomentum system_momentum(const Model& model, const std::vector<Pose>& poses, const std::vector<Vec6>& v);
+
+// A free-floating bus's attitude and rate from its free joint's positions
+// and their rates: the quaternion (w, x, y, z, unit), the rotation vector
+// (angle times axis, the angle in [0, pi]) and the angular rate in the bus
+// frame.
+struct BusMotion {
+  Eigen::Vector4d quaternion;
+  Vec3 rotation_vector;
+  Vec3 rate;
+};
+BusMotion bus_motion(const Model& model, const double* q, const double* dq);
+
+// The angle of the rotation from attitude a to attitude b (unit quaternions).
+double rotation_angle_between(const Eigen::Vector4d& a, const Eigen::Vector4d& b);
+
+}  // namespace unfurl

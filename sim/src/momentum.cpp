@@ -1,0 +1,49 @@
+#include "unfurl/sim/momentum.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace unfurl {
+
+SystemMomentum system_momentum(const Model& model, const std::vector<Pose>& poses, const std::vector<Vec6>& v) {
+  SystemMomentum out;
+  double mass = 0;
+  Vec3 first_moment = Vec3::Zero();
+  for (int i = 0; i < model.size(); ++i) {
+    mass += model.bodies[i].mass;
+    first_moment += model.bodies[i].mass * poses[i].to_base(model.bodies[i].com);
+  }
+  const Vec3 centre = first_moment / mass;
+  for (int i = 0; i < model.size(); ++i) {
+    // M_i v_i is (linear momentum, angular momentum about the body origin)
+    // in the body frame; move it to the inertial axes and the centre.
+    const Vec6 h = model.bodies[i].spatial_mass() * v[i];
+    const Mat3 Gt = poses[i].rotation.transpose();
+    const Vec3 P = Gt * h.head<3>();
+    const Vec3 L = Gt * h.tail<3>() + (poses[i].position - centre).cross(P);
+    out.linear += P;
+    out.angular += L;
+    out.linear_scale += P.norm();
+    out.angular_scale += L.norm();
+  }
+  return out;
+}
+
+BusMotion bus_motion(const Model& model, const double* q, const double* dq) {
+  const Joint& joint = model.joints[0];
+  const int c = model.coordinate[0];
+  Vec6 w;
+  joint.rates(q + c, dq + c, w.data());
+  Eigen::Quaterniond attitude(q[c + 3], q[c + 4], q[c + 5], q[c + 6]);
+  attitude.normalize();
+  if (attitude.w() < 0) attitude.coeffs() *= -1;  // the shorter way round
+  const Eigen::AngleAxisd turn(attitude);
+  return {Eigen::Vector4d(attitude.w(), attitude.x(), attitude.y(), attitude.z()), turn.angle() * turn.axis(),
+          w.tail<3>()};
+}
+
+double rotation_angle_between(const Eigen::Vector4d& a, const Eigen::Vector4d& b) {
+  return 2 * std::acos(std::min(1.0, std::abs(a.normalized().dot(b.normalized()))));
+}
+
+}  // namespace unfurl
