@@ -31,6 +31,7 @@ namespace {
 const char* kHelp =
     "usage: unfurl render [SCENE] [--out DIR] [--fps 30] [--size 1280x720] [--from T0] [--to T1]\n"
     "                     [--video FILE.mp4] [--camera NAME|AZ,EL,DIST] [--orthographic] [--plots] [--no-frames]\n"
+    "                     [--camera-frame bus|inertial]\n"
     "                     [--trajectory FILE] [scene options]\n"
     "\n"
     "Simulates the scene (or reads a trajectory.csv written by `unfurl simulate`) and draws it\n"
@@ -45,10 +46,13 @@ const char* kHelp =
     "  --camera VIEW         a preset (iso, side, top, end, bottom; default iso) or AZ,EL,DIST in\n"
     "                        degrees and metres around the centre of the array\n"
     "  --orthographic        parallel projection (with --camera side: a true view along the hinges)\n"
+    "  --camera-frame F      with a free-floating bus: ride with the bus (bus, default) or stay in\n"
+    "                        the inertial frame and watch the bus turn and drift (inertial)\n"
     "  --gl egl|osmesa|auto  the offscreen OpenGL context (default auto: EGL when it works, else\n"
     "                        OSMesa)\n"
     "  --plots               also write angles.png, rates.png, residuals.png (the loops' gaps;\n"
-    "                        scenes with loops), loads.png and energy.png\n"
+    "                        scenes with loops), loads.png, energy.png and bus.png (a\n"
+    "                        free-floating bus's attitude and rate)\n"
     "  --no-frames           do not write frame PNGs (with --video or --plots)\n"
     "  --trajectory FILE     draw this trajectory.csv instead of simulating (events.csv and\n"
     "                        loads.csv beside it give the latch marks and the loads plot); SCENE\n"
@@ -72,7 +76,7 @@ void remove_stale_frames(const std::string& dir, std::size_t written) {
 
 int command_render(const std::vector<std::string>& argv) {
   std::set<std::string> valued = scene_flags();
-  valued.insert({"--out", "--fps", "--size", "--from", "--to", "--video", "--camera", "--trajectory", "--gl"});
+  valued.insert({"--out", "--fps", "--size", "--from", "--to", "--video", "--camera", "--camera-frame", "--trajectory", "--gl"});
   const Args args(argv, valued, {"--help", "-h", "--plots", "--no-frames", "--quiet", "--orthographic"});
   if (args.has("--help") || args.has("-h")) {
     std::printf(kHelp, scene_flags_help());
@@ -128,7 +132,7 @@ int command_render(const std::vector<std::string>& argv) {
   std::size_t drawn = 0;
   for (std::size_t k = 0; k < times.size() && !interrupt.flag().load(); ++k, ++drawn) {
     trajectory.coordinates_at(times[k], q);
-    body_poses(scene.model, q.data(), poses);
+    render::poses_in_camera_frame(options.camera_frame, scene.model, q.data(), poses);
     renderer.frame(poses, times[k], camera, image);
     if (write_frames) {
       char name[32];

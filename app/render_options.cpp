@@ -30,6 +30,11 @@ RenderOptions parse_render_options(const Args& args) {
   o.video = args.get("--video");
   o.camera = args.get("--camera").value_or(o.camera);
   o.orthographic = args.has("--orthographic");
+  if (const auto frame = args.get("--camera-frame")) {
+    const auto parsed = render::parse_camera_frame(*frame);
+    if (!parsed) throw UsageError("--camera-frame: expected bus or inertial, got '" + *frame + "'");
+    o.camera_frame = *parsed;
+  }
   if (const auto gl = args.get("--gl")) {
     const auto backend = render::parse_gl_backend(*gl);
     if (!backend) throw UsageError("--gl: expected egl, osmesa or auto, got '" + *gl + "'");
@@ -69,11 +74,11 @@ render::Camera choose_camera(const RenderOptions& options, const Scene& scene, c
   const std::size_t stride = std::max<std::size_t>(1, trajectory.samples.size() / 200);
   for (std::size_t k = 0; k < trajectory.samples.size(); k += stride) {
     trajectory.coordinates_at(trajectory.samples[k].t, q);
-    body_poses(scene.model, q.data(), poses);
+    render::poses_in_camera_frame(options.camera_frame, scene.model, q.data(), poses);
     bounds.extend(view.bounds(poses));
   }
   trajectory.coordinates_at(trajectory.t_end(), q);
-  body_poses(scene.model, q.data(), poses);
+  render::poses_in_camera_frame(options.camera_frame, scene.model, q.data(), poses);
   bounds.extend(view.bounds(poses));
 
   if (auto preset = render::camera_preset(options.camera, bounds, aspect)) {

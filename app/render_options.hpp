@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "unfurl/render/camera.hpp"
+#include "unfurl/render/camera_frame.hpp"
 #include "unfurl/render/gl_context.hpp"
 #include "cli.hpp"
 #include "unfurl/sim/scene.hpp"
@@ -23,6 +24,8 @@ struct RenderOptions {
   std::optional<std::string> video;
   std::string camera = "iso";  // a preset or "AZ,EL,DIST"
   bool orthographic = false;   // parallel projection
+  // A free-floating bus: ride with it (default) or stay inertial.
+  render::CameraFrame camera_frame = render::CameraFrame::bus;
   render::GlBackend gl = render::GlBackend::automatic;
 };
 

@@ -56,7 +56,7 @@ bool ExportJob::step(double budget_ms) {
       if (queue_.size() >= 4) return true;
     }
     trajectory_.coordinates_at(times_[drawn_], q);
-    body_poses(scene_.model, q.data(), poses);
+    render::poses_in_camera_frame(request_.options.camera_frame, scene_.model, q.data(), poses);
     render::Image image;
     renderer_->frame(poses, times_[drawn_], camera_, image);
     {

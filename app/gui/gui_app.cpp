@@ -256,20 +256,20 @@ void GuiApp::watch_scene_file() {
 void GuiApp::current_poses(std::vector<Pose>& poses) const {
   std::vector<double> q = state_.scene.q0;
   if (!state_.trajectory.empty()) state_.trajectory.coordinates_at(state_.play_time, q);
-  body_poses(state_.scene.model, q.data(), poses);
+  render::poses_in_camera_frame(state_.camera_frame, state_.scene.model, q.data(), poses);
 }
 
 Eigen::AlignedBox3f GuiApp::swept_bounds() const {
   Eigen::AlignedBox3f bounds;
   std::vector<Pose> poses;
-  body_poses(state_.scene.model, state_.scene.q0.data(), poses);
+  render::poses_in_camera_frame(state_.camera_frame, state_.scene.model, state_.scene.q0.data(), poses);
   bounds.extend(view_->bounds(poses));
   const Trajectory& tr = state_.trajectory;
   const std::size_t stride = std::max<std::size_t>(1, tr.samples.size() / 100);
   std::vector<double> q;
   for (std::size_t k = 0; k < tr.samples.size(); k += stride) {
     q.assign(tr.samples[k].y.begin(), tr.samples[k].y.begin() + state_.scene.model.nq);
-    body_poses(state_.scene.model, q.data(), poses);
+    render::poses_in_camera_frame(state_.camera_frame, state_.scene.model, q.data(), poses);
     bounds.extend(view_->bounds(poses));
   }
   return bounds;
@@ -300,7 +300,7 @@ void GuiApp::draw_viewport_texture() {
   const ViewportKey key{view_.get(), w, h, state_.generation,
                         past_computed ? static_cast<long>(tr.samples.size()) : -1L, state_.play_time,
                         {c.target.x(), c.target.y(), c.target.z(), c.azimuth_deg, c.elevation_deg, c.distance,
-                         c.fov_deg, c.orthographic ? 1.0f : 0.0f}};
+                         c.fov_deg, c.orthographic ? 1.0f : 0.0f, static_cast<float>(state_.camera_frame)}};
   if (key == viewport_key_ && viewport_drawn_) return;
   viewport_key_ = key;
   viewport_drawn_ = true;
@@ -524,7 +524,9 @@ void GuiApp::apply(const Requests& r) {
   if (r.export_range && !export_job_) {
     try {
       if (state_.trajectory.empty()) throw std::runtime_error("nothing computed yet");
-      export_job_ = std::make_unique<ExportJob>(*r.export_range, state_.scene, state_.visuals, state_.trajectory,
+      ExportRequest request = *r.export_range;
+      request.options.camera_frame = state_.camera_frame;
+      export_job_ = std::make_unique<ExportJob>(request, state_.scene, state_.visuals, state_.trajectory,
                                                 state_.camera);
       state_.export_progress = {true, 0, export_job_->total(), ""};
     } catch (const std::exception& e) {

@@ -105,7 +105,7 @@ class GuiApp : private ScriptTarget {
     int w = 0, h = 0;
     long generation = 0, samples = 0;
     double play_time = 0;
-    std::array<float, 8> camera{};
+    std::array<float, 9> camera{};  // the camera and the frame it rides in
     bool operator==(const ViewportKey& o) const {
       return view == o.view && w == o.w && h == o.h && generation == o.generation && samples == o.samples &&
              play_time == o.play_time && camera == o.camera;

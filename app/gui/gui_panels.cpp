@@ -137,6 +137,17 @@ void viewport_panel(GuiState& state, unsigned texture, const Eigen::AlignedBox3f
   ImGui::SameLine();
   ImGui::Checkbox("orthographic", &state.camera.orthographic);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("parallel projection: with side, a true view along the hinge axes");
+  if (state.scene.model.free_floating()) {
+    ImGui::SameLine();
+    bool ride = state.camera_frame == render::CameraFrame::bus;
+    if (ImGui::Checkbox("ride with the bus", &ride)) {
+      state.camera_frame = ride ? render::CameraFrame::bus : render::CameraFrame::inertial;
+      state.camera_fitted = false;
+    }
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("on: the camera moves with the free-floating bus; off: it stays in the inertial frame, where "
+                        "the bus turns and drifts");
+  }
   const ImVec2 size = ImGui::GetContentRegionAvail();
   state.viewport_width = std::max(16, static_cast<int>(size.x));
   state.viewport_height = std::max(16, static_cast<int>(size.y));
@@ -420,17 +431,17 @@ void curves_checklist(GuiState& state) {
     ++state.plots_version;
   };
   if (ImGui::SmallButton("all")) {
-    std::vector<int> all(model.nq);
-    for (int c = 0; c < model.nq; ++c) all[c] = c;
+    std::vector<int> all(model.scalar_coordinates);
+    for (int c = 0; c < model.scalar_coordinates; ++c) all[c] = c;
     set(all);
   }
   ImGui::SameLine();
   if (ImGui::SmallButton("first 12")) set({});
   // Empty means the first 12: show them as ticked.
   std::vector<int> shown = render::chosen_coordinates(model, plot_choice(state));
-  const float rows = std::min(20.0f, static_cast<float>(model.nq));
+  const float rows = std::min(20.0f, static_cast<float>(model.scalar_coordinates));
   ImGui::BeginChild("joints", ImVec2(em(220), rows * ImGui::GetFrameHeightWithSpacing()));
-  for (int c = 0; c < model.nq; ++c) {
+  for (int c = 0; c < model.scalar_coordinates; ++c) {
     bool on = std::find(shown.begin(), shown.end(), c) != shown.end();
     ImGui::PushStyleColor(ImGuiCol_Text, render::palette(c));
     ImGui::Checkbox(model.joints[model.joint_of_coordinate[c]].name.c_str(), &on);

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "unfurl/render/camera.hpp"
+#include "unfurl/render/camera_frame.hpp"
 #include "file_dialog.hpp"
 #include "render_options.hpp"
 #include "run_comparison.hpp"
@@ -116,6 +117,7 @@ struct GuiState {
 
   // View.
   render::Camera camera;
+  render::CameraFrame camera_frame = render::CameraFrame::bus;  // a free-floating bus's
   std::string camera_name = "iso";  // the preset the view shows; "" once orbited
   bool camera_fitted = false;
   int viewport_width = 0, viewport_height = 0;

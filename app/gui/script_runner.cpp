@@ -56,6 +56,9 @@ void ScriptRunner::step(ScriptTarget& target, double now) {
         if (arg(0) == name) open_file_dialog(state, field);
     } else if (c.name == "ui_scale") {
       state.ui_scale = state.ui_scale_field = std::stof(arg(0));
+    } else if (c.name == "camera_frame") {
+      state.camera_frame = *render::parse_camera_frame(arg(0));
+      state.camera_fitted = false;
     } else if (c.name == "orthographic") {
       state.camera.orthographic = arg(0) == "on";
     } else if (c.name == "camera") {

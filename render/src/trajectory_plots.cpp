@@ -26,10 +26,12 @@ Series series(const Trajectory& tr, const std::string& label, ImU32 color, const
 
 std::vector<int> chosen_coordinates(const Model& model, const PlotChoice& choice) {
   std::vector<int> coordinates;
+  // The one-coordinate joints' angles (a free bus has a plot of its own).
+  const int n1 = model.scalar_coordinates;
   for (int c : choice.coordinates)
-    if (c >= 0 && c < model.nq) coordinates.push_back(c);
+    if (c >= 0 && c < n1) coordinates.push_back(c);
   if (choice.coordinates.empty())
-    for (int c = 0; c < std::min(model.nq, choice.max_joints); ++c) coordinates.push_back(c);
+    for (int c = 0; c < std::min(n1, choice.max_joints); ++c) coordinates.push_back(c);
   return coordinates;
 }
 
@@ -108,6 +110,23 @@ void add_curves(PlotSpec& spec, PlotKind kind, const Scene& scene, const Traject
       added.push_back(series(tr, "total + dissipated", palette(7), [](const Sample& s) { return s.energy.balance(); }));
       added.back().dashed = true;
       break;
+    case PlotKind::bus: {
+      if (!model.free_floating()) break;
+      // The rotation vector (solid) and the body-frame rate (dashed).
+      static const char* const axes[] = {"x", "y", "z"};
+      for (int a = 0; a < 3; ++a) {
+        added.push_back(series(tr, std::string("rotation ") + axes[a], palette(a), [&, a](const Sample& s) {
+          return bus_motion(model, s.y.data() + L.q(), s.dq.data()).rotation_vector[a];
+        }));
+      }
+      for (int a = 0; a < 3; ++a) {
+        added.push_back(series(tr, std::string("rate ") + axes[a], palette(a), [&, a](const Sample& s) {
+          return bus_motion(model, s.y.data() + L.q(), s.dq.data()).rate[a];
+        }));
+        added.back().dashed = true;
+      }
+      break;
+    }
   }
   for (Series& s : added) {
     if (other) {
@@ -125,8 +144,8 @@ PlotSpec trajectory_plot(PlotKind kind, const Scene& scene, const Trajectory& tr
   PlotSpec spec;
   spec.x_label = "time, s";
   spec.x_range = choice.time_range;
-  const int nq = scene.model.nq, shown = static_cast<int>(chosen_coordinates(scene.model, choice).size());
-  const std::string which = shown < nq ? " (" + std::to_string(shown) + " of " + std::to_string(nq) + " joints)" : "";
+  const int n1 = scene.model.scalar_coordinates, shown = static_cast<int>(chosen_coordinates(scene.model, choice).size());
+  const std::string which = shown < n1 ? " (" + std::to_string(shown) + " of " + std::to_string(n1) + " joints)" : "";
   switch (kind) {
     case PlotKind::angles:
       spec.title = scene.name + ": joint angles" + which;
@@ -149,6 +168,10 @@ PlotSpec trajectory_plot(PlotKind kind, const Scene& scene, const Trajectory& tr
       spec.title = scene.name + ": energy";
       spec.y_label = "J";
       break;
+    case PlotKind::bus:
+      spec.title = scene.name + ": the free bus's attitude (rotation vector) and rate (bus frame)";
+      spec.y_label = "rad (solid), rad/s (dashed)";
+      break;
   }
   for (const ComparedRun& other : choice.others)
     if (other.trajectory && !other.trajectory->empty()) add_curves(spec, kind, scene, *other.trajectory, &other, choice);
@@ -165,6 +188,7 @@ const char* plot_kind_name(PlotKind kind) {
     case PlotKind::residuals: return "loop gaps";
     case PlotKind::loads: return "loads";
     case PlotKind::energy: return "energy";
+    case PlotKind::bus: return "bus";
   }
   return "?";
 }
@@ -174,11 +198,12 @@ std::vector<PlotKind> plot_kinds(const Scene& scene) {
   if (!scene.loops.empty()) kinds.push_back(PlotKind::residuals);
   kinds.push_back(PlotKind::loads);
   kinds.push_back(PlotKind::energy);
+  if (scene.model.free_floating()) kinds.push_back(PlotKind::bus);
   return kinds;
 }
 
 std::vector<NamedPlot> trajectory_plots(const Scene& scene, const Trajectory& trajectory, int max_joints) {
-  static const char* files[] = {"angles.png", "rates.png", "residuals.png", "loads.png", "energy.png"};
+  static const char* files[] = {"angles.png", "rates.png", "residuals.png", "loads.png", "energy.png", "bus.png"};
   std::vector<NamedPlot> plots;
   for (PlotKind kind : plot_kinds(scene)) {
     if (kind == PlotKind::loads && (trajectory.empty() || trajectory.samples.front().loads.joints.empty())) continue;

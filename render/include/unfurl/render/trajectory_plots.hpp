@@ -1,7 +1,8 @@
 // The standard plots of a run, from its trajectory: joint angles (the
 // paper's figure 6), joint rates (figure 7), the loops' geometric gaps on a
 // log axis (figure 8 drawn from the true gap; scenes with loops only), the
-// loads (latch torques and hinge moments) and energy; latch events marked.
+// loads (latch torques and hinge moments), energy and a free bus's attitude
+// and rate; latch events marked.
 #pragma once
 
 #include <optional>
@@ -15,12 +16,13 @@
 
 namespace unfurl::render {
 
-enum class PlotKind { angles, rates, residuals, loads, energy };
+enum class PlotKind { angles, rates, residuals, loads, energy, bus };
 
-// "angles", "rates", "loop gaps", "loads", "energy".
+// "angles", "rates", "loop gaps", "loads", "energy", "bus".
 const char* plot_kind_name(PlotKind kind);
 
-// The plots a scene's runs have: no gap plot for a tree.
+// The plots a scene's runs have: no gap plot for a tree; the bus's attitude
+// for a free-floating one.
 std::vector<PlotKind> plot_kinds(const Scene& scene);
 
 struct NamedPlot {
@@ -30,7 +32,7 @@ struct NamedPlot {
 };
 
 // Every plot of plot_kinds() with its file name (angles.png, rates.png,
-// residuals.png, loads.png, energy.png). At most `max_joints` joints are
+// residuals.png, loads.png, energy.png, bus.png). At most `max_joints` joints are
 // drawn, in scene order.
 std::vector<NamedPlot> trajectory_plots(const Scene& scene, const Trajectory& trajectory, int max_joints = 12);
 
