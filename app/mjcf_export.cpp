@@ -68,7 +68,8 @@ class Writer {
     const std::vector<double> y = dynamics.initial_state();
     Observation o;
     dynamics.observe(0, y.data(), o);
-    qvel0_ = o.dq;
+    dq0_ = o.dq;
+    rates0_ = o.rates;
   }
 
   MjcfModel write() {
@@ -112,7 +113,13 @@ class Writer {
     const std::string pad(2 * depth, ' ');
     const Joint& joint = m.joints[i];
     const int c = m.coordinate[i];
-    const Placement X = joint.placement(c >= 0 ? scene_.q0[c] : 0.0);
+    // A ball's or planar joint's body sits at the joint's neutral position,
+    // so MuJoCo's qpos for it is unfurl's q; a hinge's or slide's at q0 with
+    // ref = q0; a free body where q0 puts it (its qpos is its pose).
+    std::vector<double> neutral(std::max(1, joint.positions()));
+    joint.neutral_positions(neutral.data());
+    const bool at_q0 = joint.is_scalar() || joint.type == JointType::free;
+    const Placement X = joint.placement(c >= 0 && at_q0 ? &scene_.q0[c] : neutral.data());
     const Eigen::Quaterniond quat(X.G.transpose());
     out_ << pad << "<body name=\"" << m.bodies[i].name << "\" pos=\"" << vec(X.rho) << "\" quat=\"" << num(quat.w())
          << " " << num(quat.x()) << " " << num(quat.y()) << " " << num(quat.z()) << "\">\n";
@@ -159,6 +166,24 @@ class Writer {
     double frictionloss = 0;
     for (const JointFriction& f : scene_.friction)
       if (f.joint == i) frictionloss += f.coulomb, damping += f.viscous;
+    switch (j.type) {
+      case JointType::free:
+        out_ << pad << "<freejoint name=\"" << j.name << "\"/>\n";
+        return;
+      case JointType::spherical:
+        out_ << pad << "<joint name=\"" << j.name << "\" type=\"ball\" pos=\"" << vec(j.child_point) << "\"/>\n";
+        return;
+      case JointType::planar:
+        // Two slides along the plane's axes (in the parent's axes: they
+        // come before the hinge), then the hinge about the normal.
+        out_ << pad << "<joint name=\"" << j.name << ".x1\" type=\"slide\" axis=\"" << vec(j.plane_axis_1()) << "\"/>\n"
+             << pad << "<joint name=\"" << j.name << ".x2\" type=\"slide\" axis=\"" << vec(j.plane_axis_2()) << "\"/>\n"
+             << pad << "<joint name=\"" << j.name << ".angle\" type=\"hinge\" axis=\"" << vec(j.axis) << "\" pos=\""
+             << vec(j.child_point) << "\"/>\n";
+        return;
+      default:
+        break;
+    }
     out_ << pad << "<joint name=\"" << j.name << "\" type=\"" << (j.type == JointType::revolute ? "hinge" : "slide")
          << "\" axis=\"" << vec(j.axis) << "\" pos=\"" << vec(j.type == JointType::revolute ? j.child_point : Vec3::Zero())
          << "\" ref=\"" << num(scene_.q0[c]) << "\"";
@@ -244,11 +269,23 @@ class Writer {
 
   void keyframe() {
     // In the order the joints were written: MuJoCo's qpos order.
+    // MuJoCo's qvel: a free joint's linear velocity in the world frame
+    // (unfurl's x'), then its angular velocity in the body frame (unfurl's
+    // rates, as for a ball); a planar joint's slides and hinge: q'.
     std::string qpos, qvel;
+    const auto add = [](std::string& list, double x) { list += (list.empty() ? "" : " ") + num(x); };
     for (int i : written_) {
-      const int c = model_.coordinate[i];
-      qpos += (qpos.empty() ? "" : " ") + num(scene_.q0[c]);
-      qvel += (qvel.empty() ? "" : " ") + num(qvel0_[c]);
+      const Joint& j = model_.joints[i];
+      const int c = model_.coordinate[i], v = model_.velocity[i];
+      for (int k = 0; k < j.positions(); ++k) add(qpos, scene_.q0[c + k]);
+      if (j.type == JointType::free) {
+        for (int k = 0; k < 3; ++k) add(qvel, dq0_[c + k]);
+        for (int k = 3; k < 6; ++k) add(qvel, rates0_[v + k]);
+      } else if (j.type == JointType::spherical) {
+        for (int k = 0; k < 3; ++k) add(qvel, rates0_[v + k]);
+      } else {
+        for (int k = 0; k < j.positions(); ++k) add(qvel, dq0_[c + k]);
+      }
     }
     out_ << "  <keyframe>\n    <key name=\"initial\" qpos=\"" << qpos << "\" qvel=\"" << qvel << "\"/>\n  </keyframe>\n";
   }
@@ -261,7 +298,7 @@ class Writer {
   const Scene& scene_;
   const Model& model_;
   std::vector<Pose> poses_;
-  std::vector<double> qvel0_;
+  std::vector<double> dq0_, rates0_;  // q' and the rates at t = 0
   std::vector<int> written_;  // bodies whose joints are in the file, in file order
   std::map<int, const Loop*> image_of_, body_of_;
   std::vector<std::string> not_exported_;

@@ -59,7 +59,7 @@ Angles unfurl_angles(const Scene& scene, const RunResult& run) {
     if (s.t >= first_latch) break;
     a.t.push_back(s.t);
     for (int c = 0; c < model.nq; ++c)
-      a.q[model.joints[model.joint_of_coordinate[c]].name].push_back(s.y[run.trajectory.layout.q() + c]);
+      a.q[model.position_name(c)].push_back(s.y[run.trajectory.layout.q() + c]);
   }
   return a;
 }

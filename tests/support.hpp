@@ -68,11 +68,12 @@ inline InterruptedOutcome interrupt_after(const std::string& command, double sec
   return r;
 }
 
-// Value of coordinate c of the joint named `joint` in a sample.
-inline double q_of(const Scene& scene, const Sample& s, const std::string& joint) {
+// The entry of q named `name` (Model::position_name: a joint's name, or
+// "bus.qw" for an entry of a free or ball joint) in a sample.
+inline double q_of(const Scene& scene, const Sample& s, const std::string& name) {
   for (int c = 0; c < scene.model.nq; ++c)
-    if (scene.model.joints[scene.model.joint_of_coordinate[c]].name == joint) return s.y[c];
-  throw std::runtime_error("no joint " + joint);
+    if (scene.model.position_name(c) == name) return s.y[c];
+  throw std::runtime_error("no coordinate " + name);
 }
 
 }  // namespace unfurl::test

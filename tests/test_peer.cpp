@@ -198,6 +198,12 @@ TEST(Peer, PointSpringAndViscousFrictionAgree) {
 
 TEST(Peer, ZfoldAgreesThroughEveryLatch) { expect_agreement("zfold", {}, 20, 1e-4, {1e-8, 1e-8, 1e-8}); }
 
+// The z-fold on a free-floating bus, exported with a free joint: the bus's
+// position and attitude quaternion and the joint angles, through every latch.
+TEST(Peer, FreeZfoldAgreesOnTheBusAndThroughEveryLatch) {
+  expect_agreement("zfold_free", {}, 20, 1e-4, {1e-8, 1e-8, 1e-8});
+}
+
 TEST(Peer, PantographAgreesToMujocosOwnConstraintError) {
   // unfurl closes the loops with the regulator at v_max = 2000 and its
   // feedforward (3.5e-9 rad from the one-degree-of-freedom reduction before

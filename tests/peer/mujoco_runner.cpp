@@ -77,12 +77,26 @@ MujocoRun run_mujoco(const std::string& xml_path, double t_end, double dt, doubl
   mjcb_passive = latch_torques;
 
   MujocoRun run;
-  for (int j = 0; j < m->njnt; ++j) run.joints.push_back(mj_id2name(m, mjOBJ_JOINT, j));
+  // Every entry of qpos, named as unfurl names its q: a hinge or slide by
+  // its joint, a free joint's "NAME.x" ... "NAME.qz", a ball's "NAME.qw" ...
+  static const char* const free_entries[] = {"x", "y", "z", "qw", "qx", "qy", "qz"};
+  static const char* const ball_entries[] = {"qw", "qx", "qy", "qz"};
+  std::vector<int> entry_qpos;
+  for (int j = 0; j < m->njnt; ++j) {
+    const std::string name = mj_id2name(m, mjOBJ_JOINT, j);
+    const int type = m->jnt_type[j];
+    const int n = type == mjJNT_FREE ? 7 : type == mjJNT_BALL ? 4 : 1;
+    for (int k = 0; k < n; ++k) {
+      run.joints.push_back(n == 1 ? name
+                                  : name + "." + (type == mjJNT_FREE ? free_entries[k] : ball_entries[k]));
+      entry_qpos.push_back(m->jnt_qposadr[j] + k);
+    }
+  }
   auto record = [&](double t) {
     mj_forward(m, d);
     run.t.push_back(t);
-    std::vector<double> q(m->njnt);
-    for (int j = 0; j < m->njnt; ++j) q[j] = d->qpos[m->jnt_qposadr[j]];
+    std::vector<double> q;
+    for (int a : entry_qpos) q.push_back(d->qpos[a]);
     run.q.push_back(std::move(q));
     run.energy.push_back(d->energy[0] + d->energy[1] + latch_energy(d));
   };

@@ -13,9 +13,9 @@
 namespace unfurl::peer {
 
 struct MujocoRun {
-  std::vector<std::string> joints;          // MuJoCo's joint names, in qpos order
+  std::vector<std::string> joints;          // qpos entries named as unfurl's q (Model::position_name)
   std::vector<double> t;                    // sample times: 0, SAMPLE, 2 SAMPLE, ...
-  std::vector<std::vector<double>> q;       // per sample, per joint
+  std::vector<std::vector<double>> q;       // per sample, per qpos entry
   std::vector<double> energy;               // per sample: kinetic + potential + latches
   std::vector<std::pair<double, std::string>> latches;  // engagement time, joint
   int warnings = 0;                         // MuJoCo's warnings while it ran
