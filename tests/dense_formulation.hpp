@@ -17,18 +17,92 @@ namespace unfurl::test {
 using MatrixXd = Eigen::MatrixXd;
 using VectorXd = Eigen::VectorXd;
 
-// The test's own joint placement: Rodrigues' formula, not the solver's code.
-inline void placement(const Joint& j, double q, Mat3& G, Vec3& rho) {
+// Rodrigues' formula: the rotation by angle q about unit axis a.
+inline Mat3 rodrigues(const Vec3& a, double q) {
+  const Mat3 e = skew(a);
+  return Mat3::Identity() + std::sin(q) * e + (1 - std::cos(q)) * e * e;
+}
+
+// The rotation of a quaternion (w, x, y, z), normalized, written out.
+inline Mat3 quaternion_matrix(const double* q) {
+  const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+  const double w = q[0] / n, x = q[1] / n, y = q[2] / n, z = q[3] / n;
+  Mat3 R;
+  R << 1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y),  //
+      2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x),   //
+      2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y);
+  return R;
+}
+
+// a (x) b for quaternions (w, x, y, z).
+inline Eigen::Vector4d quaternion_product(const Eigen::Vector4d& a, const Eigen::Vector4d& b) {
+  const Vec3 u = a.tail<3>(), v = b.tail<3>();
+  Eigen::Vector4d out;
+  out[0] = a[0] * b[0] - u.dot(v);
+  out.tail<3>() = a[0] * v + b[0] * u + u.cross(v);
+  return out;
+}
+
+// The test's own joint placement: Rodrigues' formula and the quaternion's
+// matrix written out, not the solver's code. q: the joint's positions.
+inline void placement(const Joint& j, const double* q, Mat3& G, Vec3& rho) {
   G.setIdentity();
   rho = j.parent_point - j.child_point;
-  if (j.type == JointType::revolute) {
-    const Mat3 e = skew(j.axis);
-    const Mat3 R = Mat3::Identity() + std::sin(q) * e + (1 - std::cos(q)) * e * e;
-    G = R.transpose();
-    rho = j.parent_point - R * j.child_point;
-  } else if (j.type == JointType::prismatic) {
-    rho += j.axis * q;
+  Mat3 R = Mat3::Identity();
+  switch (j.type) {
+    case JointType::revolute: R = rodrigues(j.axis, q[0]); break;
+    case JointType::prismatic: rho += j.axis * q[0]; break;
+    case JointType::fixed: break;
+    case JointType::spherical: R = quaternion_matrix(q); break;
+    case JointType::planar: {
+      const Vec3 e1 = j.axis.unitOrthogonal(), e2 = j.axis.cross(e1);
+      R = rodrigues(j.axis, q[2]);
+      rho += q[0] * e1 + q[1] * e2;
+      break;
+    }
+    case JointType::free:
+      R = quaternion_matrix(q + 3);
+      rho += Vec3(q[0], q[1], q[2]);
+      break;
   }
+  G = R.transpose();
+  rho += j.child_point - R * j.child_point;
+}
+
+// The positions moved by eps along velocity coordinate k: the child turned
+// by eps about its own axis e_k (a quaternion times exp(eps e_k / 2)), or
+// moved by eps along its own e_k; what a unit rate does in unit time.
+inline std::vector<double> moved(const Joint& j, const double* q, int k, double eps) {
+  std::vector<double> out(q, q + j.positions());
+  const auto turn = [&](int at, int axis) {
+    Eigen::Vector4d dq(std::cos(eps / 2), 0, 0, 0);
+    dq[1 + axis] = std::sin(eps / 2);
+    const Eigen::Vector4d r = quaternion_product(Eigen::Vector4d(q[at], q[at + 1], q[at + 2], q[at + 3]), dq);
+    for (int a = 0; a < 4; ++a) out[at + a] = r[a];
+  };
+  switch (j.type) {
+    case JointType::spherical: turn(0, k); break;
+    case JointType::free:
+      if (k >= 3) {
+        turn(3, k - 3);
+      } else {
+        const Vec3 x = quaternion_matrix(q + 3).col(k) * eps;
+        for (int a = 0; a < 3; ++a) out[a] += x[a];
+      }
+      break;
+    case JointType::planar:
+      if (k == 2) {
+        out[2] += eps;
+      } else {
+        // The child's own in-plane axis e_k, in the plane's coordinates.
+        const double c = std::cos(q[2]), s = std::sin(q[2]);
+        out[0] += eps * (k == 0 ? c : -s);
+        out[1] += eps * (k == 0 ? s : c);
+      }
+      break;
+    default: out[0] += eps;
+  }
+  return out;
 }
 
 inline Mat6 C_of(const Mat3& G, const Vec3& rho) {
@@ -41,6 +115,33 @@ inline Mat6 C_of(const Mat3& G, const Vec3& rho) {
 
 // A_i of (1) from its definition, a^v = G drho/dq and a~ = G dG^T/dq, with
 // the derivatives of Rodrigues' formula.
+inline Vec6 A_of(const Joint& j, double q);
+
+// A_i of (1), 6 x n_i, for any joint: the columns a^v = G drho and
+// a~ = G dG^T along each velocity coordinate (moved()), by central
+// differences of the test's placement.
+inline Eigen::Matrix<double, 6, Eigen::Dynamic> A_of(const Joint& j, const double* q) {
+  Eigen::Matrix<double, 6, Eigen::Dynamic> A(6, j.dof());
+  if (j.is_scalar()) {
+    A.col(0) = A_of(j, q[0]);
+    return A;
+  }
+  Mat3 G;
+  Vec3 rho;
+  placement(j, q, G, rho);
+  const double eps = 1e-6;
+  for (int k = 0; k < j.dof(); ++k) {
+    Mat3 Gp, Gm;
+    Vec3 rp, rm;
+    placement(j, moved(j, q, k, eps).data(), Gp, rp);
+    placement(j, moved(j, q, k, -eps).data(), Gm, rm);
+    A.col(k).head<3>() = G * (rp - rm) / (2 * eps);
+    const Mat3 w = G * (Gp.transpose() - Gm.transpose()) / (2 * eps);
+    A.col(k).tail<3>() << w(2, 1), w(0, 2), w(1, 0);
+  }
+  return A;
+}
+
 inline Vec6 A_of(const Joint& j, double q) {
   Vec6 A = Vec6::Zero();
   if (j.type == JointType::revolute) {
@@ -66,12 +167,13 @@ struct Dense {
 
 inline Dense dense_formulation(const Scene& scene, const VectorXd& q) {
   const Model& model = scene.model;
-  const int N = model.size(), n = model.nq;
+  const int N = model.size(), n = model.nv;
   MatrixXd S = MatrixXd::Identity(6 * N, 6 * N), A = MatrixXd::Zero(6 * N, n), M = MatrixXd::Zero(6 * N, 6 * N);
   VectorXd v_star = VectorXd::Zero(6 * N);
+  const double none = 0;
   for (int i = 0; i < N; ++i) {
     const int c = model.coordinate[i];
-    const double qi = c >= 0 ? q[c] : 0.0;
+    const double* qi = c >= 0 ? &q[c] : &none;
     Mat3 G;
     Vec3 rho;
     placement(model.joints[i], qi, G, rho);
@@ -80,7 +182,7 @@ inline Dense dense_formulation(const Scene& scene, const VectorXd& q) {
       v_star.segment<6>(6 * i) = C * model.base_velocity;
     else
       S.block<6, 6>(6 * i, 6 * model.parent[i]) = -C;  // (2)
-    if (c >= 0) A.block<6, 1>(6 * i, c) = A_of(model.joints[i], qi);
+    if (c >= 0) A.block(6 * i, model.velocity[i], 6, model.joints[i].dof()) = A_of(model.joints[i], qi);
     const Body& b = model.bodies[i];
     const Mat3 J = b.inertia_com + b.mass * (b.com.squaredNorm() * Mat3::Identity() - b.com * b.com.transpose());
     M.block<3, 3>(6 * i, 6 * i) = b.mass * Mat3::Identity();
@@ -105,9 +207,10 @@ inline void poses(const Scene& scene, const VectorXd& q, std::vector<Mat3>& R, s
   r.resize(model.size());
   for (int i = 0; i < model.size(); ++i) {
     const int c = model.coordinate[i];
+    const double none = 0;
     Mat3 G;
     Vec3 rho;
-    placement(model.joints[i], c >= 0 ? q[c] : 0.0, G, rho);
+    placement(model.joints[i], c >= 0 ? &q[c] : &none, G, rho);
     const int k = model.parent[i];
     const Mat3 Rk = k == kBase ? Mat3::Identity() : R[k];
     const Vec3 rk = k == kBase ? Vec3::Zero() : r[k];
@@ -160,7 +263,7 @@ inline VectorXd body_forces(const Scene& scene, const VectorXd& q, bool with_gra
 // (gravity is in the Hamiltonian).
 inline VectorXd applied_forces(const Scene& scene, const VectorXd& q, const VectorXd& dq) {
   const Model& model = scene.model;
-  VectorXd Q = VectorXd::Zero(model.nq);
+  VectorXd Q = VectorXd::Zero(model.nv);
   for (const JointSpring& s : scene.springs) Q[model.coordinate[s.joint]] -= s.damping * dq[model.coordinate[s.joint]];
   return Q + dense_formulation(scene, q).ATTt * body_forces(scene, q, false);
 }
@@ -174,7 +277,8 @@ inline Vec3 random_unit(std::mt19937& rng) {
   return Vec3(n(rng), n(rng), n(rng)).normalized();
 }
 
-inline Scene random_tree(std::mt19937& rng, int N, bool moving_base) {
+// With multi_dof, a fifth of the joints are spherical, planar or free.
+inline Scene random_tree(std::mt19937& rng, int N, bool moving_base, bool multi_dof = false) {
   std::uniform_real_distribution<double> U(-1, 1);
   Scene scene;
   Model& model = scene.model;
@@ -190,6 +294,10 @@ inline Scene random_tree(std::mt19937& rng, int N, bool moving_base) {
     j.name = "j" + std::to_string(i);
     const double kind = U(rng);
     j.type = kind < 0.7 ? JointType::revolute : kind < 0.9 ? JointType::prismatic : JointType::fixed;
+    if (multi_dof && (U(rng) > 0.6 || i == N / 2)) {
+      const double which = U(rng);
+      j.type = which < 0 ? JointType::spherical : which < 0.5 ? JointType::planar : JointType::free;
+    }
     j.axis = random_unit(rng);
     j.parent_point = 0.5 * Vec3(U(rng), U(rng), U(rng));
     j.child_point = 0.5 * Vec3(U(rng), U(rng), U(rng));
@@ -204,7 +312,7 @@ inline Scene random_tree(std::mt19937& rng, int N, bool moving_base) {
   }
   model.finalize();
   for (int i = 0; i < N; ++i) {
-    if (model.coordinate[i] < 0) continue;
+    if (!model.joints[i].is_scalar()) continue;
     if (U(rng) > 0) {
       JointSpring s;
       s.joint = i;
@@ -218,8 +326,8 @@ inline Scene random_tree(std::mt19937& rng, int N, bool moving_base) {
                              Vec3(U(rng), U(rng), U(rng)), !moving_base && U(rng) > 0});
   }
   scene.q0.assign(model.nq, 0.0);
-  for (double& x : scene.q0) x = 3 * U(rng);
-  scene.dq0.assign(model.nq, 0.0);
+  for (double& x : scene.q0) x = 3 * U(rng);  // a quaternion's norm does not matter
+  scene.dq0.assign(model.nv, 0.0);
   return scene;
 }
 
@@ -228,7 +336,7 @@ inline MatrixXd dense_mobility(const Scene& scene, const std::vector<LoopCompone
   const Dense d = dense_formulation(scene, q);
   const int m = static_cast<int>(components.size());
   // eps T A = rows of (A^T T^T eps^T)^T; ATTt maps a body force to Q.
-  MatrixXd J(m, scene.model.nq);
+  MatrixXd J(m, scene.model.nv);
   for (int c = 0; c < m; ++c) {
     const LoopComponent& lc = components[c];
     VectorXd F = VectorXd::Zero(6 * scene.model.size());

@@ -27,6 +27,7 @@ TEST_P(RandomTrees, SweepMatchesTheDenseHamiltonianFormulation) {
   const Scene scene = random_tree(rng, N, GetParam() % 3 == 0);
   const int n = scene.model.nq;
   if (n == 0) GTEST_SKIP() << "only fixed joints";
+  ASSERT_EQ(n, scene.model.nv);
   Dynamics dynamics(scene);
   std::uniform_real_distribution<double> U(-1, 1);
   VectorXd y(2 * n);
@@ -58,6 +59,74 @@ TEST_P(RandomTrees, SweepMatchesTheDenseHamiltonianFormulation) {
 }
 
 INSTANTIATE_TEST_SUITE_P(UpTo30Bodies, RandomTrees, ::testing::Range(1, 41));
+
+// Trees with ball, planar and free joints (quaternions in q, the child's
+// own rates as velocity coordinates): the rates w = Mtilde^-1 (p - b) with
+// A from the test's own placements; q' = N(q) w, a quaternion's by the
+// test's own product q (x) (0, w) / 2; and p' = -dH/dq + Q for every
+// one-coordinate joint (there p is conjugate to q: a ball's or free joint's
+// map from its rates to its q' does not involve them).
+class RandomMultiDofTrees : public ::testing::TestWithParam<int> {};
+
+TEST_P(RandomMultiDofTrees, SweepMatchesTheDenseFormulation) {
+  std::mt19937 rng(1000 + GetParam());
+  const int N = 1 + GetParam() % 20;
+  const Scene scene = random_tree(rng, N, GetParam() % 3 == 0, true);
+  const Model& model = scene.model;
+  const int nq = model.nq, nv = model.nv;
+  if (nv == 0) GTEST_SKIP() << "only fixed joints";
+  if (!model.has_multi_dof_joints()) GTEST_SKIP() << "no joint of several coordinates drawn";
+  Dynamics dynamics(scene);
+  std::uniform_real_distribution<double> U(-1, 1);
+  VectorXd y(nq + nv);
+  for (int k = 0; k < nq; ++k) y[k] = scene.q0[k];
+  for (int k = 0; k < nv; ++k) y[nq + k] = 5 * U(rng);
+  VectorXd ydot(nq + nv);
+  ASSERT_TRUE(dynamics.rhs(0, y.data(), ydot.data()));
+  const VectorXd q = y.head(nq), p = y.tail(nv);
+
+  const Dense d = dense_formulation(scene, q);
+  const VectorXd w = d.Mt.ldlt().solve(p - d.b);
+  VectorXd dq_expected(nq);
+  for (int i = 0; i < model.size(); ++i) {
+    const Joint& j = model.joints[i];
+    const int c = model.coordinate[i], v = model.velocity[i];
+    if (c < 0) continue;
+    const auto quaternion_rate = [&](int at, int rate) {
+      const Eigen::Vector4d r = 0.5 * quaternion_product(q.segment<4>(at), Eigen::Vector4d(0, w[rate], w[rate + 1], w[rate + 2]));
+      dq_expected.segment<4>(at) = r;
+    };
+    if (j.is_scalar()) {
+      dq_expected[c] = w[v];
+    } else if (j.type == JointType::spherical) {
+      quaternion_rate(c, v);
+    } else if (j.type == JointType::free) {
+      dq_expected.segment<3>(c) = quaternion_matrix(&q[c + 3]) * w.segment<3>(v);
+      quaternion_rate(c + 3, v + 3);
+    } else {  // planar: x' = R (u1 e1 + u2 e2) in the plane's coordinates
+      const double co = std::cos(q[c + 2]), si = std::sin(q[c + 2]);
+      dq_expected[c] = co * w[v] - si * w[v + 1];
+      dq_expected[c + 1] = si * w[v] + co * w[v + 1];
+      dq_expected[c + 2] = w[v + 2];
+    }
+  }
+  EXPECT_LT(relative_error(ydot.head(nq), dq_expected), 1e-7) << N << " bodies";
+
+  const double h = 1e-4;
+  VectorXd dp_expected = applied_forces(scene, q, w);
+  for (int k = 0; k < model.scalar_coordinates; ++k) {
+    auto H_at = [&](double dx) {
+      VectorXd qs = q;
+      qs[k] += dx;
+      return hamiltonian(scene, qs, p);
+    };
+    dp_expected[k] -= (-H_at(2 * h) + 8 * H_at(h) - 8 * H_at(-h) + H_at(-2 * h)) / (12 * h);
+    EXPECT_NEAR(ydot[nq + k], dp_expected[k], 1e-7 * std::max(1.0, dp_expected.head(model.scalar_coordinates).norm()))
+        << "p' of " << model.velocity_name(k) << ", " << N << " bodies";
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(UpTo20Bodies, RandomMultiDofTrees, ::testing::Range(1, 31));
 
 TEST(Sweep, LoopMobilityFromExtraPassesEqualsDenseFormula) {
   // W = eps T A Mtilde^-1 (eps T A)^T on the active components, by the
