@@ -75,6 +75,16 @@ TEST(RightHandSide, ZfoldAllocatesNothing) {
   EXPECT_EQ(allocations_in_rhs(test::scene_file("zfold"), true), 0);
 }
 
+// A free joint at the root (6 x 6 D_0) and the regulator's load-case passes
+// through it; a ball and a planar joint.
+TEST(RightHandSide, FreeFloatingPantographAllocatesNothing) {
+  EXPECT_EQ(allocations_in_rhs(test::scene_file("pantograph_free"), true), 0);
+}
+
+TEST(RightHandSide, BallAndPlanarJointsAllocateNothing) {
+  EXPECT_EQ(allocations_in_rhs(test::scene_file("ball_pendulum"), false), 0);
+}
+
 TEST(RightHandSide, GravitySceneAllocatesNothing) {
   EXPECT_EQ(allocations_in_rhs(test::scene_file("double_pendulum"), false), 0);
 }
