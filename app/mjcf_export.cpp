@@ -173,6 +173,13 @@ class Writer {
       case JointType::spherical:
         out_ << pad << "<joint name=\"" << j.name << "\" type=\"ball\" pos=\"" << vec(j.child_point) << "\"/>\n";
         return;
+      case JointType::universal:
+        // Two hinges in one body: MuJoCo turns the second axis by the
+        // first, as the cross carries it.
+        for (int k = 1; k <= 2; ++k)
+          out_ << pad << "<joint name=\"" << j.name << "." << k << "\" type=\"hinge\" axis=\""
+               << vec(k == 1 ? j.axis : j.axis2) << "\" pos=\"" << vec(j.child_point) << "\"/>\n";
+        return;
       case JointType::planar:
         // Two slides along the plane's axes (in the parent's axes: they
         // come before the hinge), then the hinge about the normal.

@@ -64,6 +64,7 @@ inline void placement(const Joint& j, const double* q, Mat3& G, Vec3& rho) {
       R = quaternion_matrix(q + 3);
       rho += Vec3(q[0], q[1], q[2]);
       break;
+    case JointType::universal: R = rodrigues(j.axis, q[0]) * rodrigues(j.axis2, q[1]); break;
   }
   G = R.transpose();
   rho += j.child_point - R * j.child_point;
@@ -100,7 +101,7 @@ inline std::vector<double> moved(const Joint& j, const double* q, int k, double 
         out[1] += eps * (k == 0 ? s : c);
       }
       break;
-    default: out[0] += eps;
+    default: out[k] += eps;  // q' = w
   }
   return out;
 }
@@ -124,6 +125,14 @@ inline Eigen::Matrix<double, 6, Eigen::Dynamic> A_of(const Joint& j, const doubl
   Eigen::Matrix<double, 6, Eigen::Dynamic> A(6, j.dof());
   if (j.is_scalar()) {
     A.col(0) = A_of(j, q[0]);
+    return A;
+  }
+  if (j.type == JointType::universal) {
+    // G dG^T/dq1 = R2^T a1~ R2 and G dG^T/dq2 = a2~ for G = (R1 R2)^T, in
+    // closed form: dH/dq by differences of H needs A to round-off.
+    const Vec3 w1 = rodrigues(j.axis2, q[1]).transpose() * j.axis;
+    A.col(0) << j.child_point.cross(w1), w1;
+    A.col(1) << j.child_point.cross(j.axis2), j.axis2;
     return A;
   }
   Mat3 G;
@@ -296,7 +305,11 @@ inline Scene random_tree(std::mt19937& rng, int N, bool moving_base, bool multi_
     j.type = kind < 0.7 ? JointType::revolute : kind < 0.9 ? JointType::prismatic : JointType::fixed;
     if (multi_dof && (U(rng) > 0.6 || i == N / 2)) {
       const double which = U(rng);
-      j.type = which < 0 ? JointType::spherical : which < 0.5 ? JointType::planar : JointType::free;
+      j.type = which < -0.3 ? JointType::spherical
+               : which < 0.2 ? JointType::universal
+               : which < 0.6 ? JointType::planar
+                             : JointType::free;
+      j.axis2 = random_unit(rng);
     }
     j.axis = random_unit(rng);
     j.parent_point = 0.5 * Vec3(U(rng), U(rng), U(rng));

@@ -60,12 +60,14 @@ TEST_P(RandomTrees, SweepMatchesTheDenseHamiltonianFormulation) {
 
 INSTANTIATE_TEST_SUITE_P(UpTo30Bodies, RandomTrees, ::testing::Range(1, 41));
 
-// Trees with ball, planar and free joints (quaternions in q, the child's
-// own rates as velocity coordinates): the rates w = Mtilde^-1 (p - b) with
-// A from the test's own placements; q' = N(q) w, a quaternion's by the
-// test's own product q (x) (0, w) / 2; and p' = -dH/dq + Q for every
-// one-coordinate joint (there p is conjugate to q: a ball's or free joint's
-// map from its rates to its q' does not involve them).
+// Trees with ball, planar, free and universal joints (quaternions in q,
+// the child's own rates as velocity coordinates): the rates
+// w = Mtilde^-1 (p - b) with A from the test's own placements; q' = N(q) w,
+// a quaternion's by the test's own product q (x) (0, w) / 2; and
+// p' = -dH/dq + Q for every coordinate whose rate is its q' (one-coordinate
+// and universal joints: there p is conjugate to q, and a ball's or free
+// joint's map from its rates to its q' does not involve them). A universal
+// joint's A turns with q: this is its dA^T mu of (7).
 class RandomMultiDofTrees : public ::testing::TestWithParam<int> {};
 
 TEST_P(RandomMultiDofTrees, SweepMatchesTheDenseFormulation) {
@@ -96,8 +98,8 @@ TEST_P(RandomMultiDofTrees, SweepMatchesTheDenseFormulation) {
       const Eigen::Vector4d r = 0.5 * quaternion_product(q.segment<4>(at), Eigen::Vector4d(0, w[rate], w[rate + 1], w[rate + 2]));
       dq_expected.segment<4>(at) = r;
     };
-    if (j.is_scalar()) {
-      dq_expected[c] = w[v];
+    if (j.is_scalar() || j.type == JointType::universal) {
+      for (int k = 0; k < j.dof(); ++k) dq_expected[c + k] = w[v + k];
     } else if (j.type == JointType::spherical) {
       quaternion_rate(c, v);
     } else if (j.type == JointType::free) {
@@ -112,18 +114,28 @@ TEST_P(RandomMultiDofTrees, SweepMatchesTheDenseFormulation) {
   }
   EXPECT_LT(relative_error(ydot.head(nq), dq_expected), 1e-7) << N << " bodies";
 
+  // (position index, velocity index) of every coordinate conjugate to its p.
+  std::vector<std::pair<int, int>> conjugate;
+  for (int i = 0; i < model.size(); ++i)
+    if (model.joints[i].is_scalar() || model.joints[i].type == JointType::universal)
+      for (int k = 0; k < model.joints[i].dof(); ++k)
+        conjugate.emplace_back(model.coordinate[i] + k, model.velocity[i] + k);
   const double h = 1e-4;
-  VectorXd dp_expected = applied_forces(scene, q, w);
-  for (int k = 0; k < model.scalar_coordinates; ++k) {
-    auto H_at = [&](double dx) {
+  const VectorXd Q = applied_forces(scene, q, w);
+  double scale = 1;
+  std::vector<double> dp_expected;
+  for (const auto& [cq, cv] : conjugate) {
+    auto H_at = [&, cq = cq](double dx) {
       VectorXd qs = q;
-      qs[k] += dx;
+      qs[cq] += dx;
       return hamiltonian(scene, qs, p);
     };
-    dp_expected[k] -= (-H_at(2 * h) + 8 * H_at(h) - 8 * H_at(-h) + H_at(-2 * h)) / (12 * h);
-    EXPECT_NEAR(ydot[nq + k], dp_expected[k], 1e-7 * std::max(1.0, dp_expected.head(model.scalar_coordinates).norm()))
-        << "p' of " << model.velocity_name(k) << ", " << N << " bodies";
+    dp_expected.push_back(Q[cv] - (-H_at(2 * h) + 8 * H_at(h) - 8 * H_at(-h) + H_at(-2 * h)) / (12 * h));
+    scale = std::max(scale, std::abs(dp_expected.back()));
   }
+  for (std::size_t k = 0; k < conjugate.size(); ++k)
+    EXPECT_NEAR(ydot[nq + conjugate[k].second], dp_expected[k], 1e-7 * scale)
+        << "p' of " << model.velocity_name(conjugate[k].second) << ", " << N << " bodies";
 }
 
 INSTANTIATE_TEST_SUITE_P(UpTo20Bodies, RandomMultiDofTrees, ::testing::Range(1, 31));

@@ -29,9 +29,11 @@ using SparseMatrix = Eigen::SparseMatrix<double>;
 
 // The joint's 6 - n constrained directions: an orthonormal complement of
 // the n columns of A.
-Eigen::Matrix<double, 6, Eigen::Dynamic> constrained_directions(const Mat6& A, int dof) {
+using Directions = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, 6>;
+
+Directions constrained_directions(const Mat6& A, int dof) {
   if (dof == 0) return Mat6::Identity();
-  const Eigen::HouseholderQR<Eigen::Matrix<double, 6, Eigen::Dynamic>> qr(A.leftCols(dof));
+  const Eigen::HouseholderQR<Directions> qr(A.leftCols(dof));
   const Mat6 Q = qr.householderQ();
   return Q.rightCols(6 - dof);
 }
@@ -94,11 +96,23 @@ class SparseClosureSolver : public ClosureSolver {
         for (int c = 0; c < 6; ++c) parent_block_.push_back(&K_.coeffRef(joint_row_[i] + r, 6 * model.parent[i] + c));
     }
     for (int c = 0; c < m_; ++c) delta_slot_.push_back(&K_.coeffRef(loop_row_ + c, loop_row_ + c));
+    for (int i = 0; i < N; ++i) {
+      if (!model.joints[i].has_varying_axes()) continue;
+      varying_.push_back(i);
+      for (int r = 0; r < N_[i].cols(); ++r)
+        for (int c = 0; c < 6; ++c) varying_block_.push_back(&K_.coeffRef(joint_row_[i] + r, 6 * i + c));
+    }
 
     ldlt_.analyzePattern(K_);
   }
 
   bool factorize(const Sweep& sweep, double delta) override {
+    double** varying_slot = varying_block_.data();
+    for (int i : varying_) {
+      N_[i] = constrained_directions(sweep.motion_axes(i), model_.joints[i].dof());
+      for (int r = 0; r < N_[i].cols(); ++r)
+        for (int c = 0; c < 6; ++c) **varying_slot++ = N_[i](c, r);
+    }
     double** slot = parent_block_.data();
     for (int i = 0; i < model_.size(); ++i) {
       if (model_.parent[i] == kBase) continue;
@@ -135,7 +149,9 @@ class SparseClosureSolver : public ClosureSolver {
   int m_;
   double eps_;
   std::vector<int> joint_row_;
-  std::vector<Eigen::Matrix<double, 6, Eigen::Dynamic>> N_;
+  std::vector<Directions> N_;
+  std::vector<int> varying_;            // joints whose A (and N) turn with q: universal
+  std::vector<double*> varying_block_;  // their N_i^T entries
   int loop_row_ = 0;
   SparseMatrix K_;
   std::vector<double*> parent_block_, delta_slot_;

@@ -177,7 +177,7 @@ bool Dynamics::evaluate(double, const double* y, double* ydot) {
     regulator_->apply(lambda_.data(), F_);
   }
   sweep_.generalized_forces(F_, Q_.data());
-  sweep_.gyroscopic(v_, mu_, dp);
+  sweep_.gyroscopic(v_, mu_, w, dp);
   for (int c = 0; c < L.nv; ++c) dp[c] += Q_[c] + Q_joint_[c];
 
   for (int k = 0; k < L.size(); ++k)

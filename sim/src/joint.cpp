@@ -10,6 +10,7 @@ const char* joint_type_name(JointType type) {
     case JointType::spherical: return "spherical";
     case JointType::planar: return "planar";
     case JointType::free: return "free";
+    case JointType::universal: return "universal";
   }
   return "?";
 }
@@ -19,6 +20,7 @@ int Joint::dof() const {
     case JointType::revolute:
     case JointType::prismatic: return 1;
     case JointType::fixed: return 0;
+    case JointType::universal: return 2;
     case JointType::spherical:
     case JointType::planar: return 3;
     case JointType::free: return 6;
@@ -64,11 +66,15 @@ Placement Joint::placement(const double* q) const {
       P.G = quaternion_rotation(q + 3).transpose();
       P.rho = parent_point + Vec3(q[0], q[1], q[2]) - P.G.transpose() * child_point;
       break;
+    case JointType::universal:
+      P.G = (Eigen::AngleAxisd(q[0], axis) * Eigen::AngleAxisd(q[1], axis2)).toRotationMatrix().transpose();
+      P.rho = parent_point - P.G.transpose() * child_point;
+      break;
   }
   return P;
 }
 
-Mat6 Joint::motion_axes() const {
+Mat6 Joint::motion_axes(const double* q) const {
   // A rotation w about the joint point moves the child origin by
   // -w x r^i = r^i x w; a translation moves it by itself.
   Mat6 A = Mat6::Zero();
@@ -99,8 +105,28 @@ Mat6 Joint::motion_axes() const {
       A.block<3, 3>(0, 3) = skew(child_point);
       A.block<3, 3>(3, 3).setIdentity();
       break;
+    case JointType::universal: {
+      // The first axis as the child sees it after the second turn.
+      const Vec3 first = q ? Vec3(Eigen::AngleAxisd(q[1], axis2).toRotationMatrix().transpose() * axis) : axis;
+      A.col(0).head<3>() = child_point.cross(first);
+      A.col(0).tail<3>() = first;
+      A.col(1).head<3>() = child_point.cross(axis2);
+      A.col(1).tail<3>() = axis2;
+      break;
+    }
   }
   return A;
+}
+
+Mat6 Joint::motion_axes_rate(const double* q, const double* w) const {
+  Mat6 dA = Mat6::Zero();
+  if (type != JointType::universal) return dA;
+  // d/dt (R2^T a1) = -q2' a2 x (R2^T a1).
+  const Vec3 first = Eigen::AngleAxisd(q[1], axis2).toRotationMatrix().transpose() * axis;
+  const Vec3 turning = -w[1] * axis2.cross(first);
+  dA.col(0).head<3>() = child_point.cross(turning);
+  dA.col(0).tail<3>() = turning;
+  return dA;
 }
 
 namespace {
@@ -119,6 +145,7 @@ void Joint::position_rates(const double* q, const double* w, double* dq) const {
   switch (type) {
     case JointType::revolute:
     case JointType::prismatic: dq[0] = w[0]; break;
+    case JointType::universal: dq[0] = w[0], dq[1] = w[1]; break;
     case JointType::fixed: break;
     case JointType::spherical: quaternion_rate(q, w, dq); break;
     case JointType::planar: {
@@ -154,6 +181,7 @@ void Joint::rates(const double* q, const double* dq, double* w) const {
   switch (type) {
     case JointType::revolute:
     case JointType::prismatic: w[0] = dq[0]; break;
+    case JointType::universal: w[0] = dq[0], w[1] = dq[1]; break;
     case JointType::fixed: break;
     case JointType::spherical: quaternion_to_rate(q, dq, w); break;
     case JointType::planar: {

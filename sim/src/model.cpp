@@ -48,7 +48,9 @@ const char* entry_name(JointType type, int k, bool position) {
   static const char* const ball_v[] = {"wx", "wy", "wz"};
   static const char* const planar_q[] = {"x1", "x2", "angle"};
   static const char* const planar_v[] = {"v1", "v2", "w"};
+  static const char* const universal[] = {"1", "2"};
   switch (type) {
+    case JointType::universal: return universal[k];
     case JointType::free: return position ? free_q[k] : free_v[k];
     case JointType::spherical: return position ? ball_q[k] : ball_v[k];
     case JointType::planar: return position ? planar_q[k] : planar_v[k];

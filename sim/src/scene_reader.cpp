@@ -143,7 +143,7 @@ void SceneReader::read_base(const YAML::Node& node, Scene& scene) {
 }
 
 Joint SceneReader::read_joint(const YAML::Node& node, const std::string& field) const {
-  check_keys(node, {"name", "type", "axis", "parent_point", "child_point"}, field);
+  check_keys(node, {"name", "type", "axis", "axis2", "parent_point", "child_point"}, field);
   Joint j;
   const YAML::Node type = require(node, "type", field);
   const std::string t = text(type, field + ".type");
@@ -159,16 +159,29 @@ Joint SceneReader::read_joint(const YAML::Node& node, const std::string& field) 
     j.type = JointType::planar;
   else if (t == "free")
     j.type = JointType::free;
+  else if (t == "universal")
+    j.type = JointType::universal;
   else
     fail(type, field + ".type",
-         "unknown joint type '" + t + "' (expected revolute, prismatic, fixed, spherical, planar or free)");
-  if (j.type == JointType::revolute || j.type == JointType::prismatic || j.type == JointType::planar) {
-    const YAML::Node axis = require(node, "axis", field);
-    j.axis = vec3(axis, field + ".axis");
-    if (j.axis.norm() < 1e-12) fail(axis, field + ".axis", "the joint axis has zero length");
-    j.axis.normalize();
+         "unknown joint type '" + t + "' (expected revolute, prismatic, fixed, universal, spherical, planar or free)");
+  const auto unit_axis = [&](const char* key) {
+    const YAML::Node axis = require(node, key, field);
+    Vec3 a = vec3(axis, field + "." + key);
+    if (a.norm() < 1e-12) fail(axis, field + "." + key, "the joint axis has zero length");
+    return a.normalized();
+  };
+  if (j.type == JointType::revolute || j.type == JointType::prismatic || j.type == JointType::planar ||
+      j.type == JointType::universal) {
+    j.axis = unit_axis("axis");
   } else if (node["axis"]) {
     fail(node["axis"], field + ".axis", std::string("a ") + joint_type_name(j.type) + " joint has no axis");
+  }
+  if (j.type == JointType::universal) {
+    j.axis2 = unit_axis("axis2");
+    if (j.axis.cross(j.axis2).norm() < 1e-6)
+      fail(node["axis2"], field + ".axis2", "a universal joint's two axes must not be parallel");
+  } else if (node["axis2"]) {
+    fail(node["axis2"], field + ".axis2", "only a universal joint has a second axis");
   }
   j.parent_point = vec3(require(node, "parent_point", field), field + ".parent_point");
   j.child_point = vec3(require(node, "child_point", field), field + ".child_point");

@@ -20,7 +20,8 @@ Sweep::Sweep(const Model& model)
     M_[i] = model.bodies[i].spatial_mass();
     if (model.joints[i].dof() > 1) {
       multi_[i] = static_cast<int>(multi_axes_.size());
-      multi_axes_.push_back({model.joints[i].motion_axes(), Mat6::Zero(), Mat6::Zero(), model.joints[i].dof()});
+      multi_axes_.push_back({model.joints[i].motion_axes(q_.data() + std::max(0, model.coordinate[i])), Mat6::Zero(),
+                             Mat6::Zero(), model.joints[i].dof(), model.joints[i].has_varying_axes()});
     }
   }
 }
@@ -30,6 +31,7 @@ Sweep::Sweep(const Model& model)
 void Sweep::factor_multi_axis(int i, const double* joint_diagonal) {
   MultiAxis& J = multi_axes_[multi_[i]];
   const int c = model_.velocity[i];
+  if (J.varying) J.A = model_.joints[i].motion_axes(q_.data() + model_.coordinate[i]);
   J.M_star_A.noalias() = M_star_[i] * J.A;
   Mat6 K = J.A.transpose() * J.M_star_A;
   for (int r = 0; r < 6; ++r) K(r, r) += r < J.n ? (joint_diagonal ? joint_diagonal[c + r] : 0.0) : 1.0;
@@ -105,6 +107,7 @@ void Sweep::accelerations(const std::vector<Vec6>& v, const double* dq, const st
     if (multi_[i] >= 0) {
       const MultiAxis& J = multi_axes_[multi_[i]];
       a[i] = motion_cross(v[i], J.A * rates_of(i, dq));
+      if (J.varying) a[i] += model_.joints[i].motion_axes_rate(q_.data() + model_.coordinate[i], dq + c) * rates_of(i, dq);
       const Vec6 u = rates_of(i, Q) - J.A.transpose() * bias[i];
       for (int r = 0; r < J.n; ++r) ddq[c + r] = u[r];
     } else if (c >= 0) {
@@ -143,11 +146,13 @@ void Sweep::momenta(const std::vector<Vec6>& v, const std::vector<Vec6>& phi, st
   for (int i = 0; i < model_.size(); ++i) mu[i].noalias() = M_star_[i] * v[i] + phi[i];
 }
 
-void Sweep::gyroscopic(const std::vector<Vec6>& v, const std::vector<Vec6>& mu, double* dp) const {
+void Sweep::gyroscopic(const std::vector<Vec6>& v, const std::vector<Vec6>& mu, const double* w, double* dp) const {
   for (int i = 0; i < model_.size(); ++i) {
     const int c = model_.velocity[i];
     if (multi_[i] >= 0) {
-      const Vec6 dp_i = -multi_axes_[multi_[i]].A.transpose() * omega_times(v[i], mu[i]);
+      const MultiAxis& J = multi_axes_[multi_[i]];
+      Vec6 dp_i = -J.A.transpose() * omega_times(v[i], mu[i]);
+      if (J.varying) dp_i += model_.joints[i].motion_axes_rate(q_.data() + model_.coordinate[i], w + c).transpose() * mu[i];
       for (int r = 0; r < model_.joints[i].dof(); ++r) dp[c + r] = dp_i[r];
     } else if (c >= 0) {
       dp[c] = -A_[i].dot(omega_times(v[i], mu[i]));

@@ -2,18 +2,22 @@
 //
 // The child frame coincides in orientation with the parent frame at q = 0
 // (the identity quaternion for a ball or free joint). Every joint is
-// scleronomic (v*_i = 0) and its A_i is constant in the child frame, so
-// dA_i/dt of (7) vanishes: a revolute or prismatic joint turns or slides
+// scleronomic (v*_i = 0). A revolute or prismatic joint turns or slides
 // about a fixed axis; a spherical, planar or free joint takes as velocity
 // coordinates the child's relative velocity in the child frame (angular
 // rate, and the joint point's linear velocity), quasi-velocities whose q'
-// is not their own rate but follows from them (position_rates).
+// is not their own rate but follows from them (position_rates). For all of
+// these A_i is constant in the child frame, so dA_i/dt of (7) vanishes. A
+// universal joint turns by q1 about `axis` (parent frame), then by q2
+// about `axis2` (carried by the first turn, as by a cross): its rates are
+// q', but its first column turns with q2 in the child frame, so it has
+// the dA_i/dt of (7) (motion_axes_rate).
 //
 // Coordinates: n_i velocity coordinates (dof) and m_i position coordinates
-// (positions): revolute and prismatic 1/1, fixed 0/0, spherical 3/4 (a unit
-// quaternion w, x, y, z), planar 3/3 (x1, x2 along two in-plane axes, angle
-// about the normal), free 6/7 (the joint point's displacement x, y, z in
-// the parent frame, then a quaternion).
+// (positions): revolute and prismatic 1/1, fixed 0/0, universal 2/2,
+// spherical 3/4 (a unit quaternion w, x, y, z), planar 3/3 (x1, x2 along
+// two in-plane axes, angle about the normal), free 6/7 (the joint point's
+// displacement x, y, z in the parent frame, then a quaternion).
 #pragma once
 
 #include <string>
@@ -22,7 +26,7 @@
 
 namespace unfurl {
 
-enum class JointType { revolute, prismatic, fixed, spherical, planar, free };
+enum class JointType { revolute, prismatic, fixed, spherical, planar, free, universal };
 
 const char* joint_type_name(JointType type);
 
@@ -30,6 +34,7 @@ struct Joint {
   std::string name;
   JointType type = JointType::revolute;
   Vec3 axis = Vec3::UnitX();        // unit vector, parent frame (a planar joint's normal)
+  Vec3 axis2 = Vec3::UnitY();       // a universal joint's second axis (child frame, = parent frame at q = 0)
   Vec3 parent_point = Vec3::Zero(); // r^k: the hinge point in the parent frame
   Vec3 child_point = Vec3::Zero();  // r^i: the same point in the child frame
 
@@ -52,10 +57,14 @@ struct Joint {
   Placement placement(double q) const { return placement(&q); }
 
   // A_i = (G drho/dq ; a) of (1): 6 x n_i, in the leading columns of a 6 x 6
-  // (the rest zero).
-  Mat6 motion_axes() const;
+  // (the rest zero), at positions q (read only by a universal joint).
+  Mat6 motion_axes(const double* q = nullptr) const;
   // The single column of a one-coordinate joint.
   Vec6 motion_axis() const { return motion_axes().col(0); }
+  // Whether A_i depends on q (a universal joint).
+  bool has_varying_axes() const { return type == JointType::universal; }
+  // dA_i/dt at positions q and rates w (zero but for a universal joint).
+  Mat6 motion_axes_rate(const double* q, const double* w) const;
 
   // q' of the positions from the velocity coordinates w: the same numbers
   // for revolute and prismatic joints; x' = G^T u and a quaternion's

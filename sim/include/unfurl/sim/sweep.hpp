@@ -84,9 +84,9 @@ class Sweep {
     return M_star_[i] * a[i] + bias[i];
   }
 
-  // dp_i = -A_i^T Omega_i mu_i, the velocity-dependent part of (7) (dA_i = 0:
-  // every joint's A_i is constant in the child frame).
-  void gyroscopic(const std::vector<Vec6>& v, const std::vector<Vec6>& mu, double* dp) const;
+  // dp_i = (dA_i^T - A_i^T Omega_i) mu_i, the velocity-dependent part of
+  // (7); dA_i = 0 but for a universal joint (its rates from w).
+  void gyroscopic(const std::vector<Vec6>& v, const std::vector<Vec6>& mu, const double* w, double* dp) const;
 
   // The same three passes for k load cases: S[i] is 6 x k, P is nq x k.
   template <class S, class P>
@@ -98,8 +98,10 @@ class Sweep {
   void force_pass(std::vector<S>& F, Pout& Q) const;
 
   const Placement& placement(int i) const { return X_[i]; }
-  // A_i, 6 x n_i in the leading columns.
-  Mat6 motion_axes(int i) const { return model_.joints[i].motion_axes(); }
+  // A_i at the configuration, 6 x n_i in the leading columns.
+  Mat6 motion_axes(int i) const {
+    return multi_[i] >= 0 ? multi_axes_[multi_[i]].A : model_.joints[i].motion_axes();
+  }
   const Model& model() const { return model_; }
 
  private:
@@ -112,6 +114,7 @@ class Sweep {
   struct MultiAxis {
     Mat6 A, M_star_A, D;
     int n = 0;
+    bool varying = false;  // A depends on q (a universal joint)
   };
   // A 6 x k block whose first n rows are rows c.. of x, the rest zero.
   template <class P>
