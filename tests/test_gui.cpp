@@ -157,6 +157,57 @@ TEST(Gui, OpeningAnotherSceneDropsThePreviousScenesRuns) {
   EXPECT_TRUE(std::isnan(latch_time(report, "previous", "j1"))) << "the z-fold's run became the ghost: " << report;
 }
 
+// Bus-yellow pixels in a region of the screenshot.
+int bus_pixels(const render::Image& image, int x0, int y0, int x1, int y1) {
+  int count = 0;
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) {
+      const std::uint8_t* p = image.pixel(x, y);
+      if (p[0] > 120 && p[1] > 80 && p[2] < 90 && p[0] > p[2] + 60) ++count;
+    }
+  return count;
+}
+
+// A free-floating bus: its attitude plot is a tab of its own, and the
+// camera rides with the bus or stays in the inertial frame, where the bus
+// is seen turned (zfold_free's turns by about 0.2 rad).
+TEST(Gui, AFreeBusHasItsAttitudePlotAndTheCameraRidesWithItOrNot) {
+  if (!app::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
+  const Scratch scratch("unfurl_gui_free");
+  const fs::path& dir = scratch.path;
+  std::ofstream(dir / "session.txt") << "wait_run\n"
+                                        "plot bus\n"
+                                        "scrub 18\n"
+                                        "wait 0.5\n"
+                                        "screenshot " << (dir / "riding.png").string() << "\n"
+                                        "camera_frame inertial\n"
+                                        "wait 1\n"
+                                        "screenshot " << (dir / "inertial.png").string() << "\n"
+                                        "report " << (dir / "report.json").string() << "\n"
+                                        "quit\n";
+  ASSERT_EQ(gui_session_failure(dir, "zfold_free"), "");
+  const std::string report = slurp(dir / "report.json");
+  EXPECT_NE(report.find("\"plot\": \"bus\""), std::string::npos) << report;
+  EXPECT_NE(report.find("\"camera_frame\": \"inertial\""), std::string::npos) << report;
+  const render::Image riding = test::read_png((dir / "riding.png").string());
+  const render::Image inertial = test::read_png((dir / "inertial.png").string());
+  ASSERT_EQ(riding.width, inertial.width);
+  // The 3D view: the upper left of the window.
+  const int x1 = riding.width * 6 / 10, y1 = riding.height / 2;
+  EXPECT_GT(bus_pixels(riding, 0, 60, x1, y1), 2000);
+  EXPECT_GT(bus_pixels(inertial, 0, 60, x1, y1), 2000);
+  int differing = 0;
+  for (int y = 60; y < y1; ++y)
+    for (int x = 0; x < x1; ++x)
+      for (int c = 0; c < 3; ++c)
+        if (std::abs(riding.pixel(x, y)[c] - inertial.pixel(x, y)[c]) > 40) {
+          ++differing;
+          break;
+        }
+  std::printf("the inertial view differs from the riding one in %d pixels\n", differing);
+  EXPECT_GT(differing, 1000) << "the camera did not leave the bus";
+}
+
 // Edits by name, undone and redone, and saved as a scene file that reloads
 // to the same run.
 TEST(Gui, EditsUndoRedoAndSaveAsAFileThatReloadsToTheSameRun) {

@@ -9,9 +9,11 @@
 #include <set>
 #include <sstream>
 
+#include "unfurl/render/camera_frame.hpp"
 #include "unfurl/render/frame_renderer.hpp"
 #include "unfurl/render/plot_renderer.hpp"
 #include "unfurl/render/trajectory_plots.hpp"
+#include "png_read.hpp"
 #include "unfurl/render/gl_context.hpp"
 #include "unfurl/render/mesh_generator.hpp"
 #include "render_options.hpp"
@@ -277,6 +279,7 @@ TEST(RenderCommand, WritesFramesPlotsAndAVideoWithTheExpectedFrameCount) {
   for (const char* plot : {"angles.png", "rates.png", "loads.png", "energy.png"})
     EXPECT_TRUE(fs::exists(dir / plot)) << plot;
   EXPECT_FALSE(fs::exists(dir / "residuals.png"));  // a tree has no loop gaps
+  EXPECT_FALSE(fs::exists(dir / "bus.png"));        // nor a free bus
   const std::string probe = "ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames "
                             "-of csv=p=0 " + video;
   FILE* pipe = popen(probe.c_str(), "r");
@@ -284,6 +287,48 @@ TEST(RenderCommand, WritesFramesPlotsAndAVideoWithTheExpectedFrameCount) {
   ASSERT_NE(std::fgets(buf, sizeof buf, pipe), nullptr);
   pclose(pipe);
   EXPECT_EQ(std::atoi(buf), 11);
+}
+
+// Riding with a free bus holds the bus at the origin, unturned, and keeps
+// every body where it is relative to the bus; the inertial frame is the
+// solver's.
+TEST(CameraFrame, RidingWithTheBusHoldsItStillAndKeepsTheArrayOnIt) {
+  const Scene scene = load_builtin_scene("zfold_free", {{"run.t_end", "6"}});
+  const RunResult run = simulate(scene, scene.run);
+  ASSERT_EQ(run.status, RunStatus::finished);
+  const std::vector<double> q(run.trajectory.samples.back().y.begin(),
+                              run.trajectory.samples.back().y.begin() + scene.model.nq);
+  std::vector<Pose> riding, inertial, solver;
+  render::poses_in_camera_frame(render::CameraFrame::bus, scene.model, q.data(), riding);
+  render::poses_in_camera_frame(render::CameraFrame::inertial, scene.model, q.data(), inertial);
+  body_poses(scene.model, q.data(), solver);
+  EXPECT_LT(riding[0].position.norm(), 1e-15);
+  EXPECT_LT((riding[0].rotation - Mat3::Identity()).norm(), 1e-15);
+  EXPECT_GT(Eigen::AngleAxisd(inertial[0].rotation).angle(), 0.05) << "the bus has turned by t = 6 s";
+  for (int i = 0; i < scene.model.size(); ++i) {
+    EXPECT_EQ(inertial[i].position, solver[i].position);
+    // Body i seen from the bus: the same either way.
+    const Vec3 seen = inertial[0].rotation * (inertial[i].position - inertial[0].position);
+    EXPECT_LT((riding[i].position - seen).norm(), 1e-12);
+    EXPECT_LT((riding[i].rotation - inertial[i].rotation * inertial[0].rotation.transpose()).norm(), 1e-12);
+  }
+}
+
+// A free-floating bus: its attitude plot, and frames from the inertial
+// frame that differ from those riding with the bus once it has turned.
+TEST(RenderCommand, AFreeBusGetsItsPlotAndTheCameraFrameMatters) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("unfurl_render_free_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  const std::string common = std::string(UNFURL_BINARY) + " render zfold_free --t-end 4 --from 4 --to 4 --size 320x180 --quiet";
+  ASSERT_EQ(run_command(common + " --plots --out " + (dir / "bus").string()), 0);
+  ASSERT_EQ(run_command(common + " --camera-frame inertial --out " + (dir / "inertial").string()), 0);
+  EXPECT_TRUE(fs::exists(dir / "bus" / "bus.png"));
+  const render::Image riding = test::read_png((dir / "bus" / "frame_00000.png").string());
+  const render::Image inertial = test::read_png((dir / "inertial" / "frame_00000.png").string());
+  EXPECT_NE(riding.rgb, inertial.rgb);
+  EXPECT_NE(run_command(common + " --camera-frame nowhere --out " + (dir / "bad").string()), 0);
+  fs::remove_all(dir);
 }
 
 // H.264 needs even sizes: an odd one is padded by a pixel and said so, not a

@@ -3,6 +3,7 @@
 #include "gui_panels.hpp"
 #include "json_writer.hpp"
 #include "output_file.hpp"
+#include "unfurl/render/trajectory_plots.hpp"
 
 namespace unfurl::app {
 
@@ -55,6 +56,10 @@ void write_session_report(const GuiState& state, const std::string& path) {
   json.value("run_wall_time_s", state.progress.wall_time_s).value("run_steps", state.progress.steps);
   json.value("edit_to_curves_s", state.curves_at > state.edited_at ? state.curves_at - state.edited_at : -1.0);
   json.value("play_time", state.play_time);
+  const std::vector<render::PlotKind> kinds = render::plot_kinds(state.scene);
+  const auto tab = static_cast<std::size_t>(state.plot_tab);
+  json.value("plot", tab < kinds.size() ? render::plot_kind_name(kinds[tab]) : "all");
+  json.value("camera_frame", render::camera_frame_name(state.camera_frame));
   json.value("fps", state.fps);
   json.value("frames_while_running", state.frames_while_running);
   json.value("fps_while_running",
