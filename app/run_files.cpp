@@ -25,10 +25,16 @@ void write_trajectory_csv(const Scene& scene, const Trajectory& trajectory, cons
   for (int c = n1; c < model.nq; ++c) out << ",q." << model.position_name(c) << ",dq." << model.position_name(c);
   for (int c = n1; c < model.nv; ++c) out << ",p." << model.velocity_name(c);
   for (const Loop& loop : scene.loops) out << ",closure_m." << loop.name << ",closure_rad." << loop.name;
+  // Each ball or free joint's orientation as a rotation vector and its
+  // child's angular rate (its own frame); the system's momentum.
+  std::vector<int> turning;
+  for (int i = 0; i < model.size(); ++i)
+    if (model.joints[i].has_quaternion()) turning.push_back(i);
+  for (int i : turning) {
+    for (const char* axis : {"x", "y", "z"}) out << ",rotation_vector." << model.joints[i].name << '.' << axis;
+    for (const char* axis : {"x", "y", "z"}) out << ",rate." << model.joints[i].name << '.' << axis;
+  }
   if (bus) {
-    const std::string& name = model.bodies[0].name;
-    for (const char* axis : {"x", "y", "z"}) out << ',' << name << "_rotation_vector." << axis;
-    for (const char* axis : {"x", "y", "z"}) out << ',' << name << "_rate." << axis;
     for (const char* axis : {"x", "y", "z"}) out << ",momentum." << axis;
     for (const char* axis : {"x", "y", "z"}) out << ",angular_momentum." << axis;
   }
@@ -42,11 +48,14 @@ void write_trajectory_csv(const Scene& scene, const Trajectory& trajectory, cons
     for (int c = n1; c < model.nv; ++c) out << ',' << format_number(s.y[L.p() + c]);
     for (std::size_t l = 0; l < scene.loops.size(); ++l)
       out << ',' << format_number(s.closure[l].distance) << ',' << format_number(s.closure[l].angle);
-    if (bus) {
-      const BusMotion motion = bus_motion(model, s.y.data() + L.q(), s.dq.data());
-      for (const Vec3* x : {&motion.rotation_vector, &motion.rate, &s.momentum.linear, &s.momentum.angular})
+    for (int i : turning) {
+      const BusMotion motion = joint_orientation(model, i, s.y.data() + L.q(), s.dq.data());
+      for (const Vec3* x : {&motion.rotation_vector, &motion.rate})
         for (int a = 0; a < 3; ++a) out << ',' << format_number((*x)[a]);
     }
+    if (bus)
+      for (const Vec3* x : {&s.momentum.linear, &s.momentum.angular})
+        for (int a = 0; a < 3; ++a) out << ',' << format_number((*x)[a]);
     out << ',' << format_number(s.energy.total()) << ',' << format_number(s.energy.dissipated) << '\n';
   }
   file.commit();

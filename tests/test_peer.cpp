@@ -206,8 +206,8 @@ TEST(Peer, FreeZfoldAgreesOnTheBusAndThroughEveryLatch) {
 
 // Ball, universal and planar joints (MJCF ball; two hinges in one body;
 // two slides and a hinge) under gravity, the boom spinning, the puck
-// sliding off. MuJoCo's difference from unfurl (ERK, rtol 1e-13) falls as
-// dt^2 here (7.1e-8, 1.8e-8, 4.5e-9 rad or m over 1 s at dt 1e-4, 5e-5,
+// sliding on its tether (a point spring: a spatial tendon). MuJoCo's difference from unfurl (ERK, rtol 1e-13) falls as
+// dt^2 here (2.2e-8, 5.4e-9, 1.3e-9 rad or m over 1 s at dt 1e-4, 5e-5,
 // 2.5e-5): its own error, shrinking towards unfurl's answer.
 TEST(Peer, BallPendulumAgrees) { expect_agreement("ball_pendulum", {}, 1, 2.5e-5, {1e-8, 1e-8, 0}); }
 

@@ -29,17 +29,17 @@ SystemMomentum system_momentum(const Model& model, const std::vector<Pose>& pose
   return out;
 }
 
-BusMotion bus_motion(const Model& model, const double* q, const double* dq) {
-  const Joint& joint = model.joints[0];
-  const int c = model.coordinate[0];
+BusMotion joint_orientation(const Model& model, int joint, const double* q, const double* dq) {
+  const Joint& j = model.joints[joint];
+  const int c = model.coordinate[joint], at = c + j.quaternion_offset();
   Vec6 w;
-  joint.rates(q + c, dq + c, w.data());
-  Eigen::Quaterniond attitude(q[c + 3], q[c + 4], q[c + 5], q[c + 6]);
+  j.rates(q + c, dq + c, w.data());
+  Eigen::Quaterniond attitude(q[at], q[at + 1], q[at + 2], q[at + 3]);
   attitude.normalize();
   if (attitude.w() < 0) attitude.coeffs() *= -1;  // the shorter way round
   const Eigen::AngleAxisd turn(attitude);
   return {Eigen::Vector4d(attitude.w(), attitude.x(), attitude.y(), attitude.z()), turn.angle() * turn.axis(),
-          w.tail<3>()};
+          w.segment<3>(j.dof() - 3)};
 }
 
 double rotation_angle_between(const Eigen::Vector4d& a, const Eigen::Vector4d& b) {

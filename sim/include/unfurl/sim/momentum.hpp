@@ -22,16 +22,19 @@ struct SystemMomentum {
 // From the poses and the body velocities v_i (body frames).
 SystemMomentum system_momentum(const Model& model, const std::vector<Pose>& poses, const std::vector<Vec6>& v);
 
-// A free-floating bus's attitude and rate from its free joint's positions
-// and their rates: the quaternion (w, x, y, z, unit), the rotation vector
-// (angle times axis, the angle in [0, pi]) and the angular rate in the bus
-// frame.
+// The orientation a ball or free joint gives its child, from q and q': the
+// quaternion (w, x, y, z, unit), the rotation vector (angle times axis, the
+// angle in [0, pi]) and the angular rate in the child's frame.
 struct BusMotion {
   Eigen::Vector4d quaternion;
   Vec3 rotation_vector;
   Vec3 rate;
 };
-BusMotion bus_motion(const Model& model, const double* q, const double* dq);
+BusMotion joint_orientation(const Model& model, int joint, const double* q, const double* dq);
+// A free-floating bus's (joint 0's).
+inline BusMotion bus_motion(const Model& model, const double* q, const double* dq) {
+  return joint_orientation(model, 0, q, dq);
+}
 
 // The angle of the rotation from attitude a to attitude b (unit quaternions).
 double rotation_angle_between(const Eigen::Vector4d& a, const Eigen::Vector4d& b);
