@@ -62,15 +62,26 @@ double latch_time(const std::string& report, const std::string& which, const std
   return std::stod(m[1]);
 }
 
-// Pixels of the solar cells' blue in a region of the screenshot.
-int cell_pixels(const render::Image& image, int x0, int y0, int x1, int y1) {
+// Pixels in a region of the screenshot whose colour passes `is`.
+template <class Is>
+int count_pixels(const render::Image& image, int x0, int y0, int x1, int y1, Is is) {
   int count = 0;
   for (int y = y0; y < y1; ++y)
-    for (int x = x0; x < x1; ++x) {
-      const std::uint8_t* p = image.pixel(x, y);
-      if (p[2] > 70 && p[2] > p[0] + 40 && p[2] > p[1] + 25) ++count;
-    }
+    for (int x = x0; x < x1; ++x)
+      if (is(image.pixel(x, y))) ++count;
   return count;
+}
+
+// Pixels of the solar cells' blue in a region of the screenshot.
+int cell_pixels(const render::Image& image, int x0, int y0, int x1, int y1) {
+  return count_pixels(image, x0, y0, x1, y1,
+                      [](const std::uint8_t* p) { return p[2] > 70 && p[2] > p[0] + 40 && p[2] > p[1] + 25; });
+}
+
+// Bus-yellow pixels in a region of the screenshot.
+int bus_pixels(const render::Image& image, int x0, int y0, int x1, int y1) {
+  return count_pixels(image, x0, y0, x1, y1,
+                      [](const std::uint8_t* p) { return p[0] > 120 && p[1] > 80 && p[2] < 90 && p[0] > p[2] + 60; });
 }
 
 TEST(Gui, ScriptedSessionPlaysScrubsChangesAPreloadAndReruns) {
@@ -155,17 +166,6 @@ TEST(Gui, OpeningAnotherSceneDropsThePreviousScenesRuns) {
   const std::string report = slurp(dir / "opened.json");
   EXPECT_FALSE(std::isnan(latch_time(report, "current", "j8"))) << report;  // the pantograph's own run
   EXPECT_TRUE(std::isnan(latch_time(report, "previous", "j1"))) << "the z-fold's run became the ghost: " << report;
-}
-
-// Bus-yellow pixels in a region of the screenshot.
-int bus_pixels(const render::Image& image, int x0, int y0, int x1, int y1) {
-  int count = 0;
-  for (int y = y0; y < y1; ++y)
-    for (int x = x0; x < x1; ++x) {
-      const std::uint8_t* p = image.pixel(x, y);
-      if (p[0] > 120 && p[1] > 80 && p[2] < 90 && p[0] > p[2] + 60) ++count;
-    }
-  return count;
 }
 
 // A free-floating bus: its attitude plot is a tab of its own, and the
