@@ -66,6 +66,10 @@ void print_summary(const Scene& scene, const RunResult& result, const RunSummary
                 latch->peak.t);
   std::printf("energy       %.9g J at t = 0, %.9g J at t = %g s, %.9g J dissipated\n", s.energy_initial,
               s.energy_final, s.t_reached, s.energy_dissipated);
+  if (s.free_bus)
+    std::printf("bus          turned %.4g rad, peak rate %.4g rad/s; momentum drift %.2g (linear), %.2g (angular)\n",
+                s.free_bus->final_attitude_change, s.free_bus->peak_rate, s.free_bus->linear_momentum_drift,
+                s.free_bus->angular_momentum_drift);
   std::printf("files        %s/{trajectory,loads,events}.csv, %s/summary.json\n", dir.c_str(), dir.c_str());
 }
 
