@@ -43,6 +43,7 @@ int command_export(const std::vector<std::string>& argv) {
   const MjcfModel model = export_mjcf(scene);
   for (const std::string& what : model.not_exported)
     std::fprintf(stderr, "unfurl export: not in the MJCF model: %s\n", what.c_str());
+  for (const std::string& what : model.warnings) std::fprintf(stderr, "unfurl export: warning: %s\n", what.c_str());
   const auto path = args.has("-o") ? args.get("-o") : args.get("--output");
   if (!path) {
     std::cout << model.xml;

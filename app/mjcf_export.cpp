@@ -87,6 +87,10 @@ class Writer {
     out_ << "</mujoco>\n";
     out.xml = out_.str();
     out.not_exported = not_exported_;
+    if (deepest_ > kMujocoDeepestBody)
+      out.warnings.push_back("bodies nest " + std::to_string(deepest_) + " deep (down to '" + deepest_body_ +
+                             "'); MuJoCo's XML parser refuses more than " + std::to_string(kMujocoDeepestBody) +
+                             " (\"Element nesting is too deep\"), so MuJoCo will not load this file");
     return out;
   }
 
@@ -110,6 +114,7 @@ class Writer {
 
   void body(int i, int depth) {
     const Model& m = model_;
+    if (depth - 1 > deepest_) deepest_ = depth - 1, deepest_body_ = m.bodies[i].name;
     const std::string pad(2 * depth, ' ');
     const Joint& joint = m.joints[i];
     const int c = m.coordinate[i];
@@ -309,6 +314,8 @@ class Writer {
   std::vector<int> written_;  // bodies whose joints are in the file, in file order
   std::map<int, const Loop*> image_of_, body_of_;
   std::vector<std::string> not_exported_;
+  int deepest_ = 0;  // bodies nested below the world
+  std::string deepest_body_;
   std::ostringstream out_;
 };
 

@@ -11,6 +11,8 @@
 // as a comment and listed: the latches (also kept as custom numeric data,
 // latch:JOINT = [position, stiffness, damping, side], side = sign of
 // q0 - position or 0 when it starts engaged), body loads and a moving base.
+// A mechanism nested deeper than MuJoCo's parser reads is exported with a
+// warning (MjcfModel::warnings), not cut into a shallower tree.
 #pragma once
 
 #include <string>
@@ -20,9 +22,16 @@
 
 namespace unfurl::app {
 
+// MuJoCo 2.2's XML parser (tinyxml2) refuses elements nested 100 deep: with
+// <mujoco> and <worldbody> above them and a joint inside, bodies may nest
+// this deep (measured: the generated 95-stage pantograph, 96 deep, loads;
+// 97 does not).
+inline constexpr int kMujocoDeepestBody = 96;
+
 struct MjcfModel {
   std::string xml;
   std::vector<std::string> not_exported;  // what the model leaves out
+  std::vector<std::string> warnings;      // what keeps MuJoCo from loading it
 };
 
 // Throws std::runtime_error for a mechanism MJCF cannot hold (an image

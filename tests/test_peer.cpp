@@ -228,6 +228,24 @@ TEST(Export, EveryBuiltInSceneLoadsAndRunsInMujocoWithoutWarnings) {
   }
 }
 
+// MuJoCo's parser stops at a nesting depth: the exporter warns exactly
+// where MuJoCo refuses (a generated 95-stage pantograph loads, 96 does not).
+TEST(Export, WarnsWhereMujocosParserStopsAndOnlyThere) {
+  const fs::path dir = work_dir();
+  for (const int stages : {95, 96}) {
+    const std::string scene = (dir / ("p" + std::to_string(stages) + ".yaml")).string();
+    const std::string xml = (dir / ("p" + std::to_string(stages) + ".xml")).string();
+    ASSERT_EQ(run(std::string(UNFURL_BINARY) + " generate pantograph --stages " + std::to_string(stages) + " -o " + scene).code, 0);
+    const Outcome exported = run(std::string(UNFURL_BINARY) + " export mjcf " + scene + " -o " + xml);
+    ASSERT_EQ(exported.code, 0) << exported.output;
+    const bool warned = exported.output.find("MuJoCo will not load this file") != std::string::npos;
+    const Outcome loaded = run(std::string(UNFURL_MUJOCO_PEER) + " " + xml + " 0.001 0.001 0.001 " +
+                               (dir / ("p" + std::to_string(stages))).string());
+    EXPECT_EQ(warned, stages == 96) << exported.output;
+    EXPECT_EQ(loaded.code == 0, stages == 95) << loaded.output;
+  }
+}
+
 TEST(Export, ListsWhatMjcfCannotSay) {
   const Outcome o = run(std::string(UNFURL_BINARY) + " export mjcf pantograph -o " + (work_dir() / "p.xml").string());
   EXPECT_EQ(o.code, 0);
