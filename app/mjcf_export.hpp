@@ -2,7 +2,10 @@
 // engine a user already trusts.
 //
 // The bodies are placed at the scene's initial coordinates q0 and every
-// joint's `ref` is q0, so MuJoCo's joint positions are unfurl's q. Each
+// hinge's and slide's `ref` is q0, so MuJoCo's joint positions are unfurl's
+// q; a ball, universal or planar joint's body sits at the joint's neutral
+// position instead (its qpos is then unfurl's q), a free bus where q0 puts
+// it (a `freejoint`, whose qpos is its pose). Each
 // closed loop is merged back: the split body takes its image's mass and
 // inertia, and the joint that carried the image becomes an `equality/connect`
 // at its pivot (a point constraint: the rest of the mechanism fixes the
