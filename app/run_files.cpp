@@ -49,7 +49,7 @@ void write_trajectory_csv(const Scene& scene, const Trajectory& trajectory, cons
     for (std::size_t l = 0; l < scene.loops.size(); ++l)
       out << ',' << format_number(s.closure[l].distance) << ',' << format_number(s.closure[l].angle);
     for (int i : turning) {
-      const BusMotion motion = joint_orientation(model, i, s.y.data() + L.q(), s.dq.data());
+      const JointOrientation motion = joint_orientation(model, i, s.y.data() + L.q(), s.dq.data());
       for (const Vec3* x : {&motion.rotation_vector, &motion.rate})
         for (int a = 0; a < 3; ++a) out << ',' << format_number((*x)[a]);
     }

@@ -91,15 +91,6 @@ void Dynamics::joint_torques(const double* q, const double* dq, double* Q) const
   }
 }
 
-void Dynamics::position_rates(const double* q, const double* w, double* dq) const {
-  const Model& model = scene_.model;
-  std::copy_n(w, model.scalar_coordinates, dq);
-  if (!model.has_multi_dof_joints()) return;
-  for (int i = 0; i < model.size(); ++i)
-    if (model.joints[i].dof() > 1)
-      model.joints[i].position_rates(q + model.coordinate[i], w + model.velocity[i], dq + model.coordinate[i]);
-}
-
 void Dynamics::add_point_springs() {
   for (const PointSpring& s : scene_.point_springs) {
     const PointSpringGeometry g = point_spring_geometry(s, poses_, v_, scene_.model.base_velocity);
@@ -114,10 +105,7 @@ double Dynamics::dissipation(const double* q, const double* dq) {
     // The rate of a length is the same seen from the base at rest.
     sweep_.set_configuration(q);
     sweep_.poses(poses_);
-    std::copy_n(dq, model.scalar_coordinates, w_.begin());
-    for (int i = 0; i < model.size(); ++i)
-      if (model.joints[i].dof() > 1)
-        model.joints[i].rates(q + model.coordinate[i], dq + model.coordinate[i], w_.data() + model.velocity[i]);
+    rates_from_position_rates(model, q, dq, w_.data());
     sweep_.velocities_from_rates(w_.data(), v_);
     for (const PointSpring& s : scene_.point_springs) {
       const PointSpringGeometry g = point_spring_geometry(s, poses_, v_, Vec6::Zero());
@@ -155,7 +143,7 @@ bool Dynamics::evaluate(double, const double* y, double* ydot) {
   sweep_.bias(p, phi_);
   sweep_.velocities(p, phi_, model.base_velocity, w_.data(), v_);
   sweep_.momenta(v_, phi_, mu_);
-  position_rates(q, w_.data(), dq);
+  position_rates(model, q, w_.data(), dq);
   const double* w = w_.data();
 
   for (Vec6& f : F_) f.setZero();

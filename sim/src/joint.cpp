@@ -15,6 +15,13 @@ const char* joint_type_name(JointType type) {
   return "?";
 }
 
+std::optional<JointType> parse_joint_type(const std::string& name) {
+  for (JointType type : {JointType::revolute, JointType::prismatic, JointType::fixed, JointType::universal,
+                         JointType::spherical, JointType::planar, JointType::free})
+    if (name == joint_type_name(type)) return type;
+  return std::nullopt;
+}
+
 int Joint::dof() const {
   switch (type) {
     case JointType::revolute:

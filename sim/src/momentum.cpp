@@ -29,7 +29,7 @@ SystemMomentum system_momentum(const Model& model, const std::vector<Pose>& pose
   return out;
 }
 
-BusMotion joint_orientation(const Model& model, int joint, const double* q, const double* dq) {
+JointOrientation joint_orientation(const Model& model, int joint, const double* q, const double* dq) {
   const Joint& j = model.joints[joint];
   const int c = model.coordinate[joint], at = c + j.quaternion_offset();
   Vec6 w;

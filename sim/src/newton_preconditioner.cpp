@@ -70,18 +70,10 @@ void NewtonPreconditioner::solve(const double* r, double* z) {
   Eigen::Map<Eigen::VectorXd> x_map(x_.data(), L.nv);
   sweep_.bias_pass(r_map, phi_);
   sweep_.velocity_pass(r_map, phi_, Vec6::Zero(), x_map, v_);
-  for (int c = 0; c < n1; ++c) {
-    zq[c] = rq[c] + gamma * x_[c];
-    zp[c] = rp[c] - gamma * (stiffness_[c] * zq[c] + damping_[c] * x_[c]);
-  }
-  for (int i = 0; i < model.size(); ++i) {
-    const Joint& joint = model.joints[i];
-    if (joint.dof() < 2) continue;
-    const int cq = model.coordinate[i], cv = model.velocity[i];
-    joint.position_rates(q_.data() + cq, x_.data() + cv, zq + cq);
-    for (int k = 0; k < joint.positions(); ++k) zq[cq + k] = rq[cq + k] + gamma * zq[cq + k];
-    for (int k = 0; k < joint.dof(); ++k) zp[cv + k] = rp[cv + k];
-  }
+  // zq = rq + gamma q'(x), zp = rp - gamma (K zq + D x) (no K or D past n1).
+  position_rates(model, q_.data(), x_.data(), zq);
+  for (int c = 0; c < L.nq; ++c) zq[c] = rq[c] + gamma * zq[c];
+  for (int c = 0; c < L.nv; ++c) zp[c] = rp[c] - (c < n1 ? gamma * (stiffness_[c] * zq[c] + damping_[c] * x_[c]) : 0.0);
   Regulator* regulator = dynamics_.regulator();
   if (!regulator) return;
   const RegulatorSettings& s = regulator->settings();

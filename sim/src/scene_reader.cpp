@@ -147,23 +147,11 @@ Joint SceneReader::read_joint(const YAML::Node& node, const std::string& field) 
   Joint j;
   const YAML::Node type = require(node, "type", field);
   const std::string t = text(type, field + ".type");
-  if (t == "revolute")
-    j.type = JointType::revolute;
-  else if (t == "prismatic")
-    j.type = JointType::prismatic;
-  else if (t == "fixed")
-    j.type = JointType::fixed;
-  else if (t == "spherical")
-    j.type = JointType::spherical;
-  else if (t == "planar")
-    j.type = JointType::planar;
-  else if (t == "free")
-    j.type = JointType::free;
-  else if (t == "universal")
-    j.type = JointType::universal;
-  else
+  const auto parsed = parse_joint_type(t);
+  if (!parsed)
     fail(type, field + ".type",
          "unknown joint type '" + t + "' (expected revolute, prismatic, fixed, universal, spherical, planar or free)");
+  j.type = *parsed;
   const auto unit_axis = [&](const char* key) {
     const YAML::Node axis = require(node, key, field);
     Vec3 a = vec3(axis, field + "." + key);
@@ -502,12 +490,9 @@ void SceneReader::read_initial(const YAML::Node& node, Scene& scene) const {
     if (!positions || out.empty()) out.assign(positions ? model.nq : model.nv, 0.0);
     for (const auto& item : map) {
       const std::string entry = field + "." + item.first.Scalar();
-      const std::string joint_name = text(item.first, field);
-      const auto it = joint_index_.find(joint_name);
-      if (it == joint_index_.end()) fail(item.first, field, "unknown joint '" + joint_name + "'");
-      const int j = it->second;
+      const int j = joint_by_name(item.first, scene, field, false);
       const Joint& joint = model.joints[j];
-      if (joint.dof() == 0) fail(item.first, field, "joint '" + joint_name + "' is fixed: it has no coordinate");
+      if (joint.dof() == 0) fail(item.first, field, "joint '" + joint.name + "' is fixed: it has no coordinate");
       double* x = out.data() + (positions ? model.coordinate[j] : model.velocity[j]);
       if (joint.is_scalar()) {
         x[0] = number(item.second, entry);

@@ -44,7 +44,7 @@ RunSummary::FreeBus summarize_free_bus(const Model& model, const Trajectory& tr)
   const Eigen::Vector4d start = bus_motion(model, first.y.data() + tr.layout.q(), first.dq.data()).quaternion;
   double linear_scale = 0, angular_scale = 0, linear_change = 0, angular_change = 0;
   for (const Sample& s : tr.samples) {
-    const BusMotion motion = bus_motion(model, s.y.data() + tr.layout.q(), s.dq.data());
+    const JointOrientation motion = bus_motion(model, s.y.data() + tr.layout.q(), s.dq.data());
     bus.peak_rate = std::max(bus.peak_rate, motion.rate.norm());
     bus.final_attitude_change = rotation_angle_between(start, motion.quaternion);
     linear_scale = std::max(linear_scale, s.momentum.linear_scale);

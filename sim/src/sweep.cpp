@@ -153,7 +153,7 @@ void Sweep::gyroscopic(const std::vector<Vec6>& v, const std::vector<Vec6>& mu, 
       const MultiAxis& J = multi_axes_[multi_[i]];
       Vec6 dp_i = -J.A.transpose() * omega_times(v[i], mu[i]);
       if (J.varying) dp_i += model_.joints[i].motion_axes_rate(q_.data() + model_.coordinate[i], w + c).transpose() * mu[i];
-      for (int r = 0; r < model_.joints[i].dof(); ++r) dp[c + r] = dp_i[r];
+      for (int r = 0; r < J.n; ++r) dp[c + r] = dp_i[r];
     } else if (c >= 0) {
       dp[c] = -A_[i].dot(omega_times(v[i], mu[i]));
     }

@@ -81,8 +81,6 @@ class Dynamics {
  private:
   bool evaluate(double t, const double* y, double* ydot);
   void joint_torques(const double* q, const double* dq, double* Q) const;
-  // q' from the rates w (Joint::position_rates).
-  void position_rates(const double* q, const double* w, double* dq) const;
   // Adds the point springs' pulls to F_ (needs poses_ and v_).
   void add_point_springs();
 

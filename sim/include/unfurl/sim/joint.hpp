@@ -20,6 +20,7 @@
 // displacement x, y, z in the parent frame, then a quaternion).
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "unfurl/sim/spatial.hpp"
@@ -29,6 +30,8 @@ namespace unfurl {
 enum class JointType { revolute, prismatic, fixed, spherical, planar, free, universal };
 
 const char* joint_type_name(JointType type);
+// The type a scene file names ("revolute", ...), or nullopt.
+std::optional<JointType> parse_joint_type(const std::string& name);
 
 struct Joint {
   std::string name;

@@ -22,4 +22,10 @@ struct Pose {
 // Poses of bodies 1..N in the frame of body 0 for coordinates q.
 void body_poses(const Model& model, const double* q, std::vector<Pose>& poses);
 
+// q' (nq) from the rates w (nv) at q, joint by joint (Joint::position_rates;
+// the one-coordinate joints' entries are copied).
+void position_rates(const Model& model, const double* q, const double* w, double* dq);
+// The inverse: the rates w from q and q' (Joint::rates).
+void rates_from_position_rates(const Model& model, const double* q, const double* dq, double* w);
+
 }  // namespace unfurl

@@ -25,14 +25,14 @@ SystemMomentum system_momentum(const Model& model, const std::vector<Pose>& pose
 // The orientation a ball or free joint gives its child, from q and q': the
 // quaternion (w, x, y, z, unit), the rotation vector (angle times axis, the
 // angle in [0, pi]) and the angular rate in the child's frame.
-struct BusMotion {
+struct JointOrientation {
   Eigen::Vector4d quaternion;
   Vec3 rotation_vector;
   Vec3 rate;
 };
-BusMotion joint_orientation(const Model& model, int joint, const double* q, const double* dq);
+JointOrientation joint_orientation(const Model& model, int joint, const double* q, const double* dq);
 // A free-floating bus's (joint 0's).
-inline BusMotion bus_motion(const Model& model, const double* q, const double* dq) {
+inline JointOrientation bus_motion(const Model& model, const double* q, const double* dq) {
   return joint_orientation(model, 0, q, dq);
 }
 
