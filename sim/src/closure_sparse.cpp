@@ -18,6 +18,8 @@
 #include <Eigen/QR>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
+#include <algorithm>
+#include <limits>
 
 #include "unfurl/sim/closure_solver.hpp"
 
@@ -88,6 +90,7 @@ class SparseClosureSolver : public ClosureSolver {
     }
     K_.resize(rows, rows);
     K_.setFromTriplets(entries.begin(), entries.end());
+    K_.makeCompressed();  // the solves read its arrays
 
     // Where the configuration-dependent values sit: -N_i^T C_i, and -delta.
     for (int i = 0; i < N; ++i) {
@@ -123,25 +126,41 @@ class SparseClosureSolver : public ClosureSolver {
     }
     for (double* d : delta_slot_) *d = -delta;
     ldlt_.factorize(K_);
+    D_ = ldlt_.vectorD();  // a copy: Eigen hands D out by value
     return ldlt_.info() == Eigen::Success;
   }
 
   void solve(const double* B, double* X, int columns) override {
     const int n = static_cast<int>(K_.rows()), v_rows = 6 * model_.size(), joint_rows = loop_row_ - v_rows;
-    rhs_.setZero(n, columns);
-    rhs_.bottomRows(m_) = Eigen::Map<const Eigen::MatrixXd>(B, m_, columns);
-    solution_ = ldlt_.solve(rhs_);
+    const int k = columns;
+    for (std::vector<double>* a : {&rhs_, &solution_, &residual_, &work_}) a->resize(static_cast<std::size_t>(n) * k);
+    permuted_.resize(n);
+    std::fill(rhs_.begin(), rhs_.end(), 0.0);
+    for (int r = 0; r < m_; ++r)
+      for (int c = 0; c < k; ++c) rhs_[c * n + loop_row_ + r] = B[c * m_ + r];
+    apply_inverse(rhs_, solution_, k);
     // Near a branch point R is as ill-conditioned as lambda_max / delta;
-    // a few passes reach 1e-12 of the right-hand side there.
-    const double target = 1e-12 * rhs_.norm();
+    // a few passes reach 1e-12 of the right-hand side there. Where the
+    // solution is large (R^-1 amplifies by up to 1 / regularization) the
+    // residual's round-off floor, u ||K|| ||x||, lies above that: a pass
+    // that does not halve the residual has reached it, and more would
+    // only repeat it (on a 30-stage pantograph most solves used to run
+    // all five passes for nothing).
+    const double target = 1e-12 * norm(rhs_);
+    double previous = std::numeric_limits<double>::infinity();
     for (int pass = 0; pass < 5; ++pass) {
       // The residual of the unregularized matrix: K_0 = K + eps on the joint rows.
-      residual_.noalias() = rhs_ - K_.selfadjointView<Eigen::Lower>() * solution_;
-      residual_.middleRows(v_rows, joint_rows) -= eps_ * solution_.middleRows(v_rows, joint_rows);
-      if (residual_.norm() <= target) break;
-      solution_ += ldlt_.solve(residual_);
+      residual_of_K(k);
+      for (int c = 0; c < k; ++c)
+        for (int i = v_rows; i < v_rows + joint_rows; ++i) residual_[c * n + i] -= eps_ * solution_[c * n + i];
+      const double r = norm(residual_);
+      if (r <= target || r > 0.5 * previous) break;
+      previous = r;
+      apply_inverse(residual_, work_, k);
+      for (std::size_t i = 0; i < solution_.size(); ++i) solution_[i] += work_[i];
     }
-    Eigen::Map<Eigen::MatrixXd>(X, m_, columns) = -solution_.bottomRows(m_);
+    for (int r = 0; r < m_; ++r)
+      for (int c = 0; c < k; ++c) X[c * m_ + r] = -solution_[c * n + loop_row_ + r];
   }
 
  private:
@@ -156,7 +175,64 @@ class SparseClosureSolver : public ClosureSolver {
   SparseMatrix K_;
   std::vector<double*> parent_block_, delta_slot_;
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt_;
-  Eigen::MatrixXd rhs_, solution_, residual_;
+  // Scratch, n x columns column-major; grown once, never shrunk (the
+  // solves allocate nothing after the first).
+  std::vector<double> rhs_, solution_, residual_, work_, permuted_;
+  Eigen::VectorXd D_;  // the factor's D
+
+  static double norm(const std::vector<double>& x) {
+    return Eigen::Map<const Eigen::VectorXd>(x.data(), static_cast<Eigen::Index>(x.size())).norm();
+  }
+
+  // x = K^-1 b by the factor P^T L D L^T P, on the factor's arrays (Eigen's
+  // own solve makes temporaries on every call).
+  void apply_inverse(const std::vector<double>& b, std::vector<double>& x, int k) {
+    const SparseMatrix& L = ldlt_.matrixL().nestedExpression();
+    const int n = static_cast<int>(L.rows());
+    const int* Lp = L.outerIndexPtr();
+    const int* Li = L.innerIndexPtr();
+    const double* Lx = L.valuePtr();
+    const auto& P = ldlt_.permutationP().indices();
+    const double* D = D_.data();
+    double* w = permuted_.data();
+    for (int c = 0; c < k; ++c) {
+      const double* bc = b.data() + c * n;
+      for (int i = 0; i < n; ++i) w[P[i]] = bc[i];
+      for (int j = 0; j < n; ++j) {  // L (unit diagonal)
+        const double wj = w[j];
+        for (int p = Lp[j]; p < Lp[j + 1]; ++p) w[Li[p]] -= Lx[p] * wj;
+      }
+      for (int j = n - 1; j >= 0; --j) {  // D, then L^T
+        double wj = w[j] / D[j];
+        for (int p = Lp[j]; p < Lp[j + 1]; ++p) wj -= Lx[p] * w[Li[p]];
+        w[j] = wj;
+      }
+      double* xc = x.data() + c * n;
+      for (int i = 0; i < n; ++i) xc[i] = w[P[i]];
+    }
+  }
+
+  // residual = rhs - K solution, K stored as its lower triangle.
+  void residual_of_K(int k) {
+    residual_ = rhs_;
+    const int n = static_cast<int>(K_.rows());
+    const int* Kp = K_.outerIndexPtr();
+    const int* Ki = K_.innerIndexPtr();
+    const double* Kx = K_.valuePtr();
+    for (int c = 0; c < k; ++c) {
+      const double* x = solution_.data() + c * n;
+      double* r = residual_.data() + c * n;
+      for (int j = 0; j < n; ++j) {
+        double rj = 0;
+        for (int p = Kp[j]; p < Kp[j + 1]; ++p) {
+          const int i = Ki[p];
+          r[i] -= Kx[p] * x[j];
+          if (i != j) rj += Kx[p] * x[i];
+        }
+        r[j] -= rj;
+      }
+    }
+  }
 };
 
 }  // namespace
