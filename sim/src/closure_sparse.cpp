@@ -214,24 +214,10 @@ class SparseClosureSolver : public ClosureSolver {
 
   // residual = rhs - K solution, K stored as its lower triangle.
   void residual_of_K(int k) {
-    residual_ = rhs_;
-    const int n = static_cast<int>(K_.rows());
-    const int* Kp = K_.outerIndexPtr();
-    const int* Ki = K_.innerIndexPtr();
-    const double* Kx = K_.valuePtr();
-    for (int c = 0; c < k; ++c) {
-      const double* x = solution_.data() + c * n;
-      double* r = residual_.data() + c * n;
-      for (int j = 0; j < n; ++j) {
-        double rj = 0;
-        for (int p = Kp[j]; p < Kp[j + 1]; ++p) {
-          const int i = Ki[p];
-          r[i] -= Kx[p] * x[j];
-          if (i != j) rj += Kx[p] * x[i];
-        }
-        r[j] -= rj;
-      }
-    }
+    const Eigen::Index n = K_.rows();
+    Eigen::Map<Eigen::MatrixXd> r(residual_.data(), n, k);
+    r = Eigen::Map<const Eigen::MatrixXd>(rhs_.data(), n, k);
+    r.noalias() -= K_.selfadjointView<Eigen::Lower>() * Eigen::Map<const Eigen::MatrixXd>(solution_.data(), n, k);
   }
 };
 
