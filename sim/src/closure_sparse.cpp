@@ -134,7 +134,6 @@ class SparseClosureSolver : public ClosureSolver {
     const int n = static_cast<int>(K_.rows()), v_rows = 6 * model_.size(), joint_rows = loop_row_ - v_rows;
     const int k = columns;
     for (std::vector<double>* a : {&rhs_, &solution_, &residual_, &work_}) a->resize(static_cast<std::size_t>(n) * k);
-    permuted_.resize(n);
     std::fill(rhs_.begin(), rhs_.end(), 0.0);
     for (int r = 0; r < m_; ++r)
       for (int c = 0; c < k; ++c) rhs_[c * n + loop_row_ + r] = B[c * m_ + r];
@@ -185,8 +184,16 @@ class SparseClosureSolver : public ClosureSolver {
   }
 
   // x = K^-1 b by the factor P^T L D L^T P, on the factor's arrays (Eigen's
-  // own solve makes temporaries on every call).
+  // own solve makes temporaries on every call). The control law's two
+  // columns go through L together, so each of its entries is read once.
   void apply_inverse(const std::vector<double>& b, std::vector<double>& x, int k) {
+    if (k == 2) return apply_inverse_to<2>(b.data(), x.data());
+    for (int c = 0; c < k; ++c) apply_inverse_to<1>(b.data() + c * K_.rows(), x.data() + c * K_.rows());
+  }
+
+  // K^-1 on k columns of b, interleaved while in the factor's order.
+  template <int k>
+  void apply_inverse_to(const double* b, double* x) {
     const SparseMatrix& L = ldlt_.matrixL().nestedExpression();
     const int n = static_cast<int>(L.rows());
     const int* Lp = L.outerIndexPtr();
@@ -194,22 +201,27 @@ class SparseClosureSolver : public ClosureSolver {
     const double* Lx = L.valuePtr();
     const auto& P = ldlt_.permutationP().indices();
     const double* D = D_.data();
-    double* w = permuted_.data();
-    for (int c = 0; c < k; ++c) {
-      const double* bc = b.data() + c * n;
-      for (int i = 0; i < n; ++i) w[P[i]] = bc[i];
-      for (int j = 0; j < n; ++j) {  // L (unit diagonal)
-        const double wj = w[j];
-        for (int p = Lp[j]; p < Lp[j + 1]; ++p) w[Li[p]] -= Lx[p] * wj;
+    permuted_.resize(static_cast<std::size_t>(n) * k);
+    double* w = permuted_.data();  // w[i * k + c]
+    for (int c = 0; c < k; ++c)
+      for (int i = 0; i < n; ++i) w[P[i] * k + c] = b[c * n + i];
+    for (int j = 0; j < n; ++j) {  // L (unit diagonal)
+      const double* wj = w + j * k;
+      for (int p = Lp[j]; p < Lp[j + 1]; ++p) {
+        double* wi = w + Li[p] * k;
+        for (int c = 0; c < k; ++c) wi[c] -= Lx[p] * wj[c];
       }
-      for (int j = n - 1; j >= 0; --j) {  // D, then L^T
-        double wj = w[j] / D[j];
-        for (int p = Lp[j]; p < Lp[j + 1]; ++p) wj -= Lx[p] * w[Li[p]];
-        w[j] = wj;
-      }
-      double* xc = x.data() + c * n;
-      for (int i = 0; i < n; ++i) xc[i] = w[P[i]];
     }
+    for (int j = n - 1; j >= 0; --j) {  // D, then L^T
+      double* wj = w + j * k;
+      for (int c = 0; c < k; ++c) wj[c] /= D[j];
+      for (int p = Lp[j]; p < Lp[j + 1]; ++p) {
+        const double* wi = w + Li[p] * k;
+        for (int c = 0; c < k; ++c) wj[c] -= Lx[p] * wi[c];
+      }
+    }
+    for (int c = 0; c < k; ++c)
+      for (int i = 0; i < n; ++i) x[c * n + i] = w[P[i] * k + c];
   }
 
   // residual = rhs - K solution, K stored as its lower triangle.
