@@ -49,6 +49,9 @@ void print_summary(const Scene& scene, const RunResult& result, const RunSummary
               result.wall_time_s > 0 ? s.t_reached / result.wall_time_s : 0.0);
   std::printf("work         %ld steps, %ld right-hand sides, %ld Jacobians, min step %.3g s\n", result.stats.steps,
               result.rhs_calls, result.stats.jacobian_evals, result.stats.min_step);
+  if (result.jacobian_product_evals > 0)
+    std::printf("             %ld evaluations for Jacobian products (gains held, cheaper)\n",
+                result.jacobian_product_evals);
   if (!scene.latches.empty()) {
     std::printf("latches      %zu of %zu engaged\n", s.latch_times.size(), scene.latches.size());
     for (const auto& [joint, t] : s.latch_times) std::printf("               %-10s t = %.9f s\n", joint.c_str(), t);

@@ -146,6 +146,7 @@ void write_summary_json(const Scene& scene, const RunResult& result, const RunSu
   json.value("t_reached", summary.t_reached);
   json.value("wall_time_s", result.wall_time_s);
   json.value("steps", result.stats.steps).value("rhs_evals", result.rhs_calls);
+  json.value("jacobian_product_evals", result.jacobian_product_evals);
   json.value("jacobian_evals", result.stats.jacobian_evals);
   json.value("linear_setups", result.stats.linear_setups);
   json.value("linear_iterations", result.stats.linear_iterations);

@@ -27,6 +27,7 @@ ArkodeIntegrator::ArkodeIntegrator(IntegratorKind kind, Dynamics& dynamics, cons
       check(ARKStepSetLinearSolver(mem_, krylov_->LS, nullptr), "ARKStepSetLinearSolver");
       check(ARKStepSetPreconditioner(mem_, sundials::precondition_setup, sundials::precondition_solve),
             "ARKStepSetPreconditioner");
+      check(ARKStepSetJacTimes(mem_, nullptr, sundials::jacobian_times), "ARKStepSetJacTimes");
     } else {
       dense_.emplace(dynamics.size(), y_, ctx_);
       check(ARKStepSetLinearSolver(mem_, dense_->LS, dense_->A), "ARKStepSetLinearSolver");

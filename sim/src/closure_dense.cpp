@@ -29,7 +29,7 @@ class DenseClosureSolver : public ClosureSolver {
     return llt_.info() == Eigen::Success;
   }
 
-  void solve(const double* B, double* X, int columns) override {
+  void solve(const double* B, double* X, int columns, bool) override {
     for (int c = 0; c < columns; ++c)
       Eigen::Map<Eigen::VectorXd>(X + c * m_, m_) = llt_.solve(Eigen::Map<const Eigen::VectorXd>(B + c * m_, m_));
   }

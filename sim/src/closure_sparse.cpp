@@ -130,7 +130,7 @@ class SparseClosureSolver : public ClosureSolver {
     return ldlt_.info() == Eigen::Success;
   }
 
-  void solve(const double* B, double* X, int columns) override {
+  void solve(const double* B, double* X, int columns, bool refine) override {
     const int n = static_cast<int>(K_.rows()), v_rows = 6 * model_.size(), joint_rows = loop_row_ - v_rows;
     const int k = columns;
     for (std::vector<double>* a : {&rhs_, &solution_, &residual_, &work_}) a->resize(static_cast<std::size_t>(n) * k);
@@ -147,7 +147,7 @@ class SparseClosureSolver : public ClosureSolver {
     // all five passes for nothing).
     const double target = 1e-12 * norm(rhs_);
     double previous = std::numeric_limits<double>::infinity();
-    for (int pass = 0; pass < 5; ++pass) {
+    for (int pass = 0; refine && pass < 5; ++pass) {
       // The residual of the unregularized matrix: K_0 = K + eps on the joint rows.
       residual_of_K(k);
       for (int c = 0; c < k; ++c)

@@ -28,6 +28,7 @@ CvodeIntegrator::CvodeIntegrator(IntegratorKind kind, Dynamics& dynamics, const 
     check(CVodeSetLinearSolver(mem_, krylov_->LS, nullptr), "CVodeSetLinearSolver");
     check(CVodeSetPreconditioner(mem_, sundials::precondition_setup, sundials::precondition_solve),
           "CVodeSetPreconditioner");
+    check(CVodeSetJacTimes(mem_, nullptr, sundials::jacobian_times), "CVodeSetJacTimes");
   } else if (bdf) {
     dense_.emplace(dynamics.size(), y_, ctx_);
     check(CVodeSetLinearSolver(mem_, dense_->LS, dense_->A), "CVodeSetLinearSolver");

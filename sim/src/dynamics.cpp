@@ -1,6 +1,8 @@
 #include "unfurl/sim/dynamics.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "newton_preconditioner.hpp"
 
@@ -46,6 +48,9 @@ Dynamics::Dynamics(const Scene& scene)
     d_.resize(layout_.m);
   }
   ydot_.resize(layout_.size());
+  jv_y_.resize(layout_.size());
+  jv_f_.resize(layout_.size());
+  jv_y1_.resize(layout_.size());
 }
 
 Dynamics::~Dynamics() = default;
@@ -171,6 +176,41 @@ bool Dynamics::evaluate(double, const double* y, double* ydot) {
   for (int k = 0; k < L.size(); ++k)
     if (!std::isfinite(ydot[k])) return false;
   return true;
+}
+
+bool Dynamics::jacobian_times(const double* y, const double* v, double* Jv) {
+  const int n = size();
+  const bool new_base = jv_engaged_ != latch_state_.engaged_count() || !std::equal(y, y + n, jv_y_.begin()) ||
+                        (regulator_ && regulator_->factorizations() != jv_factorizations_);
+  if (regulator_ && new_base) {
+    sweep_.set_configuration(y + layout_.q());
+    if (!regulator_->hold_gains(sweep_)) return false;
+    jv_factorizations_ = regulator_->factorizations();
+  } else if (regulator_) {
+    regulator_->hold_last_gains();
+  }
+  bool ok = true;
+  if (new_base) {
+    std::copy_n(y, n, jv_y_.begin());
+    jv_engaged_ = latch_state_.engaged_count();
+    ok = evaluate(0, y, jv_f_.data());
+    ++jacobian_product_evals_;
+  }
+  // Half the digits for the step, half for the difference.
+  Eigen::Map<const Eigen::VectorXd> y_(y, n), v_(v, n);
+  const double v_norm = v_.norm();
+  if (ok && v_norm > 0) {
+    const double sigma = std::sqrt(std::numeric_limits<double>::epsilon()) * std::max(1.0, y_.norm()) / v_norm;
+    Eigen::Map<Eigen::VectorXd>(jv_y1_.data(), n) = y_ + sigma * v_;
+    ok = evaluate(0, jv_y1_.data(), Jv);
+    ++jacobian_product_evals_;
+    for (int k = 0; k < n; ++k) Jv[k] = (Jv[k] - jv_f_[k]) / sigma;
+  } else if (ok) {
+    std::fill_n(Jv, n, 0.0);
+  }
+  if (regulator_) regulator_->release_gains();
+  if (!ok) jv_engaged_ = -1;
+  return ok;
 }
 
 void Dynamics::switching_functions(const double* y, double* values) const {

@@ -20,11 +20,20 @@ Regulator::Regulator(const Model& model, const std::vector<Loop>& loops, std::ve
 bool Regulator::factorize(const Sweep& sweep) {
   // R = W + delta I depends on q alone: at the q it was factorized for (the
   // same sweep, the same configuration) it is the same matrix.
-  if (&sweep == factorized_sweep_ && sweep.configuration() == factorized_configuration_) return factorized_ok_;
+  if (held_ || (&sweep == factorized_sweep_ && sweep.configuration() == factorized_configuration_))
+    return factorized_ok_;
   factorized_ok_ = solver_->factorize(sweep, delta_);
+  ++factorizations_;
   factorized_sweep_ = &sweep;
   factorized_configuration_ = sweep.configuration();
   return factorized_ok_;
+}
+
+bool Regulator::hold_gains(const Sweep& sweep) {
+  held_ = false;
+  if (settings_.gains == GainTuning::full && !factorize(sweep)) return false;
+  held_ = true;
+  return true;
 }
 
 void Regulator::calibrate(const Sweep& sweep) {
@@ -71,7 +80,7 @@ bool Regulator::control(const Sweep& sweep, const double* g, const double* u, co
     lambda_.setConstant(std::numeric_limits<double>::quiet_NaN());
     return false;
   }
-  solver_->solve(rhs_.data(), solved_.data(), 2);
+  solver_->solve(rhs_.data(), solved_.data(), 2, !held_);
   lambda_ = solved_.col(0);               // R^-1 (v^2 (g + u) + (p0 + 2 p1) v g' + d)
   ud_ = b - delta_ * solved_.col(1);      // W R^-1 b = b - delta R^-1 b
   return true;

@@ -164,6 +164,7 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
   result.stats.grazes = events.grazes();
   result.peaks = monitor.peaks();
   result.rhs_calls = dynamics.rhs_calls();
+  result.jacobian_product_evals = dynamics.jacobian_product_evals();
   result.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   return result;
 }

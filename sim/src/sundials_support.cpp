@@ -56,6 +56,14 @@ int precondition_solve(double, N_Vector, N_Vector, N_Vector r, N_Vector z, doubl
   return 0;
 }
 
+int jacobian_times(N_Vector v, N_Vector Jv, double, N_Vector y, N_Vector, void* dynamics, N_Vector) {
+  // Not finite: a positive return, which CVODE treats as recoverable.
+  return static_cast<Dynamics*>(dynamics)->jacobian_times(N_VGetArrayPointer(y), N_VGetArrayPointer(v),
+                                                          N_VGetArrayPointer(Jv))
+             ? 0
+             : 1;
+}
+
 int rhs(double t, N_Vector y, N_Vector ydot, void* dynamics) {
   // A positive return asks the integrator to retry with a smaller step.
   return static_cast<Dynamics*>(dynamics)->rhs(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot)) ? 0 : 1;

@@ -69,6 +69,8 @@ int switching(double t, N_Vector y, double* values, void* dynamics);
 int precondition_setup(double t, N_Vector y, N_Vector fy, int jok, int* jcur, double gamma, void* dynamics);
 int precondition_solve(double t, N_Vector y, N_Vector fy, N_Vector r, N_Vector z, double gamma, double delta, int lr,
                        void* dynamics);
+// J v with the regulator's gains held (Dynamics::jacobian_times).
+int jacobian_times(N_Vector v, N_Vector Jv, double t, N_Vector y, N_Vector fy, void* dynamics, N_Vector tmp);
 
 // Keeps the library's last error message for the failure report instead of
 // letting it print.

@@ -25,8 +25,10 @@ class ClosureSolver {
   // Factors R at the sweep's configuration. False if it could not.
   virtual bool factorize(const Sweep& sweep, double delta) = 0;
   // X = R^-1 B for the last factorization, B and X m x columns,
-  // column-major (distinct arrays).
-  virtual void solve(const double* B, double* X, int columns = 1) = 0;
+  // column-major (distinct arrays). Without refinement the sparse solver
+  // stops after its first pass (about 1e-5 of B off near a branch point):
+  // a smooth, linear stand-in for R^-1, enough for a Jacobian's product.
+  virtual void solve(const double* B, double* X, int columns = 1, bool refine = true) = 0;
 };
 
 // automatic: the dense solver while it can (it is the faster up to its

@@ -61,6 +61,17 @@ class Dynamics {
   int latch_count() const { return static_cast<int>(scene_.latches.size()); }
   void switching_functions(const double* y, double* values) const;
 
+  // Jv ~ (f(y + sigma v) - f(y)) / sigma for the implicit integrators'
+  // Krylov solvers, with the regulator's gains held at y's configuration
+  // and solved without refinement on both sides. J then leaves out how the
+  // gains turn with q, which only the Newton iteration sees (its residual
+  // is f itself, exact), and a product costs the sweeps and one triangular
+  // solve instead of a factorization and a refined solve. f(y) is kept
+  // while y repeats: GMRES asks for several products at one iterate.
+  // False where f is not finite.
+  bool jacobian_times(const double* y, const double* v, double* Jv);
+  long jacobian_product_evals() const { return jacobian_product_evals_; }
+
   // The implicit integrators' Krylov preconditioner, made on first use.
   NewtonPreconditioner& preconditioner();
 
@@ -92,12 +103,18 @@ class Dynamics {
   std::unique_ptr<NewtonPreconditioner> preconditioner_;
   bool loads_need_poses_ = false;
   long rhs_calls_ = 0;
+  long jacobian_product_evals_ = 0;
 
   // Scratch for rhs(), sized once.
   std::vector<Vec6> phi_, v_, mu_, F_;
   std::vector<Pose> poses_;
   std::vector<Vec6> bias_, a_;   // the accelerations pass
   std::vector<double> Q_, Q_joint_, ddq_, w_, lambda_, g_, g_dot_, d_, ydot_;
+  // jacobian_times(): its base y and f(y) with held gains (for the latches
+  // engaged then), and y + sigma v.
+  std::vector<double> jv_y_, jv_f_, jv_y1_;
+  int jv_engaged_ = -1;
+  long jv_factorizations_ = -1;  // the regulator's count at the base
 };
 
 }  // namespace unfurl

@@ -80,6 +80,17 @@ class Regulator {
   bool control(const Sweep& sweep, const double* g, const double* u, const double* g_dot, const double* d,
                double* lambda, double* u_dot);
 
+  // Holds the gains of the sweep's configuration (factorized now unless
+  // they already are): until release_gains(), control() uses them whatever
+  // q it is given and solves without refinement. What a Jacobian-vector
+  // product needs (dynamics.hpp); false if R could not be factored.
+  bool hold_gains(const Sweep& sweep);
+  // Holds the gains of the last factorization, wherever that was.
+  void hold_last_gains() { held_ = true; }
+  void release_gains() { held_ = false; }
+  // How many times R has been factored: unchanged, the last gains stand.
+  long factorizations() const { return factorizations_; }
+
   // Adds -eps^T lambda to the body forces.
   void apply(const double* lambda, std::vector<Vec6>& F) const;
 
@@ -103,6 +114,8 @@ class Regulator {
   const Sweep* factorized_sweep_ = nullptr;
   long factorized_configuration_ = 0;
   bool factorized_ok_ = false;
+  bool held_ = false;
+  long factorizations_ = 0;
 
   // Scratch, sized once: the right-hand sides of (12) and (13) side by
   // side, and R^-1 applied to them.

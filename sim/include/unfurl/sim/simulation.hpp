@@ -34,6 +34,7 @@ struct RunResult {
   SolverStats stats;
   RunPeaks peaks;  // over every step, not only the samples
   long rhs_calls = 0;
+  long jacobian_product_evals = 0;  // Dynamics::jacobian_times' evaluations, held gains
   double wall_time_s = 0;
   RunSettings settings;
   Trajectory trajectory;
