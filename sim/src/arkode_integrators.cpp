@@ -31,6 +31,7 @@ ArkodeIntegrator::ArkodeIntegrator(IntegratorKind kind, Dynamics& dynamics, cons
     } else {
       dense_.emplace(dynamics.size(), y_, ctx_);
       check(ARKStepSetLinearSolver(mem_, dense_->LS, dense_->A), "ARKStepSetLinearSolver");
+      choose_jacobian();
     }
   }
   if (const int n_roots = dynamics.latch_count(); n_roots > 0) {
@@ -90,6 +91,13 @@ void ArkodeIntegrator::restart(double t, const double* y) {
   std::copy(y, y + dynamics_.size(), y_.data());
   check(api_.reinit(mem_, sundials::rhs, t, y_), "ReInit");
   t_stop_set_ = -1;
+  choose_jacobian();
+}
+
+void ArkodeIntegrator::choose_jacobian() {
+  if (!dense_) return;
+  const bool latched = dynamics_.latch_state().engaged_count() > 0;
+  check(ARKStepSetJacFn(mem_, latched ? sundials::dense_jacobian : nullptr), "ARKStepSetJacFn");
 }
 
 std::vector<int> ArkodeIntegrator::roots() {

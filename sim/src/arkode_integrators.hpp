@@ -30,6 +30,8 @@ class ArkodeIntegrator : public Integrator {
   double last_step() const override;
 
  private:
+  // As CvodeIntegrator::choose_jacobian.
+  void choose_jacobian();
   SolverStats segment_stats() const;
   void derivative(double t, int k, double* out);
 

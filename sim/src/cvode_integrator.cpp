@@ -32,6 +32,7 @@ CvodeIntegrator::CvodeIntegrator(IntegratorKind kind, Dynamics& dynamics, const 
   } else if (bdf) {
     dense_.emplace(dynamics.size(), y_, ctx_);
     check(CVodeSetLinearSolver(mem_, dense_->LS, dense_->A), "CVodeSetLinearSolver");
+    choose_jacobian();
   } else {
     fixed_point_ = SUNNonlinSol_FixedPoint(y_, 0, ctx_);
     sundials::check_ptr(fixed_point_, "SUNNonlinSol_FixedPoint");
@@ -97,6 +98,13 @@ void CvodeIntegrator::restart(double t, const double* y) {
   std::copy(y, y + dynamics_.size(), y_.data());
   check(CVodeReInit(mem_, t, y_), "CVodeReInit");
   t_stop_set_ = -1;
+  choose_jacobian();
+}
+
+void CvodeIntegrator::choose_jacobian() {
+  if (!dense_) return;
+  const bool latched = dynamics_.latch_state().engaged_count() > 0;
+  check(CVodeSetJacFn(mem_, latched ? sundials::dense_jacobian : nullptr), "CVodeSetJacFn");
 }
 
 std::vector<int> CvodeIntegrator::roots() {

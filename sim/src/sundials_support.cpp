@@ -4,6 +4,7 @@
 #include <sunlinsol/sunlinsol_spgmr.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "newton_preconditioner.hpp"
@@ -62,6 +63,19 @@ int jacobian_times(N_Vector v, N_Vector Jv, double, N_Vector y, N_Vector, void* 
                                                           N_VGetArrayPointer(Jv))
              ? 0
              : 1;
+}
+
+int dense_jacobian(double, N_Vector y, N_Vector, SUNMatrix J, void* dynamics, N_Vector unit, N_Vector, N_Vector) {
+  Dynamics& d = *static_cast<Dynamics*>(dynamics);
+  const sunindextype n = N_VGetLength(y);
+  double* e = N_VGetArrayPointer(unit);
+  std::fill_n(e, n, 0.0);
+  for (sunindextype j = 0; j < n; ++j) {
+    e[j] = 1;
+    if (!d.jacobian_times(N_VGetArrayPointer(y), e, SM_COLUMN_D(J, j))) return 1;
+    e[j] = 0;
+  }
+  return 0;
 }
 
 int rhs(double t, N_Vector y, N_Vector ydot, void* dynamics) {

@@ -71,6 +71,9 @@ int precondition_solve(double t, N_Vector y, N_Vector fy, N_Vector r, N_Vector z
                        void* dynamics);
 // J v with the regulator's gains held (Dynamics::jacobian_times).
 int jacobian_times(N_Vector v, N_Vector Jv, double t, N_Vector y, N_Vector fy, void* dynamics, N_Vector tmp);
+// The dense J, column by column as J e_j with the gains held.
+int dense_jacobian(double t, N_Vector y, N_Vector fy, SUNMatrix J, void* dynamics, N_Vector unit, N_Vector,
+                   N_Vector);
 
 // Keeps the library's last error message for the failure report instead of
 // letting it print.
