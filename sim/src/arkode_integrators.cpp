@@ -96,8 +96,7 @@ void ArkodeIntegrator::restart(double t, const double* y) {
 
 void ArkodeIntegrator::choose_jacobian() {
   if (!dense_) return;
-  const bool latched = dynamics_.latch_state().engaged_count() > 0;
-  check(ARKStepSetJacFn(mem_, latched ? sundials::dense_jacobian : nullptr), "ARKStepSetJacFn");
+  check(ARKStepSetJacFn(mem_, sundials::dense_jacobian_for(dynamics_)), "ARKStepSetJacFn");
 }
 
 std::vector<int> ArkodeIntegrator::roots() {

@@ -103,8 +103,7 @@ void CvodeIntegrator::restart(double t, const double* y) {
 
 void CvodeIntegrator::choose_jacobian() {
   if (!dense_) return;
-  const bool latched = dynamics_.latch_state().engaged_count() > 0;
-  check(CVodeSetJacFn(mem_, latched ? sundials::dense_jacobian : nullptr), "CVodeSetJacFn");
+  check(CVodeSetJacFn(mem_, sundials::dense_jacobian_for(dynamics_)), "CVodeSetJacFn");
 }
 
 std::vector<int> CvodeIntegrator::roots() {

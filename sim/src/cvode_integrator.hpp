@@ -28,13 +28,7 @@ class CvodeIntegrator : public Integrator {
   double last_step() const override;
 
  private:
-  // The dense Newton matrix: before any latch engages, CVODE's difference
-  // quotients of f itself, with the gains' turn with q; once latches hold
-  // the mechanism, the held gains' (sundials::dense_jacobian). At the
-  // pantograph's deployed branch point R^-1 amplifies by up to 1/delta and
-  // f's curvature in q defeats difference quotients of f: with one spring
-  // 20 % stiffer the latched array took 5451 Newton failures and 53,324
-  // steps with them, 7 and 18,663 with the held gains.
+  // The dense Newton matrix for the latch state (sundials::dense_jacobian_for).
   void choose_jacobian();
   SolverStats segment_stats() const;  // since the last (re)start
   void derivative(double t, int k, double* out);

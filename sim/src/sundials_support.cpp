@@ -78,6 +78,10 @@ int dense_jacobian(double, N_Vector y, N_Vector, SUNMatrix J, void* dynamics, N_
   return 0;
 }
 
+DenseJacobianFn dense_jacobian_for(const Dynamics& dynamics) {
+  return dynamics.latch_state().engaged_count() > 0 ? dense_jacobian : nullptr;
+}
+
 int rhs(double t, N_Vector y, N_Vector ydot, void* dynamics) {
   // A positive return asks the integrator to retry with a smaller step.
   return static_cast<Dynamics*>(dynamics)->rhs(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot)) ? 0 : 1;

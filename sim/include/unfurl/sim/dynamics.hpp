@@ -58,11 +58,12 @@ class Dynamics {
 
   // Latches: engagement state and the integrators' root functions.
   LatchState& latch_state() { return latch_state_; }
+  const LatchState& latch_state() const { return latch_state_; }
   int latch_count() const { return static_cast<int>(scene_.latches.size()); }
   void switching_functions(const double* y, double* values) const;
 
   // Jv ~ (f(y + sigma v) - f(y)) / sigma for the implicit integrators'
-  // Krylov solvers, with the regulator's gains held at y's configuration
+  // Krylov solvers and latched dense Newton matrices, with the regulator's gains held at y's configuration
   // and solved without refinement on both sides. J then leaves out how the
   // gains turn with q, which only the Newton iteration sees (its residual
   // is f itself, exact), and a product costs the sweeps and one triangular
