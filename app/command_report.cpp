@@ -275,7 +275,7 @@ int command_report(const std::vector<std::string>& argv) {
   try {
     return args.has("--suite") ? stability_report(argv, args) : work_precision_report(argv, args);
   } catch (const std::runtime_error& e) {
-    if (dynamic_cast<const UsageError*>(&e) || dynamic_cast<const SceneError*>(&e)) throw;
+    if (dynamic_cast<const UsageError*>(&e) || dynamic_cast<const input::InputError*>(&e)) throw;
     std::fprintf(stderr, "unfurl report: %s\n", e.what());
     return 1;
   }

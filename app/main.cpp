@@ -58,7 +58,7 @@ int main(int argc, char** argv) {
     if (command == "scenes") return list_scenes();
     std::fprintf(stderr, "unfurl: unknown command '%s'\n\n%s", command.c_str(), kUsage);
     return 64;
-  } catch (const unfurl::SceneError& e) {
+  } catch (const unfurl::input::InputError& e) {
     std::fprintf(stderr, "unfurl %s: %s\n", command.c_str(), e.what());
     return 2;
   } catch (const unfurl::app::UsageError& e) {

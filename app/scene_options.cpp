@@ -62,7 +62,7 @@ SceneFile read_scene_named(const std::string& name, const std::vector<Override>&
     return read_builtin_scene(name, overrides);
   std::string known;
   for (const auto& n : builtins) known += (known.empty() ? "" : ", ") + n;
-  throw SceneError(name + ": no such scene file, and no built-in scene of that name (built in: " + known + ")");
+  throw input::InputError(name + ": no such scene file, and no built-in scene of that name (built in: " + known + ")");
 }
 
 }  // namespace unfurl::app

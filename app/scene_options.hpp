@@ -23,7 +23,7 @@ std::vector<Override> overrides_from(const Args& args);
 
 // Reads the scene named by `argument` (a path, or a built-in scene name)
 // with the --set overrides of `args`, then applies the run flags: the Scene
-// and its visuals. Throws SceneError (exit 2) or UsageError.
+// and its visuals. Throws input::InputError (exit 2) or UsageError.
 SceneFile read_scene(const std::optional<std::string>& argument, const Args& args);
 // The Scene alone.
 Scene load_scene(const std::optional<std::string>& argument, const Args& args);

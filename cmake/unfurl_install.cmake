@@ -5,9 +5,9 @@
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
-set(UNFURL_INSTALLED_LIBRARIES unfurl_sim unfurl_studies)
-set(UNFURL_INSTALLED_COMPONENTS sim studies)
-install(DIRECTORY sim/include/ studies/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+set(UNFURL_INSTALLED_LIBRARIES unfurl_input unfurl_sim unfurl_studies)
+set(UNFURL_INSTALLED_COMPONENTS input sim studies)
+install(DIRECTORY input/include/ sim/include/ studies/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 if(UNFURL_BUILD_RENDER)
   list(APPEND UNFURL_INSTALLED_LIBRARIES unfurl_render)
   list(APPEND UNFURL_INSTALLED_COMPONENTS render)

@@ -55,7 +55,14 @@ macro(unfurl_find_front_ends)
     find_package(PNG QUIET)
     # Debian's glad: the default python3 of some machines is not Debian's.
     find_program(UNFURL_GLAD glad PATHS /usr/bin NO_DEFAULT_PATH)
-    if(NOT IMGUI_FOUND)
+    # Dear ImGui's backends: Debian ships their headers beside imgui's and the
+    # OpenGL 3 backend's source with the examples (STACK.md: its prebuilt
+    # copy loads GL through GLX, so it is compiled here against glad).
+    find_path(UNFURL_IMGUI_BACKEND_HEADERS imgui_impl_glfw.h HINTS ${IMGUI_INCLUDE_DIRS} PATH_SUFFIXES backends
+              PATHS /usr/include/imgui)
+    find_path(UNFURL_IMGUI_BACKEND_SOURCES imgui_impl_opengl3.cpp
+              PATHS /usr/share/doc/libimgui-dev/examples/backends)
+    if(NOT IMGUI_FOUND OR NOT UNFURL_IMGUI_BACKEND_HEADERS OR NOT UNFURL_IMGUI_BACKEND_SOURCES)
       list(APPEND render_missing "Dear ImGui (libimgui-dev)")
     endif()
     if(NOT assimp_FOUND)

@@ -23,7 +23,7 @@ inline Scene scene_file(const std::string& name, const std::vector<Override>& ov
 inline std::string scene_error(const std::string& text) {
   try {
     load_scene_text(text, "bad");
-  } catch (const SceneError& e) {
+  } catch (const input::InputError& e) {
     return e.what();
   }
   return "no error";

@@ -17,7 +17,7 @@ Study study_from(const std::string& text) { return read_study_text(text, "study.
 std::string error_of(const std::string& text) {
   try {
     study_from(text);
-  } catch (const SceneError& e) {
+  } catch (const input::InputError& e) {
     return e.what();
   }
   return "no error";

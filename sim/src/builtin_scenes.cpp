@@ -18,7 +18,7 @@ const std::string& builtin_scene_text(const std::string& name) {
   if (it == texts.end()) {
     std::string known;
     for (const auto& [n, text] : texts) known += (known.empty() ? "" : ", ") + n;
-    throw SceneError("no built-in scene '" + name + "' (built in: " + known + ")");
+    throw input::InputError("no built-in scene '" + name + "' (built in: " + known + ")");
   }
   return it->second;
 }

@@ -41,7 +41,7 @@ std::size_t element_index(const YAML::Node& list, const std::string& part) {
 }
 
 YAML::Node load_scene_document(const std::string& text, const std::string& source) {
-  return YamlFields(source).load_document(text);
+  return input::YamlFields(source).load_document(text);
 }
 
 void expand(const YAML::Node& node, const std::vector<std::string>& parts, std::size_t k, const std::string& prefix,
@@ -71,7 +71,7 @@ std::vector<std::string> expand_scene_path(const std::string& text, const std::s
                                            const std::string& path) {
   std::vector<std::string> out;
   expand(load_scene_document(text, source), path_parts(path), 0, "", out);
-  if (out.empty()) throw SceneError(source + ": no value at " + path);
+  if (out.empty()) throw input::InputError(source + ": no value at " + path);
   return out;
 }
 
@@ -85,25 +85,25 @@ double scene_number(const std::string& text, const std::string& source, const st
     } else if (cur.IsMap()) {
       next = cur[part];
     }
-    if (!next) throw SceneError(source + ": no value at " + path);
+    if (!next) throw input::InputError(source + ": no value at " + path);
     cur.reset(next);
   }
   double x = 0;
   if (!cur.IsScalar() || !YAML::convert<double>::decode(cur, x))
-    throw SceneError(source + ": the value at " + path + " is not a number");
+    throw input::InputError(source + ": the value at " + path + " is not a number");
   return x;
 }
 
 // Follows a dotted path; list elements by index or by name/joint/body.
-void apply_override(YAML::Node& root, const Override& o, YamlFields& fields) {
+void apply_override(YAML::Node& root, const Override& o, input::YamlFields& fields) {
   const std::string origin = "--set " + o.path + "=" + o.value;
   const std::vector<std::string> parts = path_parts(o.path);
-  if (parts.empty() || o.path.empty()) throw SceneError(origin + ": empty path");
+  if (parts.empty() || o.path.empty()) throw input::InputError(origin + ": empty path");
   YAML::Node value;
   try {
     value = YAML::Load(o.value);
   } catch (const YAML::Exception& e) {
-    throw SceneError(origin + ": the value is not valid YAML: " + e.msg);
+    throw input::InputError(origin + ": the value is not valid YAML: " + e.msg);
   }
   YAML::Node cur;
   cur.reset(root);
@@ -114,7 +114,7 @@ void apply_override(YAML::Node& root, const Override& o, YamlFields& fields) {
       const std::size_t index = element_index(cur, part);
       const bool numeric = is_index(part);
       if (index == cur.size())
-        throw SceneError(origin + ": no element '" + part + "' in the list (it has " + std::to_string(cur.size()) +
+        throw input::InputError(origin + ": no element '" + part + "' in the list (it has " + std::to_string(cur.size()) +
                          (numeric ? ", numbered from 0)" : "; give an index or a name)"));
       if (last) {
         cur[index] = value;
@@ -131,14 +131,14 @@ void apply_override(YAML::Node& root, const Override& o, YamlFields& fields) {
         cur.reset(next);
       }
     } else {
-      throw SceneError(origin + ": '" + part + "' is inside a value, not a mapping or list");
+      throw input::InputError(origin + ": '" + part + "' is inside a value, not a mapping or list");
     }
   }
   fields.mark_override(value, origin);
 }
 
 std::string scene_text_with(const std::string& text, const std::string& source, const std::vector<Override>& overrides) {
-  YamlFields fields(source);
+  input::YamlFields fields(source);
   YAML::Node root = fields.load_document(text);
   for (const Override& o : overrides) apply_override(root, o, fields);
   YAML::Emitter out;
@@ -152,7 +152,7 @@ std::string scene_text_with(const std::string& text, const std::string& source, 
 Override parse_override(const std::string& assignment) {
   const auto eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0)
-    throw SceneError("--set " + assignment + ": expected KEY=VALUE, for example springs.0.stiffness=0.2");
+    throw input::InputError("--set " + assignment + ": expected KEY=VALUE, for example springs.0.stiffness=0.2");
   return {assignment.substr(0, eq), assignment.substr(eq + 1)};
 }
 

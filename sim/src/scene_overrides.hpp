@@ -5,13 +5,13 @@
 #include <yaml-cpp/yaml.h>
 
 #include "unfurl/sim/scene_file.hpp"
-#include "yaml_fields.hpp"
+#include "unfurl/input/yaml_fields.hpp"
 
 namespace unfurl {
 
 // Sets the value at the override's path in root (creating mappings on the
-// way), and tells `fields` where the new node came from. Throws SceneError
+// way), and tells `fields` where the new node came from. Throws input::InputError
 // naming the override.
-void apply_override(YAML::Node& root, const Override& o, YamlFields& fields);
+void apply_override(YAML::Node& root, const Override& o, input::YamlFields& fields);
 
 }  // namespace unfurl

@@ -12,7 +12,7 @@
 #include "scene_validation.hpp"
 #include "unfurl/sim/number_text.hpp"
 #include "unfurl/sim/scene_file.hpp"
-#include "yaml_fields.hpp"
+#include "unfurl/input/yaml_fields.hpp"
 
 namespace unfurl {
 
@@ -47,9 +47,9 @@ bool on_one_branch(const Model& model, int a, int b) {
   return descends(a, b) || descends(b, a);
 }
 
-class SceneReader : private YamlFields {
+class SceneReader : private input::YamlFields {
  public:
-  explicit SceneReader(std::string source) : YamlFields(std::move(source)) {}
+  explicit SceneReader(std::string source) : input::YamlFields(std::move(source)) {}
 
   SceneFile read(const std::string& text, const std::vector<Override>& overrides);
 
@@ -213,7 +213,7 @@ void SceneReader::read_mass_properties(const YAML::Node& node, const std::string
 }
 
 void SceneReader::read_body(const YAML::Node& node, int index, const YAML::Node& all, Scene& scene) {
-  std::string field = index_field("bodies", index);
+  std::string field = input::index_field("bodies", index);
   check_keys(node, {"name", "parent", "mass", "com", "inertia", "mesh", "joint"}, field);
   Body b;
   b.name = name(require(node, "name", field), field + ".name");
@@ -274,7 +274,7 @@ void SceneReader::read_springs(const YAML::Node& list, Scene& scene) const {
   if (!list.IsSequence()) fail(list, "springs", "expected a list");
   for (std::size_t n = 0; n < list.size(); ++n) {
     const YAML::Node s = list[n];
-    const std::string field = index_field("springs", n);
+    const std::string field = input::index_field("springs", n);
     check_keys(s, {"joint", "stiffness", "free_position", "damping", "table"}, field);
     JointSpring spring;
     spring.joint = joint_by_name(require(s, "joint", field), scene, field + ".joint", true);
@@ -314,7 +314,7 @@ void SceneReader::read_dampers(const YAML::Node& list, Scene& scene) const {
   if (!list.IsSequence()) fail(list, "dampers", "expected a list");
   for (std::size_t n = 0; n < list.size(); ++n) {
     const YAML::Node d = list[n];
-    const std::string field = index_field("dampers", n);
+    const std::string field = input::index_field("dampers", n);
     check_keys(d, {"joint", "damping"}, field);
     JointSpring damper;
     damper.joint = joint_by_name(require(d, "joint", field), scene, field + ".joint", true);
@@ -327,7 +327,7 @@ void SceneReader::read_friction(const YAML::Node& list, Scene& scene) const {
   if (!list.IsSequence()) fail(list, "friction", "expected a list");
   for (std::size_t n = 0; n < list.size(); ++n) {
     const YAML::Node f = list[n];
-    const std::string field = index_field("friction", n);
+    const std::string field = input::index_field("friction", n);
     check_keys(f, {"joint", "coulomb", "viscous", "velocity_scale"}, field);
     JointFriction friction;
     friction.joint = joint_by_name(require(f, "joint", field), scene, field + ".joint", true);
@@ -356,7 +356,7 @@ void SceneReader::read_point_springs(const YAML::Node& list, Scene& scene) const
   body_poses(scene.model, scene.q0.data(), poses);
   for (std::size_t n = 0; n < list.size(); ++n) {
     const YAML::Node node = list[n];
-    const std::string field = index_field("point_springs", n);
+    const std::string field = input::index_field("point_springs", n);
     check_keys(node,
                {"name", "body_a", "point_a", "body_b", "point_b", "stiffness", "rest_length", "damping",
                 "tension_only"},
@@ -385,7 +385,7 @@ void SceneReader::read_loads(const YAML::Node& list, Scene& scene) const {
   if (!list.IsSequence()) fail(list, "loads", "expected a list");
   for (std::size_t n = 0; n < list.size(); ++n) {
     const YAML::Node l = list[n];
-    const std::string field = index_field("loads", n);
+    const std::string field = input::index_field("loads", n);
     check_keys(l, {"body", "force", "torque", "point", "frame"}, field);
     BodyLoad load;
     load.body = body_by_name(require(l, "body", field), scene, field + ".body");
@@ -407,7 +407,7 @@ void SceneReader::read_latches(const YAML::Node& list, Scene& scene) const {
   if (!list.IsSequence()) fail(list, "latches", "expected a list");
   for (std::size_t n = 0; n < list.size(); ++n) {
     const YAML::Node l = list[n];
-    const std::string field = index_field("latches", n);
+    const std::string field = input::index_field("latches", n);
     check_keys(l, {"joint", "position", "stiffness", "damping", "free_play"}, field);
     Latch latch;
     latch.joint = joint_by_name(require(l, "joint", field), scene, field + ".joint", true);
@@ -425,7 +425,7 @@ void SceneReader::read_loops(const YAML::Node& list, Scene& scene) {
   if (!list.IsSequence()) fail(list, "loops", "expected a list");
   for (std::size_t n = 0; n < list.size(); ++n) {
     const YAML::Node l = list[n];
-    const std::string field = index_field("loops", n);
+    const std::string field = input::index_field("loops", n);
     check_keys(l, {"name", "body", "image"}, field);
     Loop loop;
     loop.body = body_by_name(require(l, "body", field), scene, field + ".body");
@@ -577,7 +577,7 @@ void SceneReader::check_run_size(const YAML::Node& node, const RunSettings& run)
 
 SceneFile SceneReader::read(const std::string& text_in, const std::vector<Override>& overrides) {
   YAML::Node root = load_document(text_in);
-  if (!root.IsMap()) throw SceneError(source() + ": a scene file is a YAML mapping (name, bodies, ...)");
+  if (!root.IsMap()) throw input::InputError(source() + ": a scene file is a YAML mapping (name, bodies, ...)");
   for (const Override& o : overrides) apply_override(root, o, *this);
 
   check_keys(root,
@@ -638,7 +638,7 @@ SceneFile read_scene_text(const std::string& text, const std::string& source, co
 
 SceneFile read_scene_file(const std::string& path, const std::vector<Override>& overrides) {
   std::ifstream in(path);
-  if (!in) throw SceneError(path + ": cannot open the scene file");
+  if (!in) throw input::InputError(path + ": cannot open the scene file");
   std::stringstream text;
   text << in.rdbuf();
   return read_scene_text(text.str(), path, overrides);

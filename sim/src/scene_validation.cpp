@@ -6,7 +6,7 @@
 
 namespace unfurl {
 
-void check_loops_close(const Scene& scene, const std::vector<YAML::Node>& loop_nodes, const YamlFields& fields) {
+void check_loops_close(const Scene& scene, const std::vector<YAML::Node>& loop_nodes, const input::YamlFields& fields) {
   std::vector<Pose> poses;
   body_poses(scene.model, scene.q0.data(), poses);
   for (std::size_t l = 0; l < scene.loops.size(); ++l) {
@@ -19,7 +19,7 @@ void check_loops_close(const Scene& scene, const std::vector<YAML::Node>& loop_n
         << scene.model.bodies[loop.body].name << "' and '" << scene.model.bodies[loop.image].name << "' are "
         << e.distance << " m apart and their frames " << e.angle << " rad apart (closure_tolerance "
         << scene.closure_tolerance << ")";
-      fields.fail(loop_nodes[l], index_field("loops", l), s.str());
+      fields.fail(loop_nodes[l], input::index_field("loops", l), s.str());
     }
   }
 }

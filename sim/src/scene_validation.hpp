@@ -5,12 +5,12 @@
 #include <vector>
 
 #include "unfurl/sim/scene.hpp"
-#include "yaml_fields.hpp"
+#include "unfurl/input/yaml_fields.hpp"
 
 namespace unfurl {
 
-// Throws SceneError at the loop's entry when a loop's body and image are
+// Throws input::InputError at the loop's entry when a loop's body and image are
 // further apart at q0 than the scene's closure_tolerance.
-void check_loops_close(const Scene& scene, const std::vector<YAML::Node>& loop_nodes, const YamlFields& fields);
+void check_loops_close(const Scene& scene, const std::vector<YAML::Node>& loop_nodes, const input::YamlFields& fields);
 
 }  // namespace unfurl

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "yaml_fields.hpp"
+#include "unfurl/input/yaml_fields.hpp"
 
 namespace unfurl {
 
@@ -24,7 +24,7 @@ std::string short_number(double x) {
 
 std::string percent(double fraction) { return short_number(100 * fraction); }
 
-std::string scalar_text(const YamlFields& fields, const YAML::Node& node, const std::string& field) {
+std::string scalar_text(const input::YamlFields& fields, const YAML::Node& node, const std::string& field) {
   if (!node.IsScalar()) fields.fail(node, field, "expected a single value");
   return node.Scalar();
 }
@@ -44,7 +44,7 @@ class StudyReader {
     if (root["set"]) read_settings(root["set"], study);
     try {
       nominal_ = nominal_scene(study).scene;
-    } catch (const SceneError& e) {
+    } catch (const input::InputError& e) {
       if (!root["set"]) throw;
       fields_.fail(root["set"], "set", std::string("the scene does not accept it: ") + e.what());
     }
@@ -90,7 +90,7 @@ class StudyReader {
     if (!list.IsSequence()) fields_.fail(list, "vary", "expected a list of {path, values | grid | uniform | normal | lognormal}");
     for (std::size_t i = 0; i < list.size(); ++i) {
       const YAML::Node item = list[i];
-      const std::string field = index_field("vary", i);
+      const std::string field = input::index_field("vary", i);
       fields_.check_map(item, field);
       fields_.check_keys(item, {"path", "scale", "values", "grid", "uniform", "normal", "lognormal"}, field);
       StudyVariable v;
@@ -121,7 +121,7 @@ class StudyReader {
     std::vector<std::string> paths;
     try {
       paths = expand_scene_path(study.scene_text, study.scene_source, probe);
-    } catch (const SceneError&) {
+    } catch (const input::InputError&) {
       fields_.fail(node, field, "the scene has no value at " + probe);
     }
     if (preload)
@@ -192,7 +192,7 @@ class StudyReader {
         std::vector<Override> overrides = study.settings;
         overrides.push_back({v.path, text});
         (void)load_scene_text(study.scene_text, study.scene_source, overrides);
-      } catch (const SceneError& e) {
+      } catch (const input::InputError& e) {
         fields_.fail(item, field, std::string(v.path) + " = " + text + " is not a valid scene: " + e.what());
       }
     }
@@ -228,7 +228,7 @@ class StudyReader {
     if (!list.IsSequence()) fields_.fail(list, "failures", "expected a list");
     for (std::size_t i = 0; i < list.size(); ++i) {
       const YAML::Node item = list[i];
-      const std::string field = index_field("failures", i);
+      const std::string field = input::index_field("failures", i);
       fields_.check_map(item, field);
       fields_.check_keys(item,
                          {"latch_fails", "spring_breaks", "preload_loss", "stuck", "extra_friction", "fraction",
@@ -314,7 +314,7 @@ class StudyReader {
     fields_.fail(node, "overlay", "'" + study.overlay_joint + "' is not a moving joint of the scene");
   }
 
-  YamlFields fields_;
+  input::YamlFields fields_;
   std::string directory_;
   Scene nominal_;
 };
@@ -365,7 +365,7 @@ Study read_study_text(const std::string& text, const std::string& source, const 
 
 Study read_study_file(const std::string& path) {
   std::ifstream in(path);
-  if (!in) throw SceneError(path + ": cannot open the study file");
+  if (!in) throw input::InputError(path + ": cannot open the study file");
   std::stringstream text;
   text << in.rdbuf();
   return read_study_text(text.str(), path, std::filesystem::path(path).parent_path().string());

@@ -80,13 +80,13 @@ void add_listed_cases(const Study& study, std::vector<StudyCase>& cases) {
 int joint_named(const Model& model, const std::string& name) {
   for (int j = 0; j < static_cast<int>(model.joints.size()); ++j)
     if (model.joints[j].name == name) return j;
-  throw SceneError("no joint " + name + " in the scene");
+  throw input::InputError("no joint " + name + " in the scene");
 }
 
 JointSpring& spring_of(Scene& scene, int joint) {
   for (std::size_t s = 0; s < scene.dampers_from; ++s)
     if (scene.springs[s].joint == joint) return scene.springs[s];
-  throw SceneError("no spring on joint " + scene.model.joints[joint].name);
+  throw input::InputError("no spring on joint " + scene.model.joints[joint].name);
 }
 
 double initial_q(const Scene& scene, int joint) { return scene.q0[scene.model.coordinate[joint]]; }

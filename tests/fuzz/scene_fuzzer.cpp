@@ -1,7 +1,7 @@
 // libFuzzer target for the scene loader and the --set parser. The input is
 // a scene file; its lines that start with "#set " are also given as
 // overrides (KEY=VALUE), as `unfurl simulate --set` would. Whatever the
-// input, loading ends in a scene or a SceneError: any other exception, a
+// input, loading ends in a scene or a input::InputError: any other exception, a
 // crash, a hang or a sanitizer report is a finding.
 #include <cstddef>
 #include <cstdint>
@@ -30,10 +30,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     const unfurl::SceneFile file = unfurl::read_scene_text(text, "fuzz.yaml", overrides_in(text));
     if (file.scene.model.nq <= 0) std::abort();  // the loader promises something to integrate
-  } catch (const unfurl::SceneError&) {
+  } catch (const unfurl::input::InputError&) {
     // The answer to bad input.
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "not a SceneError: %s\n", e.what());
+    std::fprintf(stderr, "not a input::InputError: %s\n", e.what());
     std::abort();
   }
   return 0;

@@ -60,7 +60,7 @@ struct Study {
   std::string overlay_joint; // the joint whose angle every case draws on one plot
 };
 
-// Reads a study file; errors (SceneError) name the file, line, column and
+// Reads a study file; errors (input::InputError) name the file, line, column and
 // field, as for scenes.
 Study read_study_file(const std::string& path);
 Study read_study_text(const std::string& text, const std::string& source, const std::string& directory);

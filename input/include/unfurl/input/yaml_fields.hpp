@@ -11,9 +11,11 @@
 #include <utility>
 #include <vector>
 
-#include "unfurl/sim/spatial.hpp"
+#include <Eigen/Core>
 
-namespace unfurl {
+#include "unfurl/input/input_error.hpp"
+
+namespace unfurl::input {
 
 // "list[i]".
 std::string index_field(const std::string& list, std::size_t i);
@@ -31,12 +33,12 @@ class YamlFields {
   // Remembers that `node` came from the override `origin` ("--set a.b=1").
   void mark_override(const YAML::Node& node, std::string origin) { overrides_.emplace_back(node, std::move(origin)); }
 
-  // Throws SceneError at the node's position.
+  // Throws InputError at the node's position.
   [[noreturn]] void fail(const YAML::Node& at, const std::string& field, const std::string& what) const;
   std::string where(const YAML::Node& at) const;
   const std::string& source() const { return source_; }
 
-  // The one YAML document in `text`. Throws SceneError with the line for a
+  // The one YAML document in `text`. Throws InputError with the line for a
   // syntax error, a second document, or a key given twice in one mapping
   // (YAML leaves both to the reader; one would silently win).
   YAML::Node load_document(const std::string& text) const;
@@ -56,12 +58,12 @@ class YamlFields {
   long count(const YAML::Node& node, const std::string& field, long lo, long hi) const;
   bool flag(const YAML::Node& node, const std::string& field) const;
   std::vector<double> numbers(const YAML::Node& node, const std::string& field) const;
-  Vec3 vec3(const YAML::Node& node, const std::string& field) const;
-  Vec3 vec3_or(const YAML::Node& map, const char* key, const Vec3& fallback, const std::string& field) const;
+  Eigen::Vector3d vec3(const YAML::Node& node, const std::string& field) const;
+  Eigen::Vector3d vec3_or(const YAML::Node& map, const char* key, const Eigen::Vector3d& fallback, const std::string& field) const;
 
  private:
   std::string source_;
   std::vector<std::pair<YAML::Node, std::string>> overrides_;  // node, "--set ..."
 };
 
-}  // namespace unfurl
+}  // namespace unfurl::input

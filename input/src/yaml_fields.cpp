@@ -1,12 +1,10 @@
-#include "yaml_fields.hpp"
+#include "unfurl/input/yaml_fields.hpp"
 
 #include <cmath>
 #include <set>
 #include <sstream>
 
-#include "unfurl/sim/scene_file.hpp"
-
-namespace unfurl {
+namespace unfurl::input {
 
 namespace {
 
@@ -50,7 +48,7 @@ void check_single_document(const std::string& text, const std::string& source) {
     const auto first = line.find_first_not_of(" \t\r");
     const bool blank = first == std::string::npos || line[first] == '#';
     if ((marker && start && content) || (!marker && !blank && ended))
-      throw SceneError(source + ":" + std::to_string(number) +
+      throw InputError(source + ":" + std::to_string(number) +
                        ":1: a second YAML document; a scene file holds one (remove the '---' line or split the file)");
     if (marker && end) ended = content;
     if (!marker && !blank && line[first] != '%') content = true;
@@ -72,7 +70,7 @@ std::string YamlFields::where(const YAML::Node& at) const {
 }
 
 void YamlFields::fail(const YAML::Node& at, const std::string& field, const std::string& what) const {
-  throw SceneError(where(at) + ": " + (field.empty() ? "" : field + ": ") + what);
+  throw InputError(where(at) + ": " + (field.empty() ? "" : field + ": ") + what);
 }
 
 YAML::Node YamlFields::load_document(const std::string& text) const {
@@ -81,10 +79,10 @@ YAML::Node YamlFields::load_document(const std::string& text) const {
   try {
     document = YAML::Load(text);
   } catch (const YAML::ParserException& e) {
-    throw SceneError(source_ + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) +
+    throw InputError(source_ + ":" + std::to_string(e.mark.line + 1) + ":" + std::to_string(e.mark.column + 1) +
                      ": YAML syntax error: " + e.msg);
   }
-  if (!document || document.IsNull()) throw SceneError(source_ + ": the scene file is empty or holds no YAML mapping");
+  if (!document || document.IsNull()) throw InputError(source_ + ": the scene file is empty or holds no YAML mapping");
   check_unique_keys(document, *this);
   return document;
 }
@@ -174,13 +172,13 @@ std::vector<double> YamlFields::numbers(const YAML::Node& node, const std::strin
   return out;
 }
 
-Vec3 YamlFields::vec3(const YAML::Node& node, const std::string& field) const {
+Eigen::Vector3d YamlFields::vec3(const YAML::Node& node, const std::string& field) const {
   const std::vector<double> v = numbers(node, field);
   if (v.size() != 3) fail(node, field, "expected 3 numbers, got " + std::to_string(v.size()));
-  return Vec3(v[0], v[1], v[2]);
+  return Eigen::Vector3d(v[0], v[1], v[2]);
 }
 
-Vec3 YamlFields::vec3_or(const YAML::Node& map, const char* key, const Vec3& fallback,
+Eigen::Vector3d YamlFields::vec3_or(const YAML::Node& map, const char* key, const Eigen::Vector3d& fallback,
                           const std::string& field) const {
   const YAML::Node node = map[key];
   return node ? vec3(node, field + "." + key) : fallback;
@@ -193,4 +191,4 @@ bool YamlFields::flag(const YAML::Node& node, const std::string& field) const {
   fail(node, field, "expected true or false, got '" + value + "'");
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::input
