@@ -52,8 +52,8 @@ void print_summary(const Scene& scene, const RunResult& result, const RunSummary
   if (result.jacobian_product_evals > 0)
     std::printf("             %ld evaluations for Jacobian products (gains held, cheaper)\n",
                 result.jacobian_product_evals);
-  if (!scene.latches.empty()) {
-    std::printf("latches      %zu of %zu engaged\n", s.latch_times.size(), scene.latches.size());
+  if (!scene.latches().empty()) {
+    std::printf("latches      %zu of %zu engaged\n", s.latch_times.size(), scene.latches().size());
     for (const auto& [joint, t] : s.latch_times) std::printf("               %-10s t = %.9f s\n", joint.c_str(), t);
     for (const auto& joint : s.unlatched) std::printf("               %-10s never latched\n", joint.c_str());
   }

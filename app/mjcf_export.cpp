@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "unfurl/sim/dynamics.hpp"
+#include "unfurl/sim/elements/all.hpp"
 #include "unfurl/sim/kinematics.hpp"
 #include "unfurl/sim/number_text.hpp"
 #include "output_file.hpp"
@@ -68,8 +69,8 @@ class Writer {
     const std::vector<double> y = dynamics.initial_state();
     Observation o;
     dynamics.observe(0, y.data(), o);
-    dq0_ = o.dq;
-    rates0_ = o.rates;
+    dq0_ = o.q_dot;
+    rates0_ = o.w;
   }
 
   MjcfModel write() {
@@ -103,13 +104,17 @@ class Writer {
          << "     one body and closed by equality/connect at the split pivot. -->\n";
     out_ << "<mujoco model=\"" << scene_.name << "\">\n";
     out_ << "  <compiler angle=\"radian\" inertiafromgeom=\"false\"/>\n";
-    out_ << "  <option timestep=\"1e-4\" integrator=\"RK4\" gravity=\"" << vec(m.gravity) << "\">\n";
+    out_ << "  <option timestep=\"1e-4\" integrator=\"RK4\" gravity=\"" << vec(scene_.gravity()) << "\">\n";
     out_ << "    <flag contact=\"disable\" energy=\"enable\"/>\n  </option>\n";
     if (!m.base_velocity.isZero(0))
       unsupported("the base moves (velocity " + vec(m.base_velocity.head<3>()) + ", " +
                   vec(m.base_velocity.tail<3>()) + "): the model's base is fixed");
-    for (const BodyLoad& load : scene_.loads)
-      unsupported("a constant load on '" + m.bodies[load.body].name + "' (MJCF has no constant body force)");
+    for (const auto& e : scene_.elements) {
+      if (const auto* load = dynamic_cast<const AppliedForce*>(e.get()))
+        unsupported("a constant load on '" + m.bodies[load->body].name + "' (MJCF has no constant body force)");
+      else if (!exported(*e))
+        unsupported("a " + e->kind() + " (" + e->list() + "): MJCF has no form for it here");
+    }
   }
 
   void body(int i, int depth) {
@@ -117,7 +122,7 @@ class Writer {
     if (depth - 1 > deepest_) deepest_ = depth - 1, deepest_body_ = m.bodies[i].name;
     const std::string pad(2 * depth, ' ');
     const Joint& joint = m.joints[i];
-    const int c = m.coordinate[i];
+    const int c = m.first_position[i].value;
     // A ball's or planar joint's body sits at the joint's neutral position,
     // so MuJoCo's qpos for it is unfurl's q; a hinge's or slide's at q0 with
     // ref = q0; a free body where q0 puts it (its qpos is its pose).
@@ -157,20 +162,23 @@ class Writer {
 
   void joint(int i, const std::string& pad) {
     const Joint& j = model_.joints[i];
-    const int c = model_.coordinate[i];
+    const int c = model_.first_position[i].value;
     // Springs on one joint add up to one: stiffness sum k, rest at the
     // stiffness-weighted free position (the same torque for every q).
     double k = 0, k_free = 0, damping = 0;
-    for (const JointSpring& s : scene_.springs)
-      if (s.joint == i) k += s.stiffness, k_free += s.stiffness * s.free_position, damping += s.damping;
+    for (const JointSpring* s : scene_.elements_of<JointSpring>())
+      if (s->joint == i) k += s->stiffness, k_free += s->stiffness * s->free_position, damping += s->damping;
+    for (const JointDamper* d : scene_.elements_of<JointDamper>())
+      if (d->joint == i) damping += d->damping;
     // Coulomb friction becomes MuJoCo's frictionloss, a dry-friction
-    // constraint that sticks exactly where ours (tanh, friction.hpp) creeps.
-    for (const JointSpring& s : scene_.springs)
-      if (s.joint == i && s.curve)
+    // constraint that sticks exactly where ours (tanh, joint_friction.hpp)
+    // creeps.
+    for (const JointSpring* s : scene_.elements_of<JointSpring>())
+      if (s->joint == i && s->curve)
         unsupported("the measured spring curve of '" + j.name + "' (MJCF joint springs are linear)");
     double frictionloss = 0;
-    for (const JointFriction& f : scene_.friction)
-      if (f.joint == i) frictionloss += f.coulomb, damping += f.viscous;
+    for (const JointFriction* f : scene_.elements_of<JointFriction>())
+      if (f->joint == i) frictionloss += f->coulomb, damping += f->viscous;
     switch (j.type) {
       case JointType::free:
         out_ << pad << "<freejoint name=\"" << j.name << "\"/>\n";
@@ -216,23 +224,25 @@ class Writer {
 
   // The ends of the point springs on body i, as sites NAME_a and NAME_b.
   void sites(int i, const std::string& pad) {
-    for (const PointSpring& s : scene_.point_springs)
-      for (const auto& [body, point, end] : {std::tuple{s.body_a, s.point_a, "_a"}, std::tuple{s.body_b, s.point_b, "_b"}}) {
+    for (const PointSpring* s : scene_.elements_of<PointSpring>())
+      for (const auto& [body, point, end] :
+           {std::tuple{s->body_a, s->point_a, "_a"}, std::tuple{s->body_b, s->point_b, "_b"}}) {
         const auto [on, r] = body == kBase ? std::pair{kBase, point} : written_point(body, point);
-        if (on == i) out_ << pad << "<site name=\"" << s.name << end << "\" pos=\"" << vec(r) << "\" size=\"0.005\"/>\n";
+        if (on == i) out_ << pad << "<site name=\"" << s->name << end << "\" pos=\"" << vec(r) << "\" size=\"0.005\"/>\n";
       }
   }
 
   // Point springs as spatial tendons between their two sites.
   void tendons() {
-    if (scene_.point_springs.empty()) return;
+    const std::vector<const PointSpring*> springs = scene_.elements_of<PointSpring>();
+    if (springs.empty()) return;
     out_ << "  <tendon>\n";
-    for (const PointSpring& s : scene_.point_springs) {
-      out_ << "    <spatial name=\"" << s.name << "\" stiffness=\"" << num(s.stiffness) << "\" springlength=\""
-           << num(s.rest_length) << "\" damping=\"" << num(s.damping) << "\" width=\"0.006\">\n"
-           << "      <site site=\"" << s.name << "_a\"/>\n      <site site=\"" << s.name << "_b\"/>\n    </spatial>\n";
-      if (s.tension_only)
-        unsupported("cable '" + s.name + "' is tension-only; MJCF's tendon spring also pushes when slack");
+    for (const PointSpring* s : springs) {
+      out_ << "    <spatial name=\"" << s->name << "\" stiffness=\"" << num(s->stiffness) << "\" springlength=\""
+           << num(s->rest_length) << "\" damping=\"" << num(s->damping) << "\" width=\"0.006\">\n"
+           << "      <site site=\"" << s->name << "_a\"/>\n      <site site=\"" << s->name << "_b\"/>\n    </spatial>\n";
+      if (s->tension_only)
+        unsupported("cable '" + s->name + "' is tension-only; MJCF's tendon spring also pushes when slack");
     }
     out_ << "  </tendon>\n";
   }
@@ -251,30 +261,28 @@ class Writer {
       out_ << "    <connect name=\"" << loop.name << "\" body1=\"" << model_.bodies[loop.body].name << "\" body2=\""
            << (parent == kBase ? std::string("world") : model_.bodies[parent].name) << "\" anchor=\"" << vec(anchor)
            << "\" solref=\"1e-9 1\" solimp=\"0.9999 0.9999 0.001 0.5 2\"/>\n";
-      for (const JointSpring& s : scene_.springs)
-        if (s.joint == loop.image)
-          unsupported("a spring or damper on the loop joint '" + pivot.name + "' (it became a connect constraint)");
-      for (const JointFriction& f : scene_.friction)
-        if (f.joint == loop.image)
-          unsupported("friction on the loop joint '" + pivot.name + "' (it became a connect constraint)");
+      for (const JointElement* e : scene_.elements_of<JointElement>())
+        if (e->joint == loop.image)
+          unsupported("a " + e->kind() + " on the loop joint '" + pivot.name + "' (it became a connect constraint)");
     }
     out_ << "  </equality>\n";
   }
 
   void latches() {
-    if (scene_.latches.empty()) return;
+    const std::vector<const Latch*> latches = scene_.latches();
+    if (latches.empty()) return;
     out_ << "  <!-- Not in MJCF: latches. Joint JOINT latches the first time it reaches its\n"
          << "       position and from then on feels -stiffness (q - position) - damping dq.\n"
          << "       latch:JOINT = position, stiffness, damping, side (sign of q0 - position;\n"
          << "       0: engaged from the start); apply them through mjcb_passive. -->\n  <custom>\n";
-    for (const Latch& l : scene_.latches) {
-      const double offset = scene_.q0[model_.coordinate[l.joint]] - l.position;
+    for (const Latch* l : latches) {
+      const double offset = scene_.q0[model_.position_of(l->joint).value] - l->position;
       const double side = offset > 0 ? 1 : offset < 0 ? -1 : 0;
-      out_ << "    <numeric name=\"latch:" << model_.joints[l.joint].name << "\" data=\"" << num(l.position) << " "
-           << num(l.stiffness) << " " << num(l.damping) << " " << num(side) << "\"/>\n";
-      unsupported("the latch of '" + model_.joints[l.joint].name + "' (kept as custom numeric latch:" +
-                  model_.joints[l.joint].name + ")");
-      if (l.free_play > 0) unsupported("the free play of the latch of '" + model_.joints[l.joint].name + "'");
+      out_ << "    <numeric name=\"latch:" << model_.joints[l->joint].name << "\" data=\"" << num(l->position) << " "
+           << num(l->stiffness) << " " << num(l->damping) << " " << num(side) << "\"/>\n";
+      unsupported("the latch of '" + model_.joints[l->joint].name + "' (kept as custom numeric latch:" +
+                  model_.joints[l->joint].name + ")");
+      if (l->free_play > 0) unsupported("the free play of the latch of '" + model_.joints[l->joint].name + "'");
     }
     out_ << "  </custom>\n";
   }
@@ -288,7 +296,7 @@ class Writer {
     const auto add = [](std::string& list, double x) { list += (list.empty() ? "" : " ") + num(x); };
     for (int i : written_) {
       const Joint& j = model_.joints[i];
-      const int c = model_.coordinate[i], v = model_.velocity[i];
+      const int c = model_.first_position[i].value, v = model_.first_velocity[i].value;
       for (int k = 0; k < j.positions(); ++k) add(qpos, scene_.q0[c + k]);
       if (j.type == JointType::free) {
         for (int k = 0; k < 3; ++k) add(qvel, dq0_[c + k]);
@@ -300,6 +308,14 @@ class Writer {
       }
     }
     out_ << "  <keyframe>\n    <key name=\"initial\" qpos=\"" << qpos << "\" qvel=\"" << qvel << "\"/>\n  </keyframe>\n";
+  }
+
+  // Whether the writer has a form (or a note) for an element of this kind.
+  static bool exported(const ForceElement& e) {
+    return dynamic_cast<const JointSpring*>(&e) || dynamic_cast<const JointDamper*>(&e) ||
+           dynamic_cast<const JointFriction*>(&e) || dynamic_cast<const Latch*>(&e) ||
+           dynamic_cast<const PointSpring*>(&e) || dynamic_cast<const Gravity*>(&e) ||
+           dynamic_cast<const AppliedForce*>(&e);
   }
 
   void unsupported(const std::string& what) {

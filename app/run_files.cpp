@@ -42,14 +42,14 @@ void write_trajectory_csv(const Scene& scene, const Trajectory& trajectory, cons
   for (const Sample& s : trajectory.samples) {
     out << format_number(s.t);
     for (int c = 0; c < n1; ++c)
-      out << ',' << format_number(s.y[L.q() + c]) << ',' << format_number(s.dq[c]) << ','
+      out << ',' << format_number(s.y[L.q() + c]) << ',' << format_number(s.q_dot[c]) << ','
           << format_number(s.y[L.p() + c]);
-    for (int c = n1; c < model.nq; ++c) out << ',' << format_number(s.y[L.q() + c]) << ',' << format_number(s.dq[c]);
+    for (int c = n1; c < model.nq; ++c) out << ',' << format_number(s.y[L.q() + c]) << ',' << format_number(s.q_dot[c]);
     for (int c = n1; c < model.nv; ++c) out << ',' << format_number(s.y[L.p() + c]);
     for (std::size_t l = 0; l < scene.loops.size(); ++l)
       out << ',' << format_number(s.closure[l].distance) << ',' << format_number(s.closure[l].angle);
     for (int i : turning) {
-      const JointOrientation motion = joint_orientation(model, i, s.y.data() + L.q(), s.dq.data());
+      const JointOrientation motion = joint_orientation(model, i, s.y.data() + L.q(), s.q_dot.data());
       for (const Vec3* x : {&motion.rotation_vector, &motion.rate})
         for (int a = 0; a < 3; ++a) out << ',' << format_number((*x)[a]);
     }
@@ -61,57 +61,34 @@ void write_trajectory_csv(const Scene& scene, const Trajectory& trajectory, cons
   file.commit();
 }
 
-namespace {
-
-// Which element columns a joint has.
-struct JointElements {
-  bool spring = false, damper = false, friction = false, latch = false;
-};
-
-std::vector<JointElements> joint_elements(const Scene& scene) {
-  std::vector<JointElements> has(scene.model.size());
-  for (std::size_t k = 0; k < scene.springs.size(); ++k) {
-    const JointSpring& s = scene.springs[k];
-    if (k < scene.dampers_from) has[s.joint].spring = true;
-    if (s.damping != 0) has[s.joint].damper = true;
-  }
-  for (const JointFriction& f : scene.friction) has[f.joint].friction = true;
-  for (const Latch& latch : scene.latches) has[latch.joint].latch = true;
-  return has;
-}
-
-}  // namespace
-
 void write_loads_csv(const Scene& scene, const Trajectory& trajectory, const std::string& path) {
   const Model& model = scene.model;
-  const std::vector<JointElements> has = joint_elements(scene);
+  const std::vector<LoadColumn>& columns = trajectory.load_columns;
+  // Each joint's element columns, then its reaction; the loops' forces;
+  // the columns of elements that are not on a joint.
+  std::vector<std::vector<int>> of_joint(model.size());
+  std::vector<int> apart;
+  for (std::size_t c = 0; c < columns.size(); ++c)
+    (columns[c].joint >= 0 ? of_joint[columns[c].joint] : apart).push_back(static_cast<int>(c));
   OutputFile file(path);
   std::ostream& out = file.stream();
   out << "t";
   for (int j = 0; j < model.size(); ++j) {
-    const std::string& name = model.joints[j].name;
-    if (has[j].spring) out << ",tau_spring." << name;
-    if (has[j].damper) out << ",tau_damper." << name;
-    if (has[j].friction) out << ",tau_friction." << name;
-    if (has[j].latch) out << ",tau_latch." << name;
-    for (int a = 0; a < 6; ++a) out << ",reaction." << name << '.' << wrench_component_name(a);
+    for (int c : of_joint[j]) out << ',' << columns[c].name;
+    for (int a = 0; a < 6; ++a) out << ",reaction." << model.joints[j].name << '.' << wrench_component_name(a);
   }
   for (const LoopComponent& c : trajectory.loop_components)
     out << ",loop_force." << scene.loops[c.loop].name << '.' << wrench_component_name(c.axis);
-  for (const PointSpring& p : scene.point_springs) out << ",tension." << p.name;
+  for (int c : apart) out << ',' << columns[c].name;
   out << '\n';
   for (const Sample& s : trajectory.samples) {
     out << format_number(s.t);
     for (int j = 0; j < model.size(); ++j) {
-      const JointLoad& load = s.loads.joints[j];
-      if (has[j].spring) out << ',' << format_number(load.spring);
-      if (has[j].damper) out << ',' << format_number(load.damper);
-      if (has[j].friction) out << ',' << format_number(load.friction);
-      if (has[j].latch) out << ',' << format_number(load.latch);
-      for (int a = 0; a < 6; ++a) out << ',' << format_number(load.reaction[a]);
+      for (int c : of_joint[j]) out << ',' << format_number(s.loads.element[c]);
+      for (int a = 0; a < 6; ++a) out << ',' << format_number(s.loads.reaction[j][a]);
     }
     for (double f : s.loads.loop_force) out << ',' << format_number(f);
-    for (double T : s.loads.point_spring_tension) out << ',' << format_number(T);
+    for (int c : apart) out << ',' << format_number(s.loads.element[c]);
     out << '\n';
   }
   file.commit();

@@ -39,12 +39,12 @@ void read_events(const Scene& scene, const std::string& path, Trajectory& tr) {
   for (int n = 2; std::getline(in, line); ++n) {
     const auto cells = split(line);
     if (cells.size() != 3) throw std::runtime_error(path + ":" + std::to_string(n) + ": expected t,event,joint");
-    const int joint = scene.model.find_body(cells[2]);
+    const std::vector<const Latch*> latches = scene.latches();
     int latch = -1;
-    for (std::size_t l = 0; l < scene.latches.size(); ++l)
-      if (scene.model.joints[scene.latches[l].joint].name == cells[2]) latch = static_cast<int>(l), (void)joint;
+    for (std::size_t l = 0; l < latches.size(); ++l)
+      if (scene.model.joints[latches[l]->joint].name == cells[2]) latch = static_cast<int>(l);
     if (latch < 0) throw std::runtime_error(path + ":" + std::to_string(n) + ": no latch on joint '" + cells[2] + "'");
-    tr.events.push_back({parse(cells[0], path + ":" + std::to_string(n)), latch, scene.latches[latch].joint});
+    tr.events.push_back({parse(cells[0], path + ":" + std::to_string(n)), latch, latches[latch]->joint});
   }
 }
 
@@ -62,6 +62,7 @@ void read_loads(const Scene& scene, const std::string& path, Trajectory& tr) {
     const auto it = column.find(name);
     return it == column.end() ? -1 : it->second;
   };
+  tr.load_columns = scene.load_columns();
   std::vector<int> loop_columns;
   for (std::size_t c = 0; c < header.size(); ++c) {
     if (header[c].rfind("loop_force.", 0) != 0) continue;
@@ -84,27 +85,21 @@ void read_loads(const Scene& scene, const std::string& path, Trajectory& tr) {
     Sample& s = tr.samples[k];
     if (std::abs(parse(cells[0], where) - s.t) > 1e-9 * std::max(1.0, std::abs(s.t)))
       throw std::runtime_error(where + ": its time is not trajectory.csv's");
-    s.loads.joints.assign(model.size(), JointLoad{});
+    s.loads.element.assign(tr.load_columns.size(), 0.0);
+    for (std::size_t c = 0; c < tr.load_columns.size(); ++c) {
+      const int at = find(tr.load_columns[c].name);
+      if (at >= 0) s.loads.element[c] = parse(cells[at], where);
+    }
+    s.loads.reaction.resize(model.size());
     for (int j = 0; j < model.size(); ++j) {
       const std::string& name = model.joints[j].name;
-      JointLoad& load = s.loads.joints[j];
-      const int spring = find("tau_spring." + name), damper = find("tau_damper." + name), latch = find("tau_latch." + name);
-      const int friction = find("tau_friction." + name);
-      if (spring >= 0) load.spring = parse(cells[spring], where);
-      if (damper >= 0) load.damper = parse(cells[damper], where);
-      if (friction >= 0) load.friction = parse(cells[friction], where);
-      if (latch >= 0) load.latch = parse(cells[latch], where);
       for (int a = 0; a < 6; ++a) {
         const int c = find("reaction." + name + "." + wrench_component_name(a));
         if (c < 0) throw std::runtime_error(path + ":1: no column 'reaction." + name + "." + wrench_component_name(a) + "'");
-        load.reaction[a] = parse(cells[c], where);
+        s.loads.reaction[j][a] = parse(cells[c], where);
       }
     }
     for (int c : loop_columns) s.loads.loop_force.push_back(parse(cells[c], where));
-    for (const PointSpring& p : scene.point_springs) {
-      const int c = find("tension." + p.name);
-      s.loads.point_spring_tension.push_back(c >= 0 ? parse(cells[c], where) : 0.0);
-    }
   }
 }
 
@@ -149,10 +144,10 @@ Trajectory read_trajectory_csv(const Scene& scene, const std::string& path) {
     Sample s;
     s.t = parse(cells[t_col], where);
     s.y.resize(model.nq + model.nv);
-    s.dq.resize(model.nq);
+    s.q_dot.resize(model.nq);
     for (int c = 0; c < model.nq; ++c) {
       s.y[c] = parse(cells[q_col[c]], where);
-      s.dq[c] = parse(cells[dq_col[c]], where);
+      s.q_dot[c] = parse(cells[dq_col[c]], where);
     }
     for (int c = 0; c < model.nv; ++c) s.y[model.nq + c] = parse(cells[p_col[c]], where);
     for (std::size_t l = 0; l < scene.loops.size(); ++l) {

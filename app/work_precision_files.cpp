@@ -76,7 +76,7 @@ void write_work_precision_markdown(const Scene& scene, const WorkPrecision& repo
   out << "- Reference: " << report.reference << ".\n";
   std::snprintf(buf, sizeof buf, "%g", report.compared_until);
   out << "- Angle error: the largest |q - q_ref| over the joints and the samples with t <= " << buf << " s";
-  if (!scene.latches.empty() && !scene.loops.empty())
+  if (!scene.latches().empty() && !scene.loops.empty())
     out << " (the reference's first latch: after it the deployed state can be a branch point where exact runs "
            "part, so the final state and the latch times are compared instead)";
   out << ". Adaptive integrators run at rtol as given and atol = rtol / 100 (joint angles; momenta 100x, regulator "
@@ -95,15 +95,15 @@ void write_work_precision_markdown(const Scene& scene, const WorkPrecision& repo
   out << "\n## Every run\n\n";
   out << "| integrator | setting | status | wall time, s | steps | RHS calls | Jacobians | linear iterations | angle "
          "error, rad | final-state error, rad |";
-  if (!scene.latches.empty()) out << " latch-time error, s |";
+  if (!scene.latches().empty()) out << " latch-time error, s |";
   if (!scene.loops.empty()) out << " max loop gap, m |";
-  out << "\n|---|---|---|---|---|---|---|---|---|---|" << (scene.latches.empty() ? "" : "---|")
+  out << "\n|---|---|---|---|---|---|---|---|---|---|" << (scene.latches().empty() ? "" : "---|")
       << (scene.loops.empty() ? "" : "---|") << "\n";
   for (const PrecisionPoint& p : report.points) {
     out << "| " << integrator_name(p.integrator) << " | " << setting(p) << " | " << table_cell(status_text(p)) << " | "
         << seconds(p.wall_time_s) << " | " << p.stats.steps << " | " << p.rhs_calls << " | " << p.stats.jacobian_evals << " | "
         << p.stats.linear_iterations << " | " << sci(p.angle_error) << " | " << sci(p.final_error) << " |";
-    if (!scene.latches.empty()) out << ' ' << sci(p.latch_time_error) << " |";
+    if (!scene.latches().empty()) out << ' ' << sci(p.latch_time_error) << " |";
     if (!scene.loops.empty()) out << ' ' << sci(p.max_loop_gap) << " |";
     out << '\n';
   }

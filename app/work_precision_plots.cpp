@@ -8,7 +8,7 @@ std::vector<std::string> write_work_precision_plots(const Scene& scene, const Wo
                                                     const std::string& dir) {
   std::vector<std::pair<PrecisionMeasure, std::string>> plots{
       {PrecisionMeasure::angle_error, "work_precision.png"}};
-  if (!scene.latches.empty()) {
+  if (!scene.latches().empty()) {
     plots.emplace_back(PrecisionMeasure::latch_time_error, "work_precision_latch.png");
     plots.emplace_back(PrecisionMeasure::final_error, "work_precision_final.png");
   }

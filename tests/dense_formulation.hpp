@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "unfurl/sim/loop.hpp"
+#include "unfurl/sim/elements/all.hpp"
 #include "unfurl/sim/scene.hpp"
 
 namespace unfurl::test {
@@ -181,7 +182,7 @@ inline Dense dense_formulation(const Scene& scene, const VectorXd& q) {
   VectorXd v_star = VectorXd::Zero(6 * N);
   const double none = 0;
   for (int i = 0; i < N; ++i) {
-    const int c = model.coordinate[i];
+    const int c = model.first_position[i].value;
     const double* qi = c >= 0 ? &q[c] : &none;
     Mat3 G;
     Vec3 rho;
@@ -191,7 +192,7 @@ inline Dense dense_formulation(const Scene& scene, const VectorXd& q) {
       v_star.segment<6>(6 * i) = C * model.base_velocity;
     else
       S.block<6, 6>(6 * i, 6 * model.parent[i]) = -C;  // (2)
-    if (c >= 0) A.block(6 * i, model.velocity[i], 6, model.joints[i].dof()) = A_of(model.joints[i], qi);
+    if (c >= 0) A.block(6 * i, model.first_velocity[i].value, 6, model.joints[i].dof()) = A_of(model.joints[i], qi);
     const Body& b = model.bodies[i];
     const Mat3 J = b.inertia_com + b.mass * (b.com.squaredNorm() * Mat3::Identity() - b.com * b.com.transpose());
     M.block<3, 3>(6 * i, 6 * i) = b.mass * Mat3::Identity();
@@ -215,7 +216,7 @@ inline void poses(const Scene& scene, const VectorXd& q, std::vector<Mat3>& R, s
   R.resize(model.size());
   r.resize(model.size());
   for (int i = 0; i < model.size(); ++i) {
-    const int c = model.coordinate[i];
+    const int c = model.first_position[i].value;
     const double none = 0;
     Mat3 G;
     Vec3 rho;
@@ -232,16 +233,16 @@ inline double hamiltonian(const Scene& scene, const VectorXd& q, const VectorXd&
   const Dense d = dense_formulation(scene, q);
   const VectorXd x = p - d.b;
   double H = 0.5 * x.dot(d.Mt.ldlt().solve(x)) - d.c;
-  for (const JointSpring& s : scene.springs) {
-    const double dq = q[scene.model.coordinate[s.joint]] - s.free_position;
-    H += 0.5 * s.stiffness * dq * dq;
+  for (const JointSpring* s : scene.elements_of<JointSpring>()) {
+    const double dq = q[scene.model.position_of(s->joint).value] - s->free_position;
+    H += 0.5 * s->stiffness * dq * dq;
   }
   std::vector<Mat3> R;
   std::vector<Vec3> r;
   poses(scene, q, R, r);
   for (int i = 0; i < scene.model.size(); ++i) {
     const Body& b = scene.model.bodies[i];
-    H -= b.mass * scene.model.gravity.dot(r[i] + R[i].transpose() * b.com);
+    H -= b.mass * scene.gravity().dot(r[i] + R[i].transpose() * b.com);
   }
   return H;
 }
@@ -254,14 +255,14 @@ inline VectorXd body_forces(const Scene& scene, const VectorXd& q, bool with_gra
   std::vector<Vec3> r;
   poses(scene, q, R, r);
   VectorXd F = VectorXd::Zero(6 * model.size());
-  for (const BodyLoad& l : scene.loads) {
-    const Vec3 f = l.in_base_frame ? Vec3(R[l.body] * l.force) : l.force;
-    const Vec3 m = l.in_base_frame ? Vec3(R[l.body] * l.torque) : l.torque;
-    F.segment<3>(6 * l.body) += f;
-    F.segment<3>(6 * l.body + 3) += m + l.point.cross(f);
+  for (const AppliedForce* l : scene.elements_of<AppliedForce>()) {
+    const Vec3 f = l->in_base_frame ? Vec3(R[l->body] * l->force) : l->force;
+    const Vec3 m = l->in_base_frame ? Vec3(R[l->body] * l->torque) : l->torque;
+    F.segment<3>(6 * l->body) += f;
+    F.segment<3>(6 * l->body + 3) += m + l->point.cross(f);
   }
   for (int i = 0; i < model.size() && with_gravity; ++i) {
-    const Vec3 f = R[i] * (model.bodies[i].mass * model.gravity);
+    const Vec3 f = R[i] * (model.bodies[i].mass * scene.gravity());
     F.segment<3>(6 * i) += f;
     F.segment<3>(6 * i + 3) += model.bodies[i].com.cross(f);
   }
@@ -273,7 +274,8 @@ inline VectorXd body_forces(const Scene& scene, const VectorXd& q, bool with_gra
 inline VectorXd applied_forces(const Scene& scene, const VectorXd& q, const VectorXd& dq) {
   const Model& model = scene.model;
   VectorXd Q = VectorXd::Zero(model.nv);
-  for (const JointSpring& s : scene.springs) Q[model.coordinate[s.joint]] -= s.damping * dq[model.coordinate[s.joint]];
+  for (const JointSpring* s : scene.elements_of<JointSpring>())
+    Q[model.velocity_of(s->joint).value] -= s->damping * dq[model.velocity_of(s->joint).value];
   return Q + dense_formulation(scene, q).ATTt * body_forces(scene, q, false);
 }
 
@@ -318,26 +320,33 @@ inline Scene random_tree(std::mt19937& rng, int N, bool moving_base, bool multi_
     model.joints.push_back(j);
     model.parent.push_back(std::uniform_int_distribution<int>(-1, i - 1)(rng));
   }
+  Vec3 gravity = Vec3::Zero();
   if (moving_base) {
     for (int k = 0; k < 6; ++k) model.base_velocity[k] = U(rng);
   } else {
-    model.gravity = Vec3(U(rng), U(rng), -9.81);
+    gravity = Vec3(U(rng), U(rng), -9.81);
   }
   model.finalize();
   for (int i = 0; i < N; ++i) {
     if (!model.joints[i].is_scalar()) continue;
     if (U(rng) > 0) {
-      JointSpring s;
-      s.joint = i;
-      s.stiffness = 2 * (U(rng) + 1);
-      s.free_position = U(rng);
-      s.damping = 0.5 * (U(rng) + 1);
-      scene.springs.push_back(s);
+      auto s = std::make_shared<JointSpring>(i);
+      s->stiffness = 2 * (U(rng) + 1);
+      s->free_position = U(rng);
+      s->damping = 0.5 * (U(rng) + 1);
+      scene.elements.push_back(s);
     }
-    if (U(rng) > 0.5)
-      scene.loads.push_back({i, Vec3(U(rng), U(rng), U(rng)), Vec3(U(rng), U(rng), U(rng)),
-                             Vec3(U(rng), U(rng), U(rng)), !moving_base && U(rng) > 0});
+    if (U(rng) > 0.5) {
+      auto load = std::make_shared<AppliedForce>();
+      load->body = i;
+      load->force = Vec3(U(rng), U(rng), U(rng));
+      load->torque = Vec3(U(rng), U(rng), U(rng));
+      load->point = Vec3(U(rng), U(rng), U(rng));
+      load->in_base_frame = !moving_base && U(rng) > 0;
+      scene.elements.push_back(load);
+    }
   }
+  if (!gravity.isZero(0)) scene.elements.push_back(std::make_shared<Gravity>(gravity));
   scene.q0.assign(model.nq, 0.0);
   for (double& x : scene.q0) x = 3 * U(rng);  // a quaternion's norm does not matter
   scene.dq0.assign(model.nv, 0.0);

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <string>
 
+#include "unfurl/sim/elements/all.hpp"
 #include "unfurl/sim/scene_file.hpp"
 #include "unfurl/sim/simulation.hpp"
 
@@ -74,6 +75,23 @@ inline double q_of(const Scene& scene, const Sample& s, const std::string& name)
   for (int c = 0; c < scene.model.nq; ++c)
     if (scene.model.position_name(c) == name) return s.y[c];
   throw std::runtime_error("no coordinate " + name);
+}
+
+// The load column `name` ("tau_latch.j1") of a run's samples, by the
+// run's column description.
+inline double load_of(const std::vector<LoadColumn>& columns, const Loads& loads, const std::string& name) {
+  const int c = find_load_column(columns, name);
+  if (c < 0) throw std::runtime_error("no load column " + name);
+  return loads.element[c];
+}
+
+// The sum of the element torques on joint j: what its hinge's reaction
+// carries about the axis.
+inline double joint_element_torque(const std::vector<LoadColumn>& columns, const Loads& loads, int j) {
+  double sum = 0;
+  for (std::size_t c = 0; c < columns.size(); ++c)
+    if (columns[c].joint == j) sum += loads.element[c];
+  return sum;
 }
 
 }  // namespace unfurl::test

@@ -30,8 +30,8 @@ TEST(ClosureSolver, DenseAndSparseSolveOnAFreeFloatingBus) {
   const Scene scene = test::scene_file("pantograph_free");
   VectorXd q(scene.model.nq);
   for (int k = 0; k < q.size(); ++k) q[k] = 0.7 * scene.q0[k];
-  q.segment<3>(scene.model.coordinate[0]) << 0.1, -0.2, 0.3;
-  q.segment<4>(scene.model.coordinate[0] + 3) << 0.9, 0.1, -0.3, 0.2;
+  q.segment<3>(scene.model.first_position[0].value) << 0.1, -0.2, 0.3;
+  q.segment<4>(scene.model.first_position[0].value + 3) << 0.9, 0.1, -0.3, 0.2;
   for (const auto kind : {ClosureSolverKind::dense, ClosureSolverKind::sparse})
     expect_closure_solve_matches_dense(scene, kind, q, 1e-5);
 }

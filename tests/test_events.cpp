@@ -121,7 +121,9 @@ TEST(Events, LatchAtTheStartIsEngagedFromTheStartAndHolds) {
   // The joint starts at its latch position with the spring pulling it away
   // (free position 1): caught at t = 0, it sits at the static deflection.
   Scene scene = oscillators({{"a", 2.0, 0.0, 0.0}}, "{t_end: 5, rtol: 1.0e-10, atol: 1.0e-12}");
-  scene.springs[0].free_position = 1.0;
+  auto spring = std::make_shared<JointSpring>(*scene.elements_of<JointSpring>()[0]);
+  spring->free_position = 1.0;
+  scene.elements[0] = spring;  // the scene's first element is its spring
   const RunResult run = simulate(scene, scene.run);
   ASSERT_EQ(run.status, RunStatus::finished) << describe(run.failure);
   ASSERT_EQ(run.trajectory.events.size(), 1u);

@@ -59,7 +59,7 @@ void expect_conserved(const FreeRun& r, double least_turn) {
   for (const Sample& s : tr.samples) moved = std::max(moved, (centre_of_mass(r.scene.model, s) - c0).norm());
   EXPECT_LT(moved, 1e-8) << "the centre of mass moved";  // the positions' integration error: 2.4e-9 and 1.2e-9 m
   // The bus quaternion's norm: a first integral of q' = q (x) (0, w) / 2.
-  const int c = r.scene.model.coordinate[0] + 3;
+  const int c = r.scene.model.first_position[0].value + 3;
   for (const Sample& s : tr.samples)
     ASSERT_NEAR(Eigen::Vector4d(s.y[c], s.y[c + 1], s.y[c + 2], s.y[c + 3]).norm(), 1.0, 1e-6) << "t = " << s.t;
 }

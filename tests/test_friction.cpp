@@ -113,12 +113,15 @@ TEST(Friction, LoadsReportTheFrictionTorque) {
   std::vector<double> y = dynamics.initial_state();
   y[1] = 0.02;  // p = I dq: dq = 0.02 rad/s, twice the velocity scale
   Loads loads;
-  dynamics.loads(0, y.data(), loads);
+  ASSERT_TRUE(dynamics.loads(0, y.data(), loads));
   const double expected = -0.2 * std::tanh(2.0) - 0.5 * 0.02;
-  EXPECT_NEAR(loads.joints[0].friction, expected, 1e-14);
+  const std::vector<LoadColumn>& columns = dynamics.load_columns();
+  EXPECT_NEAR(test::load_of(columns, loads, "tau_friction.hinge"), expected, 1e-14);
   EXPECT_NEAR(dynamics.dissipation(y.data(), std::vector<double>{0.02}.data()), -expected * 0.02, 1e-15);
   // The reaction's component about the hinge is the sum of the element torques.
-  EXPECT_NEAR(loads.joints[0].reaction[3], loads.joints[0].spring + loads.joints[0].friction, 1e-12);
+  EXPECT_NEAR(loads.reaction[0][3],
+              test::load_of(columns, loads, "tau_spring.hinge") + test::load_of(columns, loads, "tau_friction.hinge"),
+              1e-12);
 }
 
 TEST(Friction, PantographBalancesEnergyWithItsLatches) {

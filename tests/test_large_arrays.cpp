@@ -32,14 +32,15 @@ void expect_same_mechanism(const Scene& a, const Scene& b) {
         << j.name;
     EXPECT_TRUE((j.child_point - k.child_point).norm() < 1e-15) << j.name;
   }
-  ASSERT_EQ(a.springs.size(), b.springs.size());
-  for (std::size_t s = 0; s < a.springs.size(); ++s) {
-    EXPECT_EQ(a.springs[s].joint, b.springs[s].joint);
-    EXPECT_DOUBLE_EQ(a.springs[s].free_position, b.springs[s].free_position);
-    EXPECT_DOUBLE_EQ(a.springs[s].stiffness, b.springs[s].stiffness);
-    EXPECT_DOUBLE_EQ(a.springs[s].damping, b.springs[s].damping);
+  const std::vector<const JointSpring*> springs_a = a.elements_of<JointSpring>(), springs_b = b.elements_of<JointSpring>();
+  ASSERT_EQ(springs_a.size(), springs_b.size());
+  for (std::size_t s = 0; s < springs_a.size(); ++s) {
+    EXPECT_EQ(springs_a[s]->joint, springs_b[s]->joint);
+    EXPECT_DOUBLE_EQ(springs_a[s]->free_position, springs_b[s]->free_position);
+    EXPECT_DOUBLE_EQ(springs_a[s]->stiffness, springs_b[s]->stiffness);
+    EXPECT_DOUBLE_EQ(springs_a[s]->damping, springs_b[s]->damping);
   }
-  ASSERT_EQ(a.latches.size(), b.latches.size());
+  ASSERT_EQ(a.latches().size(), b.latches().size());
   ASSERT_EQ(a.loops.size(), b.loops.size());
   for (std::size_t l = 0; l < a.loops.size(); ++l) {
     EXPECT_EQ(a.loops[l].body, b.loops[l].body);

@@ -110,7 +110,7 @@ TEST(PantographOffNominal, LatchedRingDownConvergesWithoutNewtonFailures) {
   const Scene scene = test::scene_file("pantograph", {{"springs.0.stiffness", "0.12"}});
   const RunResult run = simulate(scene, scene.run);
   ASSERT_EQ(run.status, RunStatus::finished) << describe(run.failure);
-  EXPECT_EQ(run.trajectory.events.size(), scene.latches.size());
+  EXPECT_EQ(run.trajectory.events.size(), scene.latches().size());
   EXPECT_LT(run.stats.nonlinear_failures, 100);
   EXPECT_LT(summarize(scene, run).max_closure_m, 1e-6);
 }

@@ -172,7 +172,7 @@ void expect_agreement(const std::string& name, const std::vector<Override>& over
               before.largest, first, whole.largest);
   EXPECT_LT(before.largest, bounds.until_first_latch) << "the two part " << before.first_parting;
   EXPECT_LT(whole.largest, bounds.whole_run) << "the two part " << whole.first_parting;
-  if (!scene.latches.empty()) {
+  if (!scene.latches().empty()) {
     const double latch = latch_time_difference(scene, ours, peer);
     std::printf("%s: latch times differ by at most %.3g s\n", name.c_str(), latch);
     EXPECT_LT(latch, bounds.latch_time);

@@ -113,7 +113,7 @@ TEST(Energy, ConservativeSpinningBaseKeepsItsHamiltonian) {
   // H = p.dq - L, with L = T - V; T and V from the observation.
   auto H = [&](const Sample& s) {
     double pdq = 0;
-    for (int c = 0; c < scene.model.nq; ++c) pdq += s.y[scene.model.nq + c] * s.dq[c];
+    for (int c = 0; c < scene.model.nq; ++c) pdq += s.y[scene.model.nq + c] * s.q_dot[c];
     return pdq - s.energy.kinetic + s.energy.springs;
   };
   const double H0 = H(run.trajectory.samples.front());

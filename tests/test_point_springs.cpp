@@ -43,8 +43,8 @@ TEST(PointSprings, SliderOscillatesAtSqrtKOverM) {
   EXPECT_LT(worst, 1e-7);
   // Its tension, in the loads: k (x - 1).
   const Sample& s = run.trajectory.samples[100];
-  ASSERT_EQ(s.loads.point_spring_tension.size(), 1u);
-  EXPECT_NEAR(s.loads.point_spring_tension[0], 8 * (s.y[0] - 1), 1e-9);
+  ASSERT_EQ(s.loads.element.size(), 1u);
+  EXPECT_NEAR(test::load_of(run.trajectory.load_columns, s.loads, "tension.tie"), 8 * (s.y[0] - 1), 1e-9);
 }
 
 TEST(PointSprings, CableIsSlackThenTautForHalfAPeriod) {
@@ -67,7 +67,7 @@ TEST(PointSprings, CableIsSlackThenTautForHalfAPeriod) {
       x = 1 - (s.t - t_back);
     worst = std::max(worst, std::abs(s.y[0] - x));
     if (std::abs(s.y[0]) < 1) {
-      EXPECT_EQ(s.loads.point_spring_tension[0], 0.0) << s.t;
+      EXPECT_EQ(test::load_of(run.trajectory.load_columns, s.loads, "tension.tie"), 0.0) << s.t;
     }
   }
   EXPECT_LT(worst, 1e-6);

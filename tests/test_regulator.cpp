@@ -80,7 +80,7 @@ TEST(LoopRegulator, StiffLatchesEndAtRestWithTheSpringsEnergyAndNoStuckResidual)
   EXPECT_NEAR(summary.energy_final, springs_energy, 0.01 * springs_energy);
   EXPECT_LT(run.peaks.gap_m.value, 1e-7);
   const Sample& last = run.trajectory.samples.back();
-  for (double rate : last.dq) EXPECT_LT(std::abs(rate), 1e-3);
+  for (double rate : last.q_dot) EXPECT_LT(std::abs(rate), 1e-3);
 }
 
 TEST(LeaveOut, TreeSceneCarriesNoRegulatorState) {

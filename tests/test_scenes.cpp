@@ -15,7 +15,7 @@ TEST(PantographStowed, RunsToTheEndAndReportsWhichJointsLatched) {
   EXPECT_DOUBLE_EQ(run.trajectory.t_end(), 20.0);
   const RunSummary s = summarize(scene, run);
   // Every latch is accounted for: latched with a time, or listed unlatched.
-  EXPECT_EQ(s.latch_times.size() + s.unlatched.size(), scene.latches.size());
+  EXPECT_EQ(s.latch_times.size() + s.unlatched.size(), scene.latches().size());
   EXPECT_LT(s.max_closure_m, 1e-5);
   std::printf("stowed start: %zu of 8 latched;", s.latch_times.size());
   for (const auto& [joint, t] : s.latch_times) std::printf(" %s@%.4f", joint.c_str(), t);

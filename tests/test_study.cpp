@@ -118,22 +118,24 @@ TEST(StudyCases, FailuresChangeTheSceneAsNamed) {
   EXPECT_EQ(cases[1].id, "fail-latch-j3-fails");
   const Scene nominal = nominal_scene(study).scene;
   const Scene no_latch = case_scene(study, cases[1]);
-  EXPECT_EQ(no_latch.latches.size(), 7u);
-  for (const Latch& l : no_latch.latches) EXPECT_NE(nominal.model.joints[l.joint].name, "j3");
-  EXPECT_EQ(case_scene(study, cases[2]).springs[0].stiffness, 0.0);
+  EXPECT_EQ(no_latch.latches().size(), 7u);
+  for (const Latch* l : no_latch.latches()) EXPECT_NE(nominal.model.joints[l->joint].name, "j3");
+  EXPECT_EQ(case_scene(study, cases[2]).elements_of<JointSpring>()[0]->stiffness, 0.0);
   const Scene half = case_scene(study, cases[3]);
-  const double q0 = nominal.q0[nominal.model.coordinate[1]];
-  EXPECT_DOUBLE_EQ(half.springs[1].free_position - q0, 0.5 * (nominal.springs[1].free_position - q0));
+  const double q0 = nominal.q0[nominal.model.position_of(1).value];
+  EXPECT_DOUBLE_EQ(half.elements_of<JointSpring>()[1]->free_position - q0,
+                   0.5 * (nominal.elements_of<JointSpring>()[1]->free_position - q0));
   const Scene stuck = case_scene(study, cases[4]);  // j1
-  ASSERT_EQ(stuck.latches.size(), 9u);
-  EXPECT_EQ(stuck.latches.back().joint, 0);
-  EXPECT_EQ(stuck.latches.back().position, nominal.q0[0]);
+  ASSERT_EQ(stuck.latches().size(), 9u);
+  EXPECT_EQ(stuck.latches().back()->joint, 0);
+  EXPECT_EQ(stuck.latches().back()->position, nominal.q0[0]);
   EXPECT_EQ(cases.back().id, "fail-hinge-j4-friction-0.05Nm-0.01Nms");
   const Scene cold = case_scene(study, cases.back());
-  ASSERT_EQ(cold.friction.size(), nominal.friction.size() + 1);
-  EXPECT_EQ(nominal.model.joints[cold.friction.back().joint].name, "j4");
-  EXPECT_EQ(cold.friction.back().coulomb, 0.05);
-  EXPECT_EQ(cold.friction.back().viscous, 0.01);
+  const std::vector<const JointFriction*> friction = cold.elements_of<JointFriction>();
+  ASSERT_EQ(friction.size(), nominal.elements_of<JointFriction>().size() + 1);
+  EXPECT_EQ(nominal.model.joints[friction.back()->joint].name, "j4");
+  EXPECT_EQ(friction.back()->coulomb, 0.05);
+  EXPECT_EQ(friction.back()->viscous, 0.01);
 }
 
 // The workbench's edits of a case go over the case's own values, its
@@ -144,10 +146,11 @@ TEST(StudyCases, EditsOfACaseGoOverItsValues) {
   ASSERT_EQ(cases.size(), 2u);
   const Scene scaled = case_scene(study, cases[1]);
   const Scene other_edit = case_scene_file(study, cases[1], {{"springs.j1.stiffness", "0.2"}}).scene;
-  EXPECT_EQ(other_edit.springs[1].free_position, scaled.springs[1].free_position);  // the same double
-  EXPECT_EQ(other_edit.springs[0].stiffness, 0.2);
+  EXPECT_EQ(other_edit.elements_of<JointSpring>()[1]->free_position,
+            scaled.elements_of<JointSpring>()[1]->free_position);  // the same double
+  EXPECT_EQ(other_edit.elements_of<JointSpring>()[0]->stiffness, 0.2);
   const Scene typed = case_scene_file(study, cases[1], {{"springs.j2.free_position", "1.0"}}).scene;
-  EXPECT_EQ(typed.springs[1].free_position, 1.0);
+  EXPECT_EQ(typed.elements_of<JointSpring>()[1]->free_position, 1.0);
 }
 
 // The runs of injected failures: the array deploys without one spring; a

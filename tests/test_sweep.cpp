@@ -92,7 +92,7 @@ TEST_P(RandomMultiDofTrees, SweepMatchesTheDenseFormulation) {
   VectorXd dq_expected(nq);
   for (int i = 0; i < model.size(); ++i) {
     const Joint& j = model.joints[i];
-    const int c = model.coordinate[i], v = model.velocity[i];
+    const int c = model.first_position[i].value, v = model.first_velocity[i].value;
     if (c < 0) continue;
     const auto quaternion_rate = [&](int at, int rate) {
       const Eigen::Vector4d r = 0.5 * quaternion_product(q.segment<4>(at), Eigen::Vector4d(0, w[rate], w[rate + 1], w[rate + 2]));
@@ -119,7 +119,7 @@ TEST_P(RandomMultiDofTrees, SweepMatchesTheDenseFormulation) {
   for (int i = 0; i < model.size(); ++i)
     if (model.joints[i].is_scalar() || model.joints[i].type == JointType::universal)
       for (int k = 0; k < model.joints[i].dof(); ++k)
-        conjugate.emplace_back(model.coordinate[i] + k, model.velocity[i] + k);
+        conjugate.emplace_back(model.first_position[i].value + k, model.first_velocity[i].value + k);
   const double h = 1e-4;
   const VectorXd Q = applied_forces(scene, q, w);
   double scale = 1;

@@ -117,7 +117,7 @@ namespace {
 // latches).
 bool same_structure(const Scene& a, const Scene& b) {
   return a.name == b.name && a.model.size() == b.model.size() && a.model.nq == b.model.nq &&
-         a.latches.size() == b.latches.size() && a.loops.size() == b.loops.size();
+         a.latches().size() == b.latches().size() && a.loops.size() == b.loops.size();
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "gui_panels.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -27,18 +28,6 @@ void value_field(const char* label, const std::string& path, double value, doubl
   const bool commit = ImGui::IsItemDeactivatedAfterEdit() || (stepped && !ImGui::IsItemActive());
   if (lo < hi) v = std::clamp(v, lo, hi);
   if (commit && v != value) requests.edit = Override{path, format_number(v)};
-}
-
-// How a --set path names element k of a list: by its joint (or name) when
-// no other element shares it, else by its index.
-template <class Element, class NameOf>
-std::string element_path(const std::string& list, const std::vector<Element>& elements, std::size_t k, NameOf name_of,
-                         std::size_t from = 0, std::size_t to = std::string::npos) {
-  to = std::min(to, elements.size());
-  const std::string name = name_of(elements[k]);
-  for (std::size_t j = from; j < to; ++j)
-    if (j != k && name_of(elements[j]) == name) return list + "." + std::to_string(k - from);
-  return list + "." + name;
 }
 
 double run_end(const GuiState& state) { return state.scene.run.t_end; }
@@ -237,11 +226,47 @@ void timeline_panel(GuiState& state) {
   state.play_time = std::clamp(state.play_time, 0.0, t_end);
 }
 
+namespace {
+
+// "point_springs" -> "Point springs": a list's heading.
+std::string list_title(std::string list) {
+  for (char& c : list) c = c == '_' ? ' ' : c;
+  if (!list.empty()) list[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(list[0])));
+  return list;
+}
+
+// Every force element's parameters, a section per list of the scene file,
+// in the order the lists first appear.
+void elements_section(GuiState& state, Requests& requests) {
+  const Scene& scene = state.scene;
+  std::vector<std::string> lists;
+  for (const auto& e : scene.elements)
+    if (std::find(lists.begin(), lists.end(), e->list()) == lists.end()) lists.push_back(e->list());
+  for (std::size_t n = 0; n < lists.size(); ++n) {
+    if (!ImGui::CollapsingHeader(list_title(lists[n]).c_str(), n == 0 ? ImGuiTreeNodeFlags_DefaultOpen : 0)) continue;
+    for (std::size_t k = 0; k < scene.elements.size(); ++k) {
+      const ForceElement& e = *scene.elements[k];
+      if (e.list() != lists[n]) continue;
+      const std::vector<ElementParameter> parameters = e.parameters();
+      const std::string path = scene.element_path(k);
+      ImGui::PushID(static_cast<int>(k));
+      const FailureLock lock(state, path);
+      const std::string handle = e.handle(scene.model);
+      ImGui::Text("%s %s", e.kind().c_str(), handle.c_str());
+      lock.note();
+      if (const std::string note = e.note(); !note.empty()) ImGui::TextDisabled("  %s", note.c_str());
+      for (const ElementParameter& p : parameters)
+        value_field((p.label + "##" + p.key).c_str(), path + "." + p.key, p.value, p.step, requests, p.lo, p.hi,
+                    "%.6g", p.help.c_str());
+      ImGui::PopID();
+    }
+  }
+}
+
+}  // namespace
+
 void parameters_panel(GuiState& state, Requests& requests) {
   const Scene& scene = state.scene;
-  const Model& model = scene.model;
-  // How a spring, friction or latch entry is named in a --set path.
-  const auto joint_name = [&](const auto& element) { return model.joints[element.joint].name; };
   if (state.save_path[0] == 0) {
     const std::string stem = std::filesystem::path(state.scene_name).stem().string();
     std::snprintf(state.save_path, sizeof state.save_path, "%s_edited.yaml", stem.c_str());
@@ -281,82 +306,7 @@ void parameters_panel(GuiState& state, Requests& requests) {
     }
     ImGui::EndPopup();
   }
-  if (!scene.springs.empty() && ImGui::CollapsingHeader("Springs and dampers", ImGuiTreeNodeFlags_DefaultOpen)) {
-    for (std::size_t k = 0; k < scene.springs.size(); ++k) {
-      const JointSpring& s = scene.springs[k];
-      const bool damper = k >= scene.dampers_from;
-      const std::string path = damper ? element_path("dampers", scene.springs, k, joint_name, scene.dampers_from)
-                                      : element_path("springs", scene.springs, k, joint_name, 0, scene.dampers_from);
-      ImGui::PushID(static_cast<int>(k));
-      const FailureLock lock(state, path);
-      ImGui::Text("%s %s", damper ? "damper" : "spring", model.joints[s.joint].name.c_str());
-      lock.note();
-      if (s.curve) {
-        ImGui::TextDisabled("  measured curve, %zu points (edit the file's table)", s.curve->angles().size());
-      } else if (!damper) {
-        value_field("stiffness [N m/rad]", path + ".stiffness", s.stiffness, 0.005, requests, 0, 1e9, "%.6g",
-                    "torsion spring rate k: tau = -k (q - free angle) - c dq");
-        value_field("preload: free angle [rad]", path + ".free_position", s.free_position, 0.01, requests, 0, 0,
-                    "%.6g", "the angle where the spring is relaxed; the preload at q is k (free angle - q)");
-      }
-      value_field("damping [N m s/rad]", path + ".damping", s.damping, 0.001, requests, 0, 1e9, "%.6g",
-                  "viscous damping c of the hinge");
-      ImGui::PopID();
-    }
-  }
-  if (!scene.friction.empty() && ImGui::CollapsingHeader("Hinge friction")) {
-    for (std::size_t k = 0; k < scene.friction.size(); ++k) {
-      const JointFriction& f = scene.friction[k];
-      const std::string path = element_path("friction", scene.friction, k, joint_name);
-      ImGui::PushID(500 + static_cast<int>(k));
-      const FailureLock lock(state, path);
-      ImGui::Text("friction %s", model.joints[f.joint].name.c_str());
-      lock.note();
-      value_field("Coulomb [N m]", path + ".coulomb", f.coulomb, 0.001, requests, 0, 1e9, "%.6g",
-                  "sliding friction torque T_c: tau = -T_c tanh(dq / v_s) - c_v dq");
-      value_field("viscous [N m s/rad]", path + ".viscous", f.viscous, 0.001, requests, 0, 1e9, "%.6g",
-                  "viscous friction coefficient c_v");
-      value_field("velocity scale [rad/s]", path + ".velocity_scale", f.velocity_scale, 1e-4, requests, 1e-9, 1e3,
-                  "%.3g", "v_s: the Coulomb torque ramps through zero speed over about this rate");
-      ImGui::PopID();
-    }
-  }
-  if (!scene.point_springs.empty() && ImGui::CollapsingHeader("Point springs and cables")) {
-    for (std::size_t k = 0; k < scene.point_springs.size(); ++k) {
-      const PointSpring& p = scene.point_springs[k];
-      // A name the reader made up (spring<n>) is not in the file: by index.
-      const std::string path = p.name == "spring" + std::to_string(k)
-                                   ? "point_springs." + std::to_string(k)
-                                   : element_path("point_springs", scene.point_springs, k,
-                                                  [](const PointSpring& e) { return e.name; });
-      ImGui::PushID(700 + static_cast<int>(k));
-      ImGui::Text("%s %s", p.tension_only ? "cable" : "spring", p.name.c_str());
-      value_field("stiffness [N/m]", path + ".stiffness", p.stiffness, 0.1, requests, 0, 1e12, "%.6g",
-                  "T = k (L - rest length) + c dL/dt between the two points");
-      value_field("rest length [m]", path + ".rest_length", p.rest_length, 0.001, requests, 0, 1e6, "%.6g",
-                  "the length at which it pulls nothing (a cable is slack below it)");
-      value_field("damping [N s/m]", path + ".damping", p.damping, 0.01, requests, 0, 1e12, "%.6g",
-                  "damping c along the line");
-      ImGui::PopID();
-    }
-  }
-  if (!scene.latches.empty() && ImGui::CollapsingHeader("Latches")) {
-    for (std::size_t k = 0; k < scene.latches.size(); ++k) {
-      const Latch& l = scene.latches[k];
-      const std::string path = element_path("latches", scene.latches, k, joint_name);
-      ImGui::PushID(1000 + static_cast<int>(k));
-      const FailureLock lock(state, path);
-      ImGui::Text("latch %s at %.4g", model.joints[l.joint].name.c_str(), l.position);
-      lock.note();
-      value_field("stiffness [N m/rad]##l", path + ".stiffness", l.stiffness, 10, requests, 1e-9, 1e12, "%.6g",
-                  "k_L of the engaged latch: tau = -k_L (q - position) - c_L dq");
-      value_field("damping [N m s/rad]##l", path + ".damping", l.damping, 0.1, requests, 0, 1e12, "%.6g",
-                  "c_L of the engaged latch");
-      value_field("free play [rad]##l", path + ".free_play", l.free_play, 1e-4, requests, 0, 1, "%.4g",
-                  "backlash: the latch bites beyond position +- free play / 2");
-      ImGui::PopID();
-    }
-  }
+  elements_section(state, requests);
   if (!scene.loops.empty() && ImGui::CollapsingHeader("Loop regulator", ImGuiTreeNodeFlags_DefaultOpen)) {
     const RegulatorSettings& r = scene.regulator;
     int gains = r.gains == GainTuning::full ? 0 : 1;
@@ -444,7 +394,7 @@ void curves_checklist(GuiState& state) {
   for (int c = 0; c < model.scalar_coordinates; ++c) {
     bool on = std::find(shown.begin(), shown.end(), c) != shown.end();
     ImGui::PushStyleColor(ImGuiCol_Text, render::palette(c));
-    ImGui::Checkbox(model.joints[model.joint_of_coordinate[c]].name.c_str(), &on);
+    ImGui::Checkbox(model.joints[model.joint_of_position[c]].name.c_str(), &on);
     ImGui::PopStyleColor();
     if (ImGui::IsItemEdited()) {
       if (on)

@@ -50,7 +50,7 @@ void write_session_report(const GuiState& state, const std::string& path) {
     json.begin_array("time_zoom").value("", state.time_zoom->first).value("", state.time_zoom->second).end_array();
   json.begin_array("plot_curves");
   for (int c : render::chosen_coordinates(state.scene.model, plot_choice(state)))
-    json.value("", state.scene.model.joints[state.scene.model.joint_of_coordinate[c]].name);
+    json.value("", state.scene.model.joints[state.scene.model.joint_of_position[c]].name);
   json.end_array();
   json.value("status", state.progress.running ? "running" : run_status_name(state.progress.status));
   json.value("run_wall_time_s", state.progress.wall_time_s).value("run_steps", state.progress.steps);

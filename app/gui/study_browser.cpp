@@ -4,8 +4,10 @@
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
+#include <type_traits>
 
 #include "study_files.hpp"
+#include "unfurl/sim/elements/all.hpp"
 
 namespace unfurl::app {
 
@@ -68,42 +70,36 @@ void StudyBrowser::sort(int column, bool ascending) {
   std::stable_sort(order.begin(), order.end(), less);
 }
 
-namespace {
-
-// Element k of a list as a path names it: by its joint when no other
-// element of the list has that joint, and always by index.
-template <class Element>
-void name_element(const std::string& list, const std::vector<Element>& elements, std::size_t k, const Model& model,
-                  std::vector<std::string>& out) {
-  out.push_back(list + "." + std::to_string(k));
-  const int joint = elements[k].joint;
-  const auto shared = std::count_if(elements.begin(), elements.end(), [&](const Element& e) { return e.joint == joint; });
-  if (shared == 1) out.push_back(list + "." + model.joints[joint].name);
-}
-
-}  // namespace
-
 std::vector<std::string> failure_elements(const Scene& scene, const StudyFailure& failure) {
-  std::vector<std::string> elements;
-  const Model& model = scene.model;
+  std::vector<std::string> paths;
+  const auto add = [&](std::size_t k) {
+    for (const std::string& path : scene.element_paths(k)) paths.push_back(path);
+  };
+  // The last element of a kind on the failure's joint: a spring that
+  // breaks or loses its preload, the stop of a stuck hinge (the last
+  // latch), the added friction (the last friction).
+  const auto last_on_joint = [&](auto* of_kind) {
+    using Kind = std::remove_pointer_t<decltype(of_kind)>;
+    std::size_t found = scene.elements.size();
+    for (std::size_t k = 0; k < scene.elements.size(); ++k)
+      if (const auto* e = dynamic_cast<const Kind*>(scene.elements[k].get());
+          e && scene.model.joints[e->joint].name == failure.joint)
+        found = k;
+    if (found < scene.elements.size()) add(found);
+  };
   switch (failure.kind) {
     case StudyFailure::Kind::latch_fails: break;  // nothing left to edit
     case StudyFailure::Kind::spring_breaks:
-    case StudyFailure::Kind::preload_loss: {
-      const std::vector<JointSpring> springs(scene.springs.begin(),
-                                             scene.springs.begin() + static_cast<long>(scene.dampers_from));
-      for (std::size_t k = 0; k < springs.size(); ++k)
-        if (model.joints[springs[k].joint].name == failure.joint) name_element("springs", springs, k, model, elements);
+    case StudyFailure::Kind::preload_loss:
+      for (std::size_t k = 0; k < scene.elements.size(); ++k)
+        if (const auto* s = dynamic_cast<const JointSpring*>(scene.elements[k].get());
+            s && scene.model.joints[s->joint].name == failure.joint)
+          add(k);
       break;
-    }
-    case StudyFailure::Kind::stuck:  // the stop is the last latch
-      if (!scene.latches.empty()) name_element("latches", scene.latches, scene.latches.size() - 1, model, elements);
-      break;
-    case StudyFailure::Kind::extra_friction:  // the added friction is the last entry
-      if (!scene.friction.empty()) name_element("friction", scene.friction, scene.friction.size() - 1, model, elements);
-      break;
+    case StudyFailure::Kind::stuck: last_on_joint(static_cast<const Latch*>(nullptr)); break;
+    case StudyFailure::Kind::extra_friction: last_on_joint(static_cast<const JointFriction*>(nullptr)); break;
   }
-  return elements;
+  return paths;
 }
 
 bool edits_element(const std::string& path, const std::vector<std::string>& elements) {

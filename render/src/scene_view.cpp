@@ -104,7 +104,8 @@ SceneView::SceneView(const Scene& scene, const SceneVisuals& visuals, MeshLibrar
     items_.push_back({i, &meshes.get(v.mesh), visual_transform(v)});
   }
   add_pins(scene, visuals, meshes);
-  links_ = scene.point_springs;
+  for (const auto& element : scene.elements)
+    for (const ElementLink& link : element->links()) links_.push_back(link);
   if (!links_.empty()) link_mesh_ = &meshes.get("pin");
 }
 
@@ -173,8 +174,8 @@ void SceneView::draw(const std::vector<Pose>& poses, const Camera& camera, int w
   for (const Item& item : items_) draw_mesh(*item.mesh, placement(item, poses), nullptr);
   // Springs orange, cables pale grey.
   const Eigen::Vector3f spring(0.95f, 0.55f, 0.15f), cable(0.85f, 0.85f, 0.8f);
-  for (const PointSpring& link : links_)
-    draw_mesh(*link_mesh_, link_placement(link, poses), link.tension_only ? &cable : &spring);
+  for (const ElementLink& link : links_)
+    draw_mesh(*link_mesh_, link_placement(link, poses), link.style == ElementLink::Style::cable ? &cable : &spring);
   glBindVertexArray(0);
 }
 
@@ -190,7 +191,7 @@ void SceneView::draw_mesh(const MeshModel& mesh, const Eigen::Affine3f& T, const
   }
 }
 
-Eigen::Affine3f SceneView::link_placement(const PointSpring& link, const std::vector<Pose>& poses) const {
+Eigen::Affine3f SceneView::link_placement(const ElementLink& link, const std::vector<Pose>& poses) const {
   const auto at = [&](int body, const Vec3& r) { return body == kBase ? r : poses[body].to_base(r); };
   const Eigen::Vector3f a = at(link.body_a, link.point_a).cast<float>(), b = at(link.body_b, link.point_b).cast<float>();
   const float length = std::max((b - a).norm(), 1e-6f);  // a singular scale would spoil the normals

@@ -48,10 +48,10 @@ void add_curves(PlotSpec& spec, PlotKind kind, const Scene& scene, const Traject
     case PlotKind::angles:
     case PlotKind::rates:
       for (int c : coordinates) {
-        const std::string& joint = model.joints[model.joint_of_coordinate[c]].name;
+        const std::string& joint = model.joints[model.joint_of_position[c]].name;
         added.push_back(kind == PlotKind::angles
                             ? series(tr, joint, palette(c), [&, c](const Sample& s) { return s.y[L.q() + c]; })
-                            : series(tr, joint, palette(c), [c](const Sample& s) { return s.dq[c]; }));
+                            : series(tr, joint, palette(c), [c](const Sample& s) { return s.q_dot[c]; }));
       }
       break;
     case PlotKind::residuals:
@@ -67,28 +67,30 @@ void add_curves(PlotSpec& spec, PlotKind kind, const Scene& scene, const Traject
     case PlotKind::loads: {
       // Latch torques (solid) and the hinge moments' magnitudes (dashed) of
       // the latched joints, or of the first joints of a scene without latches.
-      if (tr.empty() || tr.samples.front().loads.joints.empty()) break;
+      if (tr.empty() || tr.samples.front().loads.reaction.empty()) break;
       const int max_joints = choice.max_joints;
       const auto chosen = [&](int j) {
-        const int c = model.coordinate[j];
+        const int c = model.first_position[j].value;
         return choice.coordinates.empty() || std::find(coordinates.begin(), coordinates.end(), c) != coordinates.end();
       };
+      const std::vector<const Latch*> latches = scene.latches();
       std::vector<int> joints;
-      for (const Latch& latch : scene.latches)
-        if (chosen(latch.joint)) joints.push_back(latch.joint);
-      for (int j = 0; scene.latches.empty() && j < model.size() && static_cast<int>(joints.size()) < max_joints; ++j)
+      for (const Latch* latch : latches)
+        if (chosen(latch->joint)) joints.push_back(latch->joint);
+      for (int j = 0; latches.empty() && j < model.size() && static_cast<int>(joints.size()) < max_joints; ++j)
         if (chosen(j)) joints.push_back(j);
       if (static_cast<int>(joints.size()) > max_joints / 2) joints.resize(std::max(1, max_joints / 2));
       for (std::size_t k = 0; k < joints.size(); ++k) {
         const int j = joints[k];
         const std::string& name = model.joints[j].name;
         const ImU32 color = palette(static_cast<int>(k));
-        if (!scene.latches.empty())
-          added.push_back(series(tr, "latch " + name, color, [j](const Sample& s) { return s.loads.joints[j].latch; }));
+        const int latch = find_load_column(tr.load_columns, "tau_latch." + name);
+        if (latch >= 0)
+          added.push_back(series(tr, "latch " + name, color, [latch](const Sample& s) { return s.loads.element[latch]; }));
         added.push_back(series(tr, "|hinge moment| " + name, color, [j](const Sample& s) {
-          return s.loads.joints[j].reaction.tail<3>().norm();
+          return s.loads.reaction[j].tail<3>().norm();
         }));
-        added.back().dashed = !scene.latches.empty();
+        added.back().dashed = !latches.empty();
       }
       break;
     }
@@ -101,7 +103,7 @@ void add_curves(PlotSpec& spec, PlotKind kind, const Scene& scene, const Traject
       added.push_back(series(tr, "kinetic", palette(1), [](const Sample& s) { return s.energy.kinetic; }));
       added.push_back(series(tr, "springs", palette(2), [](const Sample& s) { return s.energy.springs; }));
       added.push_back(series(tr, "latches", palette(3), [](const Sample& s) { return s.energy.latches; }));
-      if (scene.model.gravity.norm() > 0)
+      if (scene.gravity().norm() > 0)
         added.push_back(series(tr, "gravity", palette(4), [](const Sample& s) { return s.energy.gravity; }));
       if (!scene.loops.empty())
         added.push_back(series(tr, "regulator", palette(5), [](const Sample& s) { return s.energy.regulator; }));
@@ -116,12 +118,12 @@ void add_curves(PlotSpec& spec, PlotKind kind, const Scene& scene, const Traject
       static const char* const axes[] = {"x", "y", "z"};
       for (int a = 0; a < 3; ++a) {
         added.push_back(series(tr, std::string("rotation ") + axes[a], palette(a), [&, a](const Sample& s) {
-          return bus_motion(model, s.y.data() + L.q(), s.dq.data()).rotation_vector[a];
+          return bus_motion(model, s.y.data() + L.q(), s.q_dot.data()).rotation_vector[a];
         }));
       }
       for (int a = 0; a < 3; ++a) {
         added.push_back(series(tr, std::string("rate ") + axes[a], palette(a), [&, a](const Sample& s) {
-          return bus_motion(model, s.y.data() + L.q(), s.dq.data()).rate[a];
+          return bus_motion(model, s.y.data() + L.q(), s.q_dot.data()).rate[a];
         }));
         added.back().dashed = true;
       }
@@ -161,7 +163,7 @@ PlotSpec trajectory_plot(PlotKind kind, const Scene& scene, const Trajectory& tr
       spec.log_y = true;
       break;
     case PlotKind::loads:
-      spec.title = scene.name + (scene.latches.empty() ? ": hinge moments" : ": latch torques and hinge moments");
+      spec.title = scene.name + (scene.latches().empty() ? ": hinge moments" : ": latch torques and hinge moments");
       spec.y_label = "N m (hinge moments about the hinge point)";
       break;
     case PlotKind::energy:
@@ -206,7 +208,7 @@ std::vector<NamedPlot> trajectory_plots(const Scene& scene, const Trajectory& tr
   static const char* files[] = {"angles.png", "rates.png", "residuals.png", "loads.png", "energy.png", "bus.png"};
   std::vector<NamedPlot> plots;
   for (PlotKind kind : plot_kinds(scene)) {
-    if (kind == PlotKind::loads && (trajectory.empty() || trajectory.samples.front().loads.joints.empty())) continue;
+    if (kind == PlotKind::loads && (trajectory.empty() || trajectory.samples.front().loads.reaction.empty())) continue;
     PlotChoice choice;
     choice.max_joints = max_joints;
     plots.push_back({kind, files[static_cast<int>(kind)], trajectory_plot(kind, scene, trajectory, choice)});

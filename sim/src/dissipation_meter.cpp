@@ -7,13 +7,9 @@ namespace unfurl {
 namespace {
 
 bool has_dissipation(const Scene& scene) {
-  for (const JointSpring& s : scene.springs)
-    if (s.damping > 0) return true;
-  for (const Latch& l : scene.latches)
-    if (l.damping > 0) return true;
-  for (const PointSpring& s : scene.point_springs)
-    if (s.damping > 0) return true;
-  return !scene.friction.empty();
+  for (const auto& e : scene.elements)
+    if (e->dissipative()) return true;
+  return false;
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
-// The work the dampers, friction and engaged latches take out of a run,
+// The work the force elements (dampers, friction, engaged latches) take out
+// of a run,
 // integrated along the integrator's steps so the energy balance
 // (EnergyParts::balance) can be checked to the run's own accuracy.
 #pragma once

@@ -20,13 +20,14 @@ LatchEvents::LatchEvents(Dynamics& dynamics, double window)
       y_hi_(dynamics.size()) {}
 
 double LatchEvents::switching(int l, const double* y) const {
-  const int c = dynamics_.model().coordinate[dynamics_.scene().latches[l].joint];
-  return dynamics_.latch_state().switching_value(l, y[dynamics_.layout().q() + c]);
+  const Positions q(y + dynamics_.layout().q());
+  return dynamics_.latch_state().switching_value(l, q[dynamics_.model().position_of(dynamics_.latches()[l]->joint)]);
 }
 
 double LatchEvents::switching_rate(int l, const double* ydot) const {
-  const int c = dynamics_.model().coordinate[dynamics_.scene().latches[l].joint];
-  return dynamics_.latch_state().switching_rate(l, ydot[dynamics_.layout().q() + c]);
+  // q' of a one-coordinate joint is its rate.
+  const Positions q_dot(ydot + dynamics_.layout().q());
+  return dynamics_.latch_state().switching_rate(l, q_dot[dynamics_.model().position_of(dynamics_.latches()[l]->joint)]);
 }
 
 double LatchEvents::switching_at(Integrator& integrator, int l, double t) {
@@ -111,9 +112,10 @@ LatchGroup LatchEvents::find(Integrator& integrator, const StepOutcome& step) {
 
 double LatchEvents::latch_torque(int l, double t, const double* y) {
   dynamics_.rhs(t, y, ydot_.data());
-  const Latch& latch = dynamics_.scene().latches[l];
-  const int c = dynamics_.layout().q() + dynamics_.model().coordinate[latch.joint];
-  return latch.torque(y[c], ydot_[c]);
+  const Latch& latch = *dynamics_.latches()[l];
+  const PositionIndex c = dynamics_.model().position_of(latch.joint);
+  const Positions q(y + dynamics_.layout().q()), q_dot(ydot_.data() + dynamics_.layout().q());
+  return latch.torque(q[c], q_dot[c]);
 }
 
 void LatchEvents::engage(const LatchGroup& group, Integrator& integrator, double* y) {
@@ -129,7 +131,7 @@ void LatchEvents::engage(const LatchGroup& group, Integrator& integrator, double
   }
   for (std::size_t k = 0; k < group.roots.size(); ++k) {
     const int l = group.roots[k].latch;
-    y[L.p() + dynamics_.model().coordinate[dynamics_.scene().latches[l].joint]] += impulse[k];
+    y[L.p() + dynamics_.model().velocity_of(dynamics_.latches()[l]->joint).value] += impulse[k];
     dynamics_.latch_state().engage(l);
   }
 }

@@ -7,4 +7,10 @@ const char* wrench_component_name(int axis) {
   return axis >= 0 && axis < 6 ? names[axis] : "?";
 }
 
+int find_load_column(const std::vector<LoadColumn>& columns, const std::string& name) {
+  for (std::size_t c = 0; c < columns.size(); ++c)
+    if (columns[c].name == name) return static_cast<int>(c);
+  return -1;
+}
+
 }  // namespace unfurl

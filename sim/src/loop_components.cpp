@@ -28,7 +28,7 @@ std::vector<LoopComponent> active_loop_components(const Model& model, const std:
     for (int i = loops[l].body; i >= 0; i = model.parent[i]) above_body[i] = true;
     for (int i = loops[l].image; i >= 0; i = model.parent[i])
       if (above_body[i])
-        for (int r = 0; r < model.joints[i].dof(); ++r) shared[l][model.velocity[i] + r] = true;
+        for (int r = 0; r < model.joints[i].dof(); ++r) shared[l][(model.first_velocity[i] + r).value] = true;
   }
   std::vector<double> row_norm(6 * L, 0.0);
   std::vector<Vec6> F(N);

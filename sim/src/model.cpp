@@ -13,9 +13,9 @@ void Model::finalize() {
   if (static_cast<int>(joints.size()) != N || static_cast<int>(parent.size()) != N)
     throw std::invalid_argument("model: bodies, joints and parents differ in number");
   children.assign(N, {});
-  coordinate.assign(N, -1);
-  velocity.assign(N, -1);
-  joint_of_coordinate.clear();
+  first_position.assign(N, PositionIndex{});
+  first_velocity.assign(N, VelocityIndex{});
+  joint_of_position.clear();
   joint_of_velocity.clear();
   nq = nv = 0;
   for (int i = 0; i < N; ++i) {
@@ -25,11 +25,11 @@ void Model::finalize() {
     if (parent[i] != kBase) children[parent[i]].push_back(i);
   }
   const auto place = [&](int i) {
-    coordinate[i] = nq;
-    velocity[i] = nv;
+    first_position[i] = {nq};
+    first_velocity[i] = {nv};
     nq += joints[i].positions();
     nv += joints[i].dof();
-    joint_of_coordinate.insert(joint_of_coordinate.end(), joints[i].positions(), i);
+    joint_of_position.insert(joint_of_position.end(), joints[i].positions(), i);
     joint_of_velocity.insert(joint_of_velocity.end(), joints[i].dof(), i);
   };
   for (int i = 0; i < N; ++i)
@@ -61,15 +61,15 @@ const char* entry_name(JointType type, int k, bool position) {
 }  // namespace
 
 std::string Model::position_name(int c) const {
-  const int i = joint_of_coordinate[c];
+  const int i = joint_of_position[c];
   if (joints[i].is_scalar()) return joints[i].name;
-  return joints[i].name + "." + entry_name(joints[i].type, c - coordinate[i], true);
+  return joints[i].name + "." + entry_name(joints[i].type, c - first_position[i].value, true);
 }
 
 std::string Model::velocity_name(int c) const {
   const int i = joint_of_velocity[c];
   if (joints[i].is_scalar()) return joints[i].name;
-  return joints[i].name + "." + entry_name(joints[i].type, c - velocity[i], false);
+  return joints[i].name + "." + entry_name(joints[i].type, c - first_velocity[i].value, false);
 }
 
 int Model::find_body(const std::string& name) const {

@@ -31,7 +31,7 @@ SystemMomentum system_momentum(const Model& model, const std::vector<Pose>& pose
 
 JointOrientation joint_orientation(const Model& model, int joint, const double* q, const double* dq) {
   const Joint& j = model.joints[joint];
-  const int c = model.coordinate[joint], at = c + j.quaternion_offset();
+  const int c = model.first_position[joint].value, at = c + j.quaternion_offset();
   Vec6 w;
   j.rates(q + c, dq + c, w.data());
   Eigen::Quaterniond attitude(q[at], q[at + 1], q[at + 2], q[at + 3]);

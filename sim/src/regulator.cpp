@@ -17,27 +17,17 @@ Regulator::Regulator(const Model& model, const std::vector<Loop>& loops, std::ve
     solver_ = make_closure_solver(settings_.solver, model, loops_, components_);
 }
 
-bool Regulator::factorize(const Sweep& sweep) {
-  // R = W + delta I depends on q alone: at the q it was factorized for (the
-  // same sweep, the same configuration) it is the same matrix.
-  if (held_ || (&sweep == factorized_sweep_ && sweep.configuration() == factorized_configuration_))
-    return factorized_ok_;
+bool Regulator::factorize(const Sweep& sweep, long configuration) {
+  if (settings_.gains != GainTuning::full) return true;
+  if (configuration == factorized_configuration_) return factorized_ok_;
   factorized_ok_ = solver_->factorize(sweep, delta_);
   ++factorizations_;
-  factorized_sweep_ = &sweep;
-  factorized_configuration_ = sweep.configuration();
+  factorized_configuration_ = configuration;
   return factorized_ok_;
 }
 
-bool Regulator::hold_gains(const Sweep& sweep) {
-  held_ = false;
-  if (settings_.gains == GainTuning::full && !factorize(sweep)) return false;
-  held_ = true;
-  return true;
-}
-
 void Regulator::calibrate(const Sweep& sweep) {
-  factorized_sweep_ = nullptr;  // delta changes
+  factorized_configuration_ = -1;  // delta changes
   if (settings_.gains == GainTuning::full) {
     delta_ = settings_.regularization * mobility_.largest_eigenvalue(sweep);
     return;
@@ -59,7 +49,7 @@ void Regulator::gap(const std::vector<Pose>& poses, double* g) const {
   geometric_gap(loops_, components_, poses, g);
 }
 
-bool Regulator::control(const Sweep& sweep, const double* g, const double* u, const double* g_dot, const double* d,
+void Regulator::control(const double* g, const double* u, const double* g_dot, const double* d, Gains gains,
                         double* lambda, double* u_dot) {
   const double v = settings_.v_max, p0 = settings_.p0, p1 = settings_.p1;
   const double k_pi = settings_.k_pi(), k_v = settings_.k_v();  // (16)
@@ -74,30 +64,24 @@ bool Regulator::control(const Sweep& sweep, const double* g, const double* u, co
     // C_j = v^2 / W_jj, D_j = (p0 + 2 p1) v / W_jj (16), u' of (13)
     lambda_ = a.cwiseQuotient(diagonal_W0_);
     ud_ = b;
-    return true;
+    return;
   }
-  if (!factorize(sweep)) {
-    lambda_.setConstant(std::numeric_limits<double>::quiet_NaN());
-    return false;
-  }
-  solver_->solve(rhs_.data(), solved_.data(), 2, !held_);
+  solver_->solve(rhs_.data(), solved_.data(), 2, gains == Gains::current);
   lambda_ = solved_.col(0);               // R^-1 (v^2 (g + u) + (p0 + 2 p1) v g' + d)
   ud_ = b - delta_ * solved_.col(1);      // W R^-1 b = b - delta R^-1 b
-  return true;
 }
 
 void Regulator::apply(const double* lambda, std::vector<Vec6>& F) const {
   add_loop_forces(loops_, components_, lambda, -1.0, F);
 }
 
-double Regulator::energy(const Sweep& sweep, const double* g, const double* u) {
+double Regulator::energy(const double* g, const double* u) {
   const int m = size();
   const double v2 = settings_.v_max * settings_.v_max;
   Eigen::Map<const Eigen::VectorXd> g_(g, m), u_(u, m);
   auto s = rhs_.col(0);
   s = g_ + u_;
   if (settings_.gains == GainTuning::paper) return 0.5 * v2 * s.cwiseAbs2().cwiseQuotient(diagonal_W0_).sum();
-  if (!factorize(sweep)) return std::numeric_limits<double>::quiet_NaN();
   solver_->solve(rhs_.data(), solved_.data(), 1);
   return 0.5 * v2 * s.dot(solved_.col(0));
 }

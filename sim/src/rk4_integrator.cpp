@@ -56,7 +56,7 @@ double Rk4Integrator::earliest_crossing(std::vector<int>& which) {
   const int nq_offset = dynamics_.layout().q();
   for (int l = 0; l < dynamics_.latch_count(); ++l) {
     if (!(s0_[l] > 0 && s1_[l] <= 0)) continue;
-    const int c = nq_offset + dynamics_.model().coordinate[dynamics_.scene().latches[l].joint];
+    const int c = nq_offset + dynamics_.model().position_of(dynamics_.latches()[l]->joint).value;
     const Hermite step{t0_, t1_};
     auto value = [&](double t) {
       return dynamics_.latch_state().switching_value(l, step.value(y0_[c], f0_[c], y1_[c], f1_[c], t));

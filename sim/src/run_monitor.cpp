@@ -10,13 +10,13 @@ RunMonitor::RunMonitor(Dynamics& dynamics) : dynamics_(dynamics) {
   peaks_.hinge_moment.resize(dynamics.model().size());
 }
 
-double RunMonitor::observe(double t, const double* y) {
-  dynamics_.loads(t, y, loads_, &closure_);
+std::optional<double> RunMonitor::observe(double t, const double* y) {
+  if (!dynamics_.loads(t, y, loads_, &closure_)) return std::nullopt;
   for (int l = 0; l < dynamics_.latch_count(); ++l)
     if (dynamics_.latch_state().engaged(l))
-      peaks_.latch_torque[l].update(std::abs(loads_.joints[dynamics_.scene().latches[l].joint].latch), t);
-  for (std::size_t j = 0; j < loads_.joints.size(); ++j) {
-    const Vec6& r = loads_.joints[j].reaction;
+      peaks_.latch_torque[l].update(std::abs(loads_.element[dynamics_.latch_column(l)]), t);
+  for (std::size_t j = 0; j < loads_.reaction.size(); ++j) {
+    const Vec6& r = loads_.reaction[j];
     peaks_.hinge_force[j].update(r.head<3>().norm(), t);
     peaks_.hinge_moment[j].update(r.tail<3>().norm(), t);
   }

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "unfurl/sim/dynamics.hpp"
@@ -18,8 +19,9 @@ class RunMonitor {
   explicit RunMonitor(Dynamics& dynamics);
 
   // At a step's end (t, y), latches as engaged there. Returns the largest
-  // gap of any loop, metres or radians.
-  double observe(double t, const double* y);
+  // gap of any loop, metres or radians; nothing where the loads at y could
+  // not be evaluated.
+  std::optional<double> observe(double t, const double* y);
 
   // Step-size bookkeeping: after each (re)start the step grows from a tiny
   // first step; until it stops growing the steps count as restart steps.

@@ -10,6 +10,7 @@
 
 #include "scene_overrides.hpp"
 #include "scene_validation.hpp"
+#include "unfurl/sim/elements/all.hpp"
 #include "unfurl/sim/number_text.hpp"
 #include "unfurl/sim/scene_file.hpp"
 #include "unfurl/input/yaml_fields.hpp"
@@ -28,7 +29,7 @@ constexpr const char* kInertialFrame = "inertial";
 // "x, y, z, qw, qx, qy, qz": the names of a joint's positions or rates.
 std::string entry_names(const Model& model, int joint, bool positions) {
   std::string names;
-  const int from = positions ? model.coordinate[joint] : model.velocity[joint];
+  const int from = positions ? model.first_position[joint].value : model.first_velocity[joint].value;
   const int n = positions ? model.joints[joint].positions() : model.joints[joint].dof();
   for (int k = 0; k < n; ++k) {
     const std::string full = positions ? model.position_name(from + k) : model.velocity_name(from + k);
@@ -276,18 +277,17 @@ void SceneReader::read_springs(const YAML::Node& list, Scene& scene) const {
     const YAML::Node s = list[n];
     const std::string field = input::index_field("springs", n);
     check_keys(s, {"joint", "stiffness", "free_position", "damping", "table"}, field);
-    JointSpring spring;
-    spring.joint = joint_by_name(require(s, "joint", field), scene, field + ".joint", true);
+    auto spring = std::make_shared<JointSpring>(joint_by_name(require(s, "joint", field), scene, field + ".joint", true));
     if (const YAML::Node table = s["table"]) {
       for (const char* key : {"stiffness", "free_position"})
         if (s[key]) fail(s[key], field + "." + key, "a spring with a table takes its torque from the table alone");
-      spring.curve = spring_curve(table, field + ".table");
+      spring->curve = spring_curve(table, field + ".table");
     } else {
-      spring.stiffness = non_negative(require(s, "stiffness", field), field + ".stiffness");
-      spring.free_position = number_or(s, "free_position", 0.0, field);
+      spring->stiffness = non_negative(require(s, "stiffness", field), field + ".stiffness");
+      spring->free_position = number_or(s, "free_position", 0.0, field);
     }
-    if (s["damping"]) spring.damping = non_negative(s["damping"], field + ".damping");
-    scene.springs.push_back(spring);
+    if (s["damping"]) spring->damping = non_negative(s["damping"], field + ".damping");
+    scene.elements.push_back(spring);
   }
 }
 
@@ -316,10 +316,9 @@ void SceneReader::read_dampers(const YAML::Node& list, Scene& scene) const {
     const YAML::Node d = list[n];
     const std::string field = input::index_field("dampers", n);
     check_keys(d, {"joint", "damping"}, field);
-    JointSpring damper;
-    damper.joint = joint_by_name(require(d, "joint", field), scene, field + ".joint", true);
-    damper.damping = non_negative(require(d, "damping", field), field + ".damping");
-    scene.springs.push_back(damper);
+    auto damper = std::make_shared<JointDamper>(joint_by_name(require(d, "joint", field), scene, field + ".joint", true));
+    damper->damping = non_negative(require(d, "damping", field), field + ".damping");
+    scene.elements.push_back(damper);
   }
 }
 
@@ -329,18 +328,17 @@ void SceneReader::read_friction(const YAML::Node& list, Scene& scene) const {
     const YAML::Node f = list[n];
     const std::string field = input::index_field("friction", n);
     check_keys(f, {"joint", "coulomb", "viscous", "velocity_scale"}, field);
-    JointFriction friction;
-    friction.joint = joint_by_name(require(f, "joint", field), scene, field + ".joint", true);
-    if (f["coulomb"]) friction.coulomb = non_negative(f["coulomb"], field + ".coulomb");
-    if (f["viscous"]) friction.viscous = non_negative(f["viscous"], field + ".viscous");
+    auto friction = std::make_shared<JointFriction>(joint_by_name(require(f, "joint", field), scene, field + ".joint", true));
+    if (f["coulomb"]) friction->coulomb = non_negative(f["coulomb"], field + ".coulomb");
+    if (f["viscous"]) friction->viscous = non_negative(f["viscous"], field + ".viscous");
     if (f["velocity_scale"]) {
-      friction.velocity_scale = positive(f["velocity_scale"], field + ".velocity_scale");
-      if (friction.velocity_scale < 1e-9)
+      friction->velocity_scale = positive(f["velocity_scale"], field + ".velocity_scale");
+      if (friction->velocity_scale < 1e-9)
         fail(f["velocity_scale"], field + ".velocity_scale",
              "below 1e-9 rad/s the smoothed friction is a step no integrator can follow");
     }
     if (!f["coulomb"] && !f["viscous"]) fail(f, field, "give coulomb, viscous or both");
-    scene.friction.push_back(friction);
+    scene.elements.push_back(friction);
   }
 }
 
@@ -361,23 +359,24 @@ void SceneReader::read_point_springs(const YAML::Node& list, Scene& scene) const
                {"name", "body_a", "point_a", "body_b", "point_b", "stiffness", "rest_length", "damping",
                 "tension_only"},
                field);
-    PointSpring s;
-    s.name = node["name"] ? name(node["name"], field + ".name") : "spring" + std::to_string(n);
-    for (const PointSpring& other : scene.point_springs)
-      if (other.name == s.name) fail(node, field + ".name", "a point spring named '" + s.name + "' already exists");
-    s.body_a = body_or_base(require(node, "body_a", field), scene, field + ".body_a");
-    s.body_b = body_or_base(require(node, "body_b", field), scene, field + ".body_b");
-    if (s.body_a == s.body_b) fail(node["body_b"], field + ".body_b", "both ends are on one body: it would pull on itself");
-    s.point_a = vec3_or(node, "point_a", Vec3::Zero(), field);
-    s.point_b = vec3_or(node, "point_b", Vec3::Zero(), field);
-    s.stiffness = non_negative(require(node, "stiffness", field), field + ".stiffness");
-    s.rest_length = non_negative(require(node, "rest_length", field), field + ".rest_length");
-    if (node["damping"]) s.damping = non_negative(node["damping"], field + ".damping");
-    if (node["tension_only"]) s.tension_only = flag(node["tension_only"], field + ".tension_only");
+    auto s = std::make_shared<PointSpring>();
+    s->named = static_cast<bool>(node["name"]);
+    s->name = s->named ? name(node["name"], field + ".name") : "spring" + std::to_string(n);
+    for (const PointSpring* other : scene.elements_of<PointSpring>())
+      if (other->name == s->name) fail(node, field + ".name", "a point spring named '" + s->name + "' already exists");
+    s->body_a = body_or_base(require(node, "body_a", field), scene, field + ".body_a");
+    s->body_b = body_or_base(require(node, "body_b", field), scene, field + ".body_b");
+    if (s->body_a == s->body_b) fail(node["body_b"], field + ".body_b", "both ends are on one body: it would pull on itself");
+    s->point_a = vec3_or(node, "point_a", Vec3::Zero(), field);
+    s->point_b = vec3_or(node, "point_b", Vec3::Zero(), field);
+    s->stiffness = non_negative(require(node, "stiffness", field), field + ".stiffness");
+    s->rest_length = non_negative(require(node, "rest_length", field), field + ".rest_length");
+    if (node["damping"]) s->damping = non_negative(node["damping"], field + ".damping");
+    if (node["tension_only"]) s->tension_only = flag(node["tension_only"], field + ".tension_only");
     const auto at = [&](int body, const Vec3& r) { return body == kBase ? r : poses[body].to_base(r); };
-    if ((at(s.body_b, s.point_b) - at(s.body_a, s.point_a)).norm() < 1e-9)
+    if ((at(s->body_b, s->point_b) - at(s->body_a, s->point_a)).norm() < 1e-9)
       fail(node, field, "its two points coincide at the initial state: the line of the force has no direction");
-    scene.point_springs.push_back(s);
+    scene.elements.push_back(s);
   }
 }
 
@@ -387,19 +386,19 @@ void SceneReader::read_loads(const YAML::Node& list, Scene& scene) const {
     const YAML::Node l = list[n];
     const std::string field = input::index_field("loads", n);
     check_keys(l, {"body", "force", "torque", "point", "frame"}, field);
-    BodyLoad load;
-    load.body = body_by_name(require(l, "body", field), scene, field + ".body");
-    load.force = vec3_or(l, "force", Vec3::Zero(), field);
-    load.torque = vec3_or(l, "torque", Vec3::Zero(), field);
-    load.point = vec3_or(l, "point", Vec3::Zero(), field);
+    auto load = std::make_shared<AppliedForce>();
+    load->body = body_by_name(require(l, "body", field), scene, field + ".body");
+    load->force = vec3_or(l, "force", Vec3::Zero(), field);
+    load->torque = vec3_or(l, "torque", Vec3::Zero(), field);
+    load->point = vec3_or(l, "point", Vec3::Zero(), field);
     if (const YAML::Node frame = l["frame"]) {
       const std::string f = text(frame, field + ".frame");
       if (f != "body" && f != "base") fail(frame, field + ".frame", "expected 'body' or 'base'");
-      load.in_base_frame = f == "base";
-      if (load.in_base_frame && scene.model.base_rotates())
+      load->in_base_frame = f == "base";
+      if (load->in_base_frame && scene.model.base_rotates())
         fail(frame, field + ".frame", "base-frame loads need a base that does not rotate");
     }
-    scene.loads.push_back(load);
+    scene.elements.push_back(load);
   }
 }
 
@@ -409,15 +408,14 @@ void SceneReader::read_latches(const YAML::Node& list, Scene& scene) const {
     const YAML::Node l = list[n];
     const std::string field = input::index_field("latches", n);
     check_keys(l, {"joint", "position", "stiffness", "damping", "free_play"}, field);
-    Latch latch;
-    latch.joint = joint_by_name(require(l, "joint", field), scene, field + ".joint", true);
-    latch.position = number_or(l, "position", 0.0, field);
-    latch.stiffness = positive(require(l, "stiffness", field), field + ".stiffness");
-    latch.damping = non_negative(require(l, "damping", field), field + ".damping");
-    if (l["free_play"]) latch.free_play = non_negative(l["free_play"], field + ".free_play");
-    for (const Latch& other : scene.latches)
-      if (other.joint == latch.joint) fail(l["joint"], field + ".joint", "this joint already has a latch");
-    scene.latches.push_back(latch);
+    auto latch = std::make_shared<Latch>(joint_by_name(require(l, "joint", field), scene, field + ".joint", true));
+    latch->position = number_or(l, "position", 0.0, field);
+    latch->stiffness = positive(require(l, "stiffness", field), field + ".stiffness");
+    latch->damping = non_negative(require(l, "damping", field), field + ".damping");
+    if (l["free_play"]) latch->free_play = non_negative(l["free_play"], field + ".free_play");
+    for (const Latch* other : scene.latches())
+      if (other->joint == latch->joint) fail(l["joint"], field + ".joint", "this joint already has a latch");
+    scene.elements.push_back(latch);
   }
 }
 
@@ -493,7 +491,7 @@ void SceneReader::read_initial(const YAML::Node& node, Scene& scene) const {
       const int j = joint_by_name(item.first, scene, field, false);
       const Joint& joint = model.joints[j];
       if (joint.dof() == 0) fail(item.first, field, "joint '" + joint.name + "' is fixed: it has no coordinate");
-      double* x = out.data() + (positions ? model.coordinate[j] : model.velocity[j]);
+      double* x = out.data() + (positions ? model.first_position[j].value : model.first_velocity[j].value);
       if (joint.is_scalar()) {
         x[0] = number(item.second, entry);
         continue;
@@ -590,9 +588,10 @@ SceneFile SceneReader::read(const std::string& text_in, const std::vector<Overri
   scene.name = root["name"] ? text(root["name"], "name") : "scene";
   if (root["description"]) scene.description = text(root["description"], "description");
   if (root["base"]) read_base(root["base"], scene);
+  Vec3 gravity = Vec3::Zero();
   if (root["gravity"]) {
-    scene.model.gravity = vec3(root["gravity"], "gravity");
-    if (!scene.model.gravity.isZero(0) && scene.model.base_rotates())
+    gravity = vec3(root["gravity"], "gravity");
+    if (!gravity.isZero(0) && scene.model.base_rotates())
       fail(root["gravity"], "gravity", "gravity needs a base that does not rotate");
   }
   const YAML::Node bodies = require(root, "bodies", "");
@@ -603,17 +602,18 @@ SceneFile SceneReader::read(const std::string& text_in, const std::vector<Overri
     fail(bodies, "bodies", "every joint is fixed: there is nothing to move or integrate (give a joint a type "
                            "that moves)");
 
+  // The elements in the order their forces add up.
   if (root["springs"]) read_springs(root["springs"], scene);
-  scene.dampers_from = scene.springs.size();
   if (root["dampers"]) read_dampers(root["dampers"], scene);
   if (root["friction"]) read_friction(root["friction"], scene);
-  if (root["loads"]) read_loads(root["loads"], scene);
   if (root["latches"]) read_latches(root["latches"], scene);
+  if (root["loads"]) read_loads(root["loads"], scene);
+  if (!gravity.isZero(0)) scene.elements.push_back(std::make_shared<Gravity>(gravity));
   if (root["loops"]) read_loops(root["loops"], scene);
   if (root["regulator"]) read_regulator(root["regulator"], scene);
   scene.q0.assign(scene.model.nq, 0.0);
   for (int i = 0; i < scene.model.size(); ++i)
-    if (scene.model.joints[i].dof() > 1) scene.model.joints[i].neutral_positions(&scene.q0[scene.model.coordinate[i]]);
+    if (scene.model.joints[i].dof() > 1) scene.model.joints[i].neutral_positions(&scene.q0[scene.model.first_position[i].value]);
   scene.dq0.assign(scene.model.nv, 0.0);
   if (root["initial"]) read_initial(root["initial"], scene);
   if (scene.dq0.size() != static_cast<std::size_t>(scene.model.nv)) scene.dq0.assign(scene.model.nv, 0.0);

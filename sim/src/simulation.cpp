@@ -27,19 +27,21 @@ class Recorder {
   Recorder(Dynamics& dynamics, const RunObserver& observer, Trajectory& trajectory)
       : dynamics_(dynamics), observer_(observer), trajectory_(trajectory) {}
 
-  void record(double t, const std::vector<double>& y, double dissipated) {
-    dynamics_.observe(t, y.data(), observation_);
+  // False where the state cannot be evaluated (nothing is recorded).
+  bool record(double t, const std::vector<double>& y, double dissipated) {
+    if (!dynamics_.observe(t, y.data(), observation_)) return false;
     observation_.energy.dissipated = dissipated;
     Sample s;
     s.t = t;
     s.y = y;
-    s.dq = observation_.dq;
+    s.q_dot = observation_.q_dot;
     s.closure = observation_.closure;
     s.energy = observation_.energy;
     s.momentum = observation_.momentum;
     s.loads = observation_.loads;
     trajectory_.samples.push_back(std::move(s));
     if (observer_.on_sample) observer_.on_sample(trajectory_.samples.back());
+    return true;
   }
 
   void event(const LatchEvent& e) {
@@ -70,40 +72,47 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
   Trajectory& trajectory = result.trajectory;
   trajectory.layout = dynamics.layout();
   if (dynamics.regulator()) trajectory.loop_components = dynamics.regulator()->components();
+  trajectory.load_columns = dynamics.load_columns();
 
   std::vector<double> y = dynamics.initial_state();
   std::vector<double> ys(y.size());
   Recorder recorder(dynamics, observer, trajectory);
   const double t0 = 0.0;
-  recorder.record(t0, y, 0.0);
-  DissipationMeter dissipation(dynamics, t0);
-  // A joint that starts exactly at its latch angle is caught from the start.
-  for (int l = 0; l < dynamics.latch_count(); ++l)
-    if (dynamics.latch_state().engaged(l)) recorder.event({t0, l, scene.latches[l].joint});
-
   auto fail = [&](double t, double step, std::string check, std::string reason) {
     result.status = RunStatus::failed;
     result.failure = {t, step, std::move(check), std::move(reason)};
   };
+  const char* kNotFinite = "the equations of motion have no finite value here (or the loop-closure system is singular)";
+  if (!recorder.record(t0, y, 0.0)) fail(t0, 0, "evaluation", kNotFinite);
+  DissipationMeter dissipation(dynamics, t0);
+  // A joint that starts exactly at its latch angle is caught from the start.
+  for (int l = 0; l < dynamics.latch_count(); ++l)
+    if (dynamics.latch_state().engaged(l)) recorder.event({t0, l, dynamics.latches()[l]->joint});
 
   std::unique_ptr<Integrator> integrator;
   try {
-    integrator = make_integrator(settings.integrator, dynamics, settings, t0, y);
+    if (result.status == RunStatus::finished) integrator = make_integrator(settings.integrator, dynamics, settings, t0, y);
   } catch (const std::exception& e) {
     fail(t0, 0, "integrator", e.what());
   }
   LatchEvents events(dynamics, settings.event_window);
   RunMonitor monitor(dynamics);
   long restarts = 0;
-  // The gap is checked at every step's end, the start included.
-  auto check_closure = [&](double t, double gap) {
-    if (gap <= settings.max_closure) return true;
+  // The loads and the gap are checked at every step's end, the start included.
+  auto check_step_end = [&](double t) {
+    const double step = integrator ? integrator->current_step() : 0.0;
+    const std::optional<double> gap = monitor.observe(t, y.data());
+    if (!gap) {
+      fail(t, step, "evaluation", kNotFinite);
+      return false;
+    }
+    if (*gap <= settings.max_closure) return true;
     std::ostringstream why;
-    why << "a loop opened by " << gap << " (limit " << settings.max_closure << "): the regulator lost the loop";
-    fail(t, integrator ? integrator->current_step() : 0.0, "closure", why.str());
+    why << "a loop opened by " << *gap << " (limit " << settings.max_closure << "): the regulator lost the loop";
+    fail(t, step, "closure", why.str());
     return false;
   };
-  check_closure(t0, monitor.observe(t0, y.data()));
+  if (result.status == RunStatus::finished) check_step_end(t0);
 
   long sample_index = 1;
   auto sample_time = [&](long k) { return std::min(t0 + k * settings.sample, settings.t_end); };
@@ -125,22 +134,26 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
     while (sample_index >= 0 && sample_time(sample_index) <= t_done) {
       integrator->interpolate(sample_time(sample_index), ys.data());
       dissipation.advance(*integrator, sample_time(sample_index));
-      recorder.record(sample_time(sample_index), ys, dissipation.work());
+      if (!recorder.record(sample_time(sample_index), ys, dissipation.work())) {
+        fail(sample_time(sample_index), integrator->current_step(), "evaluation", kNotFinite);
+        break;
+      }
       sample_index = sample_time(sample_index) >= settings.t_end ? -1 : sample_index + 1;
     }
+    if (result.status != RunStatus::finished) break;
     integrator->interpolate(t_done, y.data());
     dissipation.advance(*integrator, t_done);
     if (!group.empty()) {
       events.engage(group, *integrator, y.data());
       std::vector<LatchRoot> roots = group.roots;
       std::stable_sort(roots.begin(), roots.end(), [](const LatchRoot& a, const LatchRoot& b) { return a.t < b.t; });
-      for (const LatchRoot& r : roots) recorder.event({r.t, r.latch, scene.latches[r.latch].joint});
+      for (const LatchRoot& r : roots) recorder.event({r.t, r.latch, dynamics.latches()[r.latch]->joint});
       integrator->restart(t_done, y.data());
       monitor.restarted();
       ++restarts;
     }
     t = t_done;
-    if (!check_closure(t, monitor.observe(t, y.data()))) break;
+    if (!check_step_end(t)) break;
     if (t < settings.t_end && settings.max_wall_time > 0 &&
         std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count() > settings.max_wall_time) {
       std::ostringstream why;

@@ -10,10 +10,11 @@ RunSummary summarize(const Scene& scene, const RunResult& result) {
   const Model& model = scene.model;
   const Trajectory& tr = result.trajectory;
   for (const LatchEvent& e : tr.events) s.latch_times.emplace_back(model.joints[e.joint].name, e.t);
-  for (int l = 0; l < static_cast<int>(scene.latches.size()); ++l) {
+  const std::vector<const Latch*> latches = scene.latches();
+  for (int l = 0; l < static_cast<int>(latches.size()); ++l) {
     const bool engaged = std::any_of(tr.events.begin(), tr.events.end(),
                                      [&](const LatchEvent& e) { return e.latch == l; });
-    if (!engaged) s.unlatched.push_back(model.joints[scene.latches[l].joint].name);
+    if (!engaged) s.unlatched.push_back(model.joints[latches[l]->joint].name);
   }
   const RunPeaks& p = result.peaks;
   s.max_closure_m = p.gap_m.value;
@@ -21,7 +22,7 @@ RunSummary summarize(const Scene& scene, const RunResult& result) {
   s.max_closure_m_before_latch = p.gap_m_before_latch.value;
   s.max_closure_rad_before_latch = p.gap_rad_before_latch.value;
   for (std::size_t l = 0; l < p.latch_torque.size(); ++l)
-    s.latch_peak_torque.push_back({model.joints[scene.latches[l].joint].name, p.latch_torque[l]});
+    s.latch_peak_torque.push_back({model.joints[latches[l]->joint].name, p.latch_torque[l]});
   for (std::size_t j = 0; j < p.hinge_force.size(); ++j) {
     s.hinge_peak_force.push_back({model.joints[j].name, p.hinge_force[j]});
     s.hinge_peak_moment.push_back({model.joints[j].name, p.hinge_moment[j]});
@@ -41,10 +42,10 @@ RunSummary summarize(const Scene& scene, const RunResult& result) {
 RunSummary::FreeBus summarize_free_bus(const Model& model, const Trajectory& tr) {
   RunSummary::FreeBus bus;
   const Sample& first = tr.samples.front();
-  const Eigen::Vector4d start = bus_motion(model, first.y.data() + tr.layout.q(), first.dq.data()).quaternion;
+  const Eigen::Vector4d start = bus_motion(model, first.y.data() + tr.layout.q(), first.q_dot.data()).quaternion;
   double linear_scale = 0, angular_scale = 0, linear_change = 0, angular_change = 0;
   for (const Sample& s : tr.samples) {
-    const JointOrientation motion = bus_motion(model, s.y.data() + tr.layout.q(), s.dq.data());
+    const JointOrientation motion = bus_motion(model, s.y.data() + tr.layout.q(), s.q_dot.data());
     bus.peak_rate = std::max(bus.peak_rate, motion.rate.norm());
     bus.final_attitude_change = rotation_angle_between(start, motion.quaternion);
     linear_scale = std::max(linear_scale, s.momentum.linear_scale);

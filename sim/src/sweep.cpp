@@ -20,7 +20,7 @@ Sweep::Sweep(const Model& model)
     M_[i] = model.bodies[i].spatial_mass();
     if (model.joints[i].dof() > 1) {
       multi_[i] = static_cast<int>(multi_axes_.size());
-      multi_axes_.push_back({model.joints[i].motion_axes(q_.data() + std::max(0, model.coordinate[i])), Mat6::Zero(),
+      multi_axes_.push_back({model.joints[i].motion_axes(q_.data() + std::max(0, model.first_position[i].value)), Mat6::Zero(),
                              Mat6::Zero(), model.joints[i].dof(), model.joints[i].has_varying_axes()});
     }
   }
@@ -30,8 +30,8 @@ Sweep::Sweep(const Model& model)
 // the padding is made the identity for the factorization and zero after.
 void Sweep::factor_multi_axis(int i, const double* joint_diagonal) {
   MultiAxis& J = multi_axes_[multi_[i]];
-  const int c = model_.velocity[i];
-  if (J.varying) J.A = model_.joints[i].motion_axes(q_.data() + model_.coordinate[i]);
+  const int c = model_.first_velocity[i].value;
+  if (J.varying) J.A = model_.joints[i].motion_axes(q_.data() + model_.first_position[i].value);
   J.M_star_A.noalias() = M_star_[i] * J.A;
   Mat6 K = J.A.transpose() * J.M_star_A;
   for (int r = 0; r < 6; ++r) K(r, r) += r < J.n ? (joint_diagonal ? joint_diagonal[c + r] : 0.0) : 1.0;
@@ -41,13 +41,10 @@ void Sweep::factor_multi_axis(int i, const double* joint_diagonal) {
 }
 
 void Sweep::set_configuration(const double* q, const double* joint_diagonal) {
-  if (configuration_ > 0 && !joint_diagonal && !with_diagonal_ && std::equal(q_.begin(), q_.end(), q)) return;
   std::copy(q, q + model_.nq, q_.begin());
-  with_diagonal_ = joint_diagonal != nullptr;
-  ++configuration_;
   const int N = model_.size();
   for (int i = 0; i < N; ++i) {
-    const int c = model_.coordinate[i];
+    const int c = model_.first_position[i].value;
     X_[i] = model_.joints[i].placement(c >= 0 ? q + c : nullptr);
     M_star_[i] = M_[i];
   }
@@ -57,7 +54,7 @@ void Sweep::set_configuration(const double* q, const double* joint_diagonal) {
       factor_multi_axis(i, joint_diagonal);
       const MultiAxis& J = multi_axes_[multi_[i]];
       HM.noalias() -= J.M_star_A * J.D * J.M_star_A.transpose();
-    } else if (const int c = model_.velocity[i]; c >= 0) {
+    } else if (const int c = model_.first_velocity[i].value; c >= 0) {
       M_star_A_[i] = M_star_[i] * A_[i];
       D_[i] = 1.0 / (A_[i].dot(M_star_A_[i]) + (joint_diagonal ? joint_diagonal[c] : 0.0));
       HM.noalias() -= D_[i] * M_star_A_[i] * M_star_A_[i].transpose();
@@ -83,14 +80,14 @@ void Sweep::velocities_from_rates(const double* dq, std::vector<Vec6>& v) const 
       v[i] = X_[i].transform_velocity(v[k]);
     if (multi_[i] >= 0)
       v[i] += multi_axes_[multi_[i]].A * rates_of(i, dq);
-    else if (const int c = model_.velocity[i]; c >= 0)
+    else if (const int c = model_.first_velocity[i].value; c >= 0)
       v[i] += A_[i] * dq[c];
   }
 }
 
 Vec6 Sweep::rates_of(int i, const double* x) const {
   Vec6 w = Vec6::Zero();
-  for (int r = 0; r < model_.joints[i].dof(); ++r) w[r] = x[model_.velocity[i] + r];
+  for (int r = 0; r < model_.joints[i].dof(); ++r) w[r] = x[model_.first_velocity[i].value + r];
   return w;
 }
 
@@ -102,12 +99,12 @@ void Sweep::accelerations(const std::vector<Vec6>& v, const double* dq, const st
   // dq_i) and ddq the joint's unbalanced force u_i = Q_i - A_i^T p^A_i until
   // the forward pass.
   for (int i = N - 1; i >= 0; --i) {
-    const int c = model_.velocity[i];
+    const int c = model_.first_velocity[i].value;
     a[i].setZero();
     if (multi_[i] >= 0) {
       const MultiAxis& J = multi_axes_[multi_[i]];
       a[i] = motion_cross(v[i], J.A * rates_of(i, dq));
-      if (J.varying) a[i] += model_.joints[i].motion_axes_rate(q_.data() + model_.coordinate[i], dq + c) * rates_of(i, dq);
+      if (J.varying) a[i] += model_.joints[i].motion_axes_rate(q_.data() + model_.first_position[i].value, dq + c) * rates_of(i, dq);
       const Vec6 u = rates_of(i, Q) - J.A.transpose() * bias[i];
       for (int r = 0; r < J.n; ++r) ddq[c + r] = u[r];
     } else if (c >= 0) {
@@ -129,7 +126,7 @@ void Sweep::accelerations(const std::vector<Vec6>& v, const double* dq, const st
   for (int i = 0; i < N; ++i) {
     const int k = model_.parent[i];
     if (k != kBase) a[i] += X_[i].transform_velocity(a[k]);
-    const int c = model_.velocity[i];
+    const int c = model_.first_velocity[i].value;
     if (multi_[i] >= 0) {
       const MultiAxis& J = multi_axes_[multi_[i]];
       const Vec6 ddq_i = J.D * (rates_of(i, ddq) - J.M_star_A.transpose() * a[i]);
@@ -148,11 +145,11 @@ void Sweep::momenta(const std::vector<Vec6>& v, const std::vector<Vec6>& phi, st
 
 void Sweep::gyroscopic(const std::vector<Vec6>& v, const std::vector<Vec6>& mu, const double* w, double* dp) const {
   for (int i = 0; i < model_.size(); ++i) {
-    const int c = model_.velocity[i];
+    const int c = model_.first_velocity[i].value;
     if (multi_[i] >= 0) {
       const MultiAxis& J = multi_axes_[multi_[i]];
       Vec6 dp_i = -J.A.transpose() * omega_times(v[i], mu[i]);
-      if (J.varying) dp_i += model_.joints[i].motion_axes_rate(q_.data() + model_.coordinate[i], w + c).transpose() * mu[i];
+      if (J.varying) dp_i += model_.joints[i].motion_axes_rate(q_.data() + model_.first_position[i].value, w + c).transpose() * mu[i];
       for (int r = 0; r < J.n; ++r) dp[c + r] = dp_i[r];
     } else if (c >= 0) {
       dp[c] = -A_[i].dot(omega_times(v[i], mu[i]));

@@ -22,7 +22,7 @@ void Trajectory::coordinates_at(double t, std::vector<double>& q) const {
   const Sample& b = *after;
   const Sample& a = *(after - 1);
   const Hermite span{a.t, b.t};
-  for (int c = 0; c < layout.nq; ++c) q[c] = span.value(a.y[layout.q() + c], a.dq[c], b.y[layout.q() + c], b.dq[c], t);
+  for (int c = 0; c < layout.nq; ++c) q[c] = span.value(a.y[layout.q() + c], a.q_dot[c], b.y[layout.q() + c], b.q_dot[c], t);
 }
 
 }  // namespace unfurl

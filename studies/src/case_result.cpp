@@ -13,15 +13,16 @@ constexpr std::size_t kOverlayPoints = 400;
 
 std::vector<std::string> latch_joints(const Scene& scene) {
   std::vector<std::string> names;
-  for (const Latch& l : scene.latches) names.push_back(scene.model.joints[l.joint].name);
+  for (const Latch* l : scene.latches()) names.push_back(scene.model.joints[l->joint].name);
   return names;
 }
 
 // The case scene's latch on `joint` that the nominal scene also has (a
 // stuck hinge's stop comes after them), or -1.
 int case_latch(const Scene& scene, const std::string& joint) {
-  for (int l = 0; l < static_cast<int>(scene.latches.size()); ++l)
-    if (scene.model.joints[scene.latches[l].joint].name == joint) return l;
+  const std::vector<const Latch*> latches = scene.latches();
+  for (int l = 0; l < static_cast<int>(latches.size()); ++l)
+    if (scene.model.joints[latches[l]->joint].name == joint) return l;
   return -1;
 }
 
@@ -34,7 +35,7 @@ double engagement_time(const Trajectory& tr, int latch) {
 void record_overlay(const Study& study, const Scene& scene, const Trajectory& tr, CaseResult& r) {
   int joint = 0;
   while (scene.model.joints[joint].name != study.overlay_joint) ++joint;
-  const int index = tr.layout.q() + scene.model.coordinate[joint];
+  const int index = tr.layout.q() + scene.model.first_position[joint].value;
   const std::size_t stride = std::max<std::size_t>(1, (tr.samples.size() + kOverlayPoints - 1) / kOverlayPoints);
   for (std::size_t k = 0; k < tr.samples.size(); k += stride) {
     r.angle_t.push_back(tr.samples[k].t);

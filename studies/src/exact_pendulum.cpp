@@ -3,6 +3,8 @@
 #include <cmath>
 #include <vector>
 
+#include "unfurl/sim/elements/gravity.hpp"
+
 namespace unfurl {
 
 double jacobi_sn(double u, double m) {
@@ -32,8 +34,10 @@ double ExactPendulum::angle(double t) const {
 std::optional<ExactPendulum> exact_pendulum(const Scene& scene) {
   const Model& model = scene.model;
   if (model.size() != 1 || model.joints[0].type != JointType::revolute || model.parent[0] != kBase) return {};
-  if (!model.base_velocity.isZero(0) || model.gravity.isZero(0)) return {};
-  if (!scene.springs.empty() || !scene.latches.empty() || !scene.loads.empty() || !scene.loops.empty()) return {};
+  const Vec3 gravity = scene.gravity();
+  if (!model.base_velocity.isZero(0) || gravity.isZero(0)) return {};
+  // Gravity alone acts.
+  if (scene.elements.size() != scene.elements_of<Gravity>().size() || !scene.loops.empty()) return {};
   const bool at_rest = scene.p0.empty() ? scene.dq0[0] == 0 : scene.p0[0] == 0;
   if (!at_rest) return {};
 
@@ -46,7 +50,7 @@ std::optional<ExactPendulum> exact_pendulum(const Scene& scene) {
   const Vec3 d_perp = d - d.dot(a) * a;
   const double I_axis = a.dot(body.inertia_com * a) + body.mass * d_perp.squaredNorm();
   // g . (R(q) d_perp) = alpha cos q + beta sin q, so V = -m rho cos(q - q_eq).
-  const double alpha = model.gravity.dot(d_perp), beta = model.gravity.dot(a.cross(d_perp));
+  const double alpha = gravity.dot(d_perp), beta = gravity.dot(a.cross(d_perp));
   const double rho = std::hypot(alpha, beta);
   if (rho == 0 || I_axis <= 0) return {};
   ExactPendulum p;

@@ -31,7 +31,7 @@ StabilityResult run_stability_case(const StabilityCase& c) {
   r.max_closure_m = s.max_closure_m;
   r.max_closure_rad = s.max_closure_rad;
   r.latches_engaged = static_cast<int>(s.latch_times.size());
-  r.latches_total = static_cast<int>(scene.latches.size());
+  r.latches_total = static_cast<int>(scene.latches().size());
   if (c.conservative) {
     double drift = 0;
     for (const Sample& x : run.trajectory.samples) drift = std::max(drift, std::abs(x.energy.total() - s.energy_initial));

@@ -39,7 +39,7 @@ std::vector<std::string> describe_branches(const Scene& scene, const Trajectory&
     a.insert(a.end(), b.rbegin(), b.rend());
     std::string opened, held, between;
     for (int i : a) {
-      const int c = model.coordinate[i];
+      const int c = model.first_position[i].value;
       if (c < 0) continue;
       const double moved = std::abs(last.y[c] - first.y[c]);
       std::string& list = moved > 0.1 ? opened : moved < 0.01 ? held : between;

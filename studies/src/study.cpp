@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "unfurl/input/yaml_fields.hpp"
+#include "unfurl/sim/elements/joint_spring.hpp"
 
 namespace unfurl {
 
@@ -283,13 +284,13 @@ class StudyReader {
     std::vector<std::string> candidates;
     const Model& m = nominal_.model;
     if (kind == StudyFailure::Kind::latch_fails)
-      for (const Latch& l : nominal_.latches) candidates.push_back(m.joints[l.joint].name);
+      for (const Latch* l : nominal_.latches()) candidates.push_back(m.joints[l->joint].name);
     else if (kind == StudyFailure::Kind::stuck || kind == StudyFailure::Kind::extra_friction)
       for (const Joint& j : m.joints) {
         if (j.dof() > 0) candidates.push_back(j.name);
       }
     else
-      for (std::size_t s = 0; s < nominal_.dampers_from; ++s) candidates.push_back(m.joints[nominal_.springs[s].joint].name);
+      for (const JointSpring* s : nominal_.elements_of<JointSpring>()) candidates.push_back(m.joints[s->joint].name);
     const std::string name = fields_.text(node, field);
     if (name == "*") return candidates;
     if (std::find(candidates.begin(), candidates.end(), name) == candidates.end()) {
@@ -305,7 +306,8 @@ class StudyReader {
   void read_overlay(const YAML::Node& node, Study& study) {
     const Model& m = nominal_.model;
     if (!node) {
-      study.overlay_joint = nominal_.latches.empty() ? m.joints.front().name : m.joints[nominal_.latches.front().joint].name;
+      const std::vector<const Latch*> latches = nominal_.latches();
+      study.overlay_joint = latches.empty() ? m.joints.front().name : m.joints[latches.front()->joint].name;
       return;
     }
     study.overlay_joint = fields_.text(node, "overlay");

@@ -5,6 +5,9 @@
 #include <string>
 #include <random>
 
+#include "unfurl/sim/elements/joint_friction.hpp"
+#include "unfurl/sim/elements/joint_spring.hpp"
+
 namespace unfurl {
 
 namespace {
@@ -83,13 +86,20 @@ int joint_named(const Model& model, const std::string& name) {
   throw input::InputError("no joint " + name + " in the scene");
 }
 
+// The scene's (first) spring on the joint, to change: a copy that replaces
+// it in the scene (elements are shared between a scene's copies).
 JointSpring& spring_of(Scene& scene, int joint) {
-  for (std::size_t s = 0; s < scene.dampers_from; ++s)
-    if (scene.springs[s].joint == joint) return scene.springs[s];
+  for (auto& e : scene.elements) {
+    const auto* s = dynamic_cast<const JointSpring*>(e.get());
+    if (!s || s->joint != joint) continue;
+    auto copy = std::make_shared<JointSpring>(*s);
+    e = copy;
+    return *copy;
+  }
   throw input::InputError("no spring on joint " + scene.model.joints[joint].name);
 }
 
-double initial_q(const Scene& scene, int joint) { return scene.q0[scene.model.coordinate[joint]]; }
+double initial_q(const Scene& scene, int joint) { return scene.q0[scene.model.position_of(joint).value]; }
 
 // The spring's twist at the start scaled by `factor`: the preload torque
 // k (q_free - q(0)) scales with it at the same stiffness.
@@ -107,34 +117,45 @@ void scale_preload(Scene& scene, int joint, double factor) {
 }
 
 // A stuck hinge is held where it starts by a stop as stiff as the scene's
-// stiffest latch, engaged from t = 0 (it starts at its position).
+// stiffest latch, engaged from t = 0 (it starts at its position). It acts
+// after the scene's latches.
 void make_stuck(Scene& scene, int joint) {
-  Latch stop{joint, initial_q(scene, joint), 1000.0, 10.0, 0.0};
-  for (const Latch& l : scene.latches)
-    if (l.stiffness > stop.stiffness) stop.stiffness = l.stiffness, stop.damping = l.damping;
-  scene.latches.push_back(stop);
+  auto stop = std::make_shared<Latch>(joint);
+  stop->position = initial_q(scene, joint);
+  stop->stiffness = 1000.0;
+  stop->damping = 10.0;
+  for (const Latch* l : scene.latches())
+    if (l->stiffness > stop->stiffness) stop->stiffness = l->stiffness, stop->damping = l->damping;
+  scene.elements.push_back(stop);
 }
 
 void apply_failure(Scene& scene, const StudyFailure& f) {
   const int joint = joint_named(scene.model, f.joint);
   switch (f.kind) {
     case StudyFailure::Kind::latch_fails:
-      scene.latches.erase(std::remove_if(scene.latches.begin(), scene.latches.end(),
-                                         [&](const Latch& l) { return l.joint == joint; }),
-                          scene.latches.end());
+      scene.elements.erase(std::remove_if(scene.elements.begin(), scene.elements.end(),
+                                          [&](const auto& e) {
+                                            const auto* l = dynamic_cast<const Latch*>(e.get());
+                                            return l && l->joint == joint;
+                                          }),
+                           scene.elements.end());
       break;
-    case StudyFailure::Kind::spring_breaks:
-      spring_of(scene, joint).stiffness = 0;
-      spring_of(scene, joint).curve.reset();
+    case StudyFailure::Kind::spring_breaks: {
+      JointSpring& s = spring_of(scene, joint);
+      s.stiffness = 0;
+      s.curve.reset();
       break;
+    }
     case StudyFailure::Kind::preload_loss: scale_preload(scene, joint, 1 - f.fraction); break;
     case StudyFailure::Kind::stuck: make_stuck(scene, joint); break;
     case StudyFailure::Kind::extra_friction: {
-      JointFriction friction;
-      friction.joint = joint;
-      friction.coulomb = f.coulomb;
-      friction.viscous = f.viscous;
-      scene.friction.push_back(friction);
+      auto friction = std::make_shared<JointFriction>(joint);
+      friction->coulomb = f.coulomb;
+      friction->viscous = f.viscous;
+      // With the scene's own friction, ahead of the latches.
+      const auto first_latch = std::find_if(scene.elements.begin(), scene.elements.end(),
+                                            [](const auto& e) { return dynamic_cast<const Latch*>(e.get()); });
+      scene.elements.insert(first_latch, friction);
       break;
     }
   }
@@ -182,7 +203,7 @@ SceneFile case_scene_file(const Study& study, const StudyCase& c, const std::vec
     for (std::size_t i = 0; i < study.variables.size(); ++i) {
       if (!study.variables[i].is_preload()) continue;
       const int joint = preload_joint(file.scene, i);
-      const JointSpring& spring = spring_of(file.scene, joint);
+      const JointSpring& spring = spring_of(file.scene, joint);  // a copy in file.scene, read only
       if (spring.curve) continue;
       overrides.push_back({"springs." + file.scene.model.joints[joint].name + ".free_position",
                            number(spring.free_position)});

@@ -71,8 +71,8 @@ void measure_errors(const Scene& scene, const RunResult& run, const Reference& r
   for (int c = 0; c < nq; ++c) final_error = std::max(final_error, std::abs(tr.samples.back().y[c] - ref.q.back()[c]));
   p.final_error = final_error;
   p.max_loop_gap = scene.loops.empty() ? kNotMeasured : gap;
-  if (scene.latches.empty()) return;
-  const std::vector<double> t = latch_times(tr, static_cast<int>(scene.latches.size()));
+  if (scene.latches().empty()) return;
+  const std::vector<double> t = latch_times(tr, static_cast<int>(scene.latches().size()));
   double worst = 0;
   for (std::size_t l = 0; l < t.size(); ++l) {
     const bool here = std::isfinite(t[l]), there = std::isfinite(ref.latch_time[l]);
@@ -136,7 +136,7 @@ WorkPrecision measure_work_precision(const Scene& scene, const WorkPrecisionSett
                                      const ReportProgress& progress) {
   WorkPrecision report;
   report.scene = scene.name;
-  const int latches = static_cast<int>(scene.latches.size());
+  const int latches = static_cast<int>(scene.latches().size());
   std::vector<RunSettings> runs;
   for (IntegratorKind kind : settings.integrators) {
     RunSettings run = scene.run;

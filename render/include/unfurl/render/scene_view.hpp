@@ -42,11 +42,11 @@ class SceneView {
   void add_pins(const Scene& scene, const SceneVisuals& visuals, MeshLibrary& meshes);
   // A mesh placed by T; `colour` replaces its materials' when given.
   void draw_mesh(const MeshModel& mesh, const Eigen::Affine3f& T, const Eigen::Vector3f* colour) const;
-  // A point spring as a thin rod between its two points.
-  Eigen::Affine3f link_placement(const PointSpring& link, const std::vector<Pose>& poses) const;
+  // An element's link (a point spring) as a thin rod between its two points.
+  Eigen::Affine3f link_placement(const ElementLink& link, const std::vector<Pose>& poses) const;
 
   std::vector<Item> items_;
-  std::vector<PointSpring> links_;
+  std::vector<ElementLink> links_;
   const MeshModel* link_mesh_ = nullptr;
   std::unique_ptr<Shader> shader_, background_;
   unsigned background_vao_ = 0;

@@ -4,15 +4,30 @@
 //   q' = N(q) w, w the sweep's rates (6)            (N = I but for quaternions)
 //   p' = -A^T Omega mu + A^T T^T (F - eps^T lambda) + Q_joint   (12)
 //   u' = k_pi g(q) + k_v eps v                     (13)
-// with g(q) the loops' true geometric gap (regulator.hpp). rhs() allocates
-// nothing.
+// with g(q) the loops' true geometric gap (regulator.hpp), F and Q_joint the
+// force elements' (force_element.hpp). rhs() allocates nothing.
+//
+// What evaluations share, in one place:
+// - the configuration (the sweep's placements and articulated inertias,
+//   the bodies' poses) depends on q alone. It is kept with the q it was
+//   computed for, and a key that changes whenever it is computed anew; an
+//   evaluation at the same q reuses it (the finite-difference Jacobian's
+//   momentum columns, the loads after a step).
+// - the regulator's factorization of R = W + delta I depends on the
+//   configuration: it is factored for a configuration key and reused at
+//   that key. rhs(), loads() and observe() use the gains of their own
+//   state; jacobian_times() holds those of its base state (see there).
+// - loads() and observe() evaluate the right-hand side at their state first
+//   and read what it derived; dissipation() has a configuration of its own.
+// A failed evaluation (a result that is not finite, a closure system that
+// cannot be factored) returns false; nothing derived from it is used.
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "unfurl/sim/energy.hpp"
-#include "unfurl/sim/latch.hpp"
 #include "unfurl/sim/loads.hpp"
 #include "unfurl/sim/momentum.hpp"
 #include "unfurl/sim/regulator.hpp"
@@ -26,8 +41,8 @@ class NewtonPreconditioner;
 
 // Everything derived from a state at one instant.
 struct Observation {
-  std::vector<double> dq;              // q'
-  std::vector<double> rates;           // the velocity coordinates (q' of one-coordinate joints)
+  std::vector<double> q_dot;           // q' (nq)
+  std::vector<double> w;               // the velocity coordinates (nv)
   std::vector<Vec6> velocity;          // v_i, body frames
   std::vector<Pose> poses;
   std::vector<ClosureError> closure;   // per loop
@@ -52,70 +67,99 @@ class Dynamics {
   // The initial state: q0, p0 (from dq0 when no p0 is given), u0 = 0.
   std::vector<double> initial_state();
 
-  // y' = f(t, y). Returns false when the result is not finite.
+  // y' = f(t, y). False where the result is not finite or the closure
+  // system cannot be factored.
   bool rhs(double t, const double* y, double* ydot);
   long rhs_calls() const { return rhs_calls_; }
 
   // Latches: engagement state and the integrators' root functions.
   LatchState& latch_state() { return latch_state_; }
   const LatchState& latch_state() const { return latch_state_; }
-  int latch_count() const { return static_cast<int>(scene_.latches.size()); }
+  const std::vector<const Latch*>& latches() const { return latches_; }
+  int latch_count() const { return static_cast<int>(latches_.size()); }
   void switching_functions(const double* y, double* values) const;
 
   // Jv ~ (f(y + sigma v) - f(y)) / sigma for the implicit integrators'
-  // Krylov solvers and latched dense Newton matrices, with the regulator's gains held at y's configuration
-  // and solved without refinement on both sides. J then leaves out how the
-  // gains turn with q, which only the Newton iteration sees (its residual
-  // is f itself, exact), and a product costs the sweeps and one triangular
-  // solve instead of a factorization and a refined solve. f(y) is kept
-  // while y repeats: GMRES asks for several products at one iterate.
-  // False where f is not finite.
+  // Krylov solvers and latched dense Newton matrices, with the regulator's
+  // gains held at y's configuration and solved without refinement on both
+  // sides. J then leaves out how the gains turn with q, which only the
+  // Newton iteration sees (its residual is f itself, exact), and a product
+  // costs the sweeps and one triangular solve instead of a factorization
+  // and a refined solve. y, f(y) and the gains' configuration key make the
+  // product's base: while they stand (GMRES asks for several products at
+  // one iterate) the base is reused. False where f is not finite.
   bool jacobian_times(const double* y, const double* v, double* Jv);
   long jacobian_product_evals() const { return jacobian_product_evals_; }
 
   // The implicit integrators' Krylov preconditioner, made on first use.
   NewtonPreconditioner& preconditioner();
 
-  // Derived quantities at a state.
-  void observe(double t, const double* y, Observation& out);
+  // Derived quantities at a state (the right-hand side at y first). False
+  // where that evaluation failed.
+  bool observe(double t, const double* y, Observation& out);
 
-  // The loads at a state (loads.hpp): the element forces from the joints'
-  // laws, the reactions from the sweep's accelerations (exact, O(N)); and
-  // the loops' geometric gaps if asked.
-  void loads(double t, const double* y, Loads& out, std::vector<ClosureError>* closure = nullptr);
+  // The loads at a state (loads.hpp): the elements' load columns, the
+  // reactions from the sweep's accelerations (exact, O(N)); and the loops'
+  // geometric gaps if asked. False where the evaluation at y failed.
+  bool loads(double t, const double* y, Loads& out, std::vector<ClosureError>* closure = nullptr);
+  // What Loads::element holds, and which of its columns each element writes.
+  const std::vector<LoadColumn>& load_columns() const { return columns_; }
+  const std::vector<int>& element_columns(std::size_t element) const { return element_columns_[element]; }
+  // The column of latch l's torque.
+  int latch_column(int l) const { return element_columns_[latch_elements_[l]][0]; }
 
-  // The power the dampers, friction, point springs' damping and engaged
-  // latches take out of the mechanism at coordinates q and joint rates dq
-  // (>= 0); its integral is EnergyParts::dissipated. Uses the scratch of
-  // rhs() (call it between right-hand sides).
-  double dissipation(const double* q, const double* dq);
+  // The power the elements take out of the mechanism at positions q and
+  // position rates q' (>= 0 for passive elements); its integral is
+  // EnergyParts::dissipated.
+  double dissipation(const double* q, const double* q_dot);
+
+  // The element state at positions q and rates w, for element k (its
+  // discrete state). poses and v must be current where elements need them.
+  ElementState element_state(std::size_t k, const double* q, const double* w, const std::vector<Pose>& poses,
+                             const std::vector<Vec6>& v, const Vec6& v_base) const;
 
  private:
-  bool evaluate(double t, const double* y, double* ydot);
-  void joint_torques(const double* q, const double* dq, double* Q) const;
-  // Adds the point springs' pulls to F_ (needs poses_ and v_).
-  void add_point_springs();
+  // Computes the configuration at q unless it holds q's already; its key
+  // changes when it computes.
+  void configure(const double* q);
+  bool evaluate(const double* y, double* ydot, Regulator::Gains gains);
+  void add_element_forces(const double* q, const double* w);
 
   const Scene scene_;
   StateLayout layout_;
   Sweep sweep_;
   std::optional<Regulator> regulator_;
+  std::vector<const Latch*> latches_;
+  std::vector<std::size_t> latch_elements_;  // element index of latch l
+  std::vector<int> latch_of_element_;        // -1 for elements that are not latches
   LatchState latch_state_;
+  std::vector<LoadColumn> columns_;
+  std::vector<std::vector<int>> element_columns_;
   std::unique_ptr<NewtonPreconditioner> preconditioner_;
-  bool loads_need_poses_ = false;
+  bool elements_need_poses_ = false;
   long rhs_calls_ = 0;
   long jacobian_product_evals_ = 0;
 
-  // Scratch for rhs(), sized once.
+  // The configuration the sweep holds, and its key.
+  std::vector<double> configured_q_;
+  bool configured_ = false;
+  long configuration_key_ = 0;
+
+  // Scratch for the evaluations, sized once.
   std::vector<Vec6> phi_, v_, mu_, F_;
   std::vector<Pose> poses_;
   std::vector<Vec6> bias_, a_;   // the accelerations pass
-  std::vector<double> Q_, Q_joint_, ddq_, w_, lambda_, g_, g_dot_, d_, ydot_;
-  // jacobian_times(): its base y and f(y) with held gains (for the latches
-  // engaged then), and y + sigma v.
+  std::vector<double> Q_, Q_joint_, ddq_, w_, lambda_, g_, g_dot_, d_, ydot_, values_;
+  // jacobian_times(): its base (y, f(y) with held gains, the latches engaged
+  // then, the gains' configuration key) and y + sigma v.
   std::vector<double> jv_y_, jv_f_, jv_y1_;
   int jv_engaged_ = -1;
-  long jv_factorizations_ = -1;  // the regulator's count at the base
+  long jv_gains_key_ = -1;
+  // dissipation(): a configuration of its own.
+  std::unique_ptr<Sweep> dissipation_sweep_;
+  std::vector<Pose> dissipation_poses_;
+  std::vector<Vec6> dissipation_v_;
+  std::vector<double> dissipation_w_;
 };
 
 }  // namespace unfurl

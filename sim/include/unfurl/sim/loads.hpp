@@ -1,7 +1,7 @@
-// The loads an engineer sizes hardware with, at one instant: per joint the
-// generalized force of each element (spring, damper, friction, latch) and the wrench
-// the parent transmits to the child through the joint; per loop component
-// the regulator's constraint force.
+// The loads an engineer sizes hardware with, at one instant: what each force
+// element reports (its load columns: a spring's torque, a cable's tension),
+// the wrench the parent transmits to the child through each joint, and per
+// loop component the regulator's constraint force.
 #pragma once
 
 #include <cmath>
@@ -13,24 +13,31 @@
 
 namespace unfurl {
 
-struct JointLoad {
-  double spring = 0;  // -k (q - q_free), N m (or N for a slider)
-  double damper = 0;  // -c dq: the springs' damping and the dampers
-  double latch = 0;   // -k_L (q - q_L) - c_L dq once engaged
-  double friction = 0;  // -T_c tanh(dq / v_s) - c_v dq (friction.hpp)
-  // The wrench from the parent on the child: force (N) and moment (N m)
-  // about the hinge point, in the child body's frame. Its component along
-  // the joint's motion axis is the sum of the element forces above.
-  Vec6 reaction = Vec6::Zero();
+// A column of loads.csv (and of the GUI's loads): what a force element
+// reports at each sample. Elements that report the same name share the
+// column and their values add (two springs on one hinge give one spring
+// torque).
+struct LoadColumn {
+  std::string name;   // "tau_spring.j1"
+  std::string unit;   // "N m"
+  std::string frame;  // "" for a scalar (a torque about its joint's axis)
+  int joint = -1;     // the joint it is listed with, or -1 (after the joints)
 };
 
+// The index of the column called `name`, or -1.
+int find_load_column(const std::vector<LoadColumn>& columns, const std::string& name);
+
 struct Loads {
-  std::vector<JointLoad> joints;   // per joint (every joint, fixed ones too)
+  // Per load column of the run (Dynamics::load_columns, Trajectory::load_columns).
+  std::vector<double> element;
+  // Per joint (every joint, fixed ones too): the wrench from the parent on
+  // the child, force (N) and moment (N m) about the hinge point, in the
+  // child body's frame. Its component along a hinge's axis is the sum of
+  // the torques its elements apply.
+  std::vector<Vec6> reaction;
   // Per active loop component: the force on the split body from its image
   // (its negative acts on the image), at the body's origin, in its frame.
   std::vector<double> loop_force;
-  // Per point spring (scene order): its tension, N (> 0 pulls).
-  std::vector<double> point_spring_tension;
 };
 
 // The largest magnitude a quantity took and when.

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "unfurl/sim/coordinates.hpp"
 #include "unfurl/sim/joint.hpp"
 #include "unfurl/sim/spatial.hpp"
 
@@ -33,19 +34,18 @@ struct Model {
   // The base's velocity (v, w) in its own frame, constant: a steady drift
   // or spin of body 0. Zero for a fixed base.
   Vec6 base_velocity = Vec6::Zero();
-  Vec3 gravity = Vec3::Zero();  // in the base (inertial) frame
 
   // Derived by finalize().
   std::vector<std::vector<int>> children;  // U_i
   // Where each joint's coordinates sit: its m_i positions from
-  // coordinate[i] in q, its n_i velocity coordinates (and momenta) from
-  // velocity[i] in the rates and p; -1 for a fixed joint. One-coordinate
-  // joints come first in both, in body order, so for them the two indices
-  // agree (springs, latches and friction index q and the rates alike).
-  std::vector<int> coordinate;
-  std::vector<int> velocity;
-  std::vector<int> joint_of_coordinate;  // per entry of q
-  std::vector<int> joint_of_velocity;    // per entry of the rates
+  // first_position[i] in q, its n_i velocity coordinates (and momenta) from
+  // first_velocity[i] in the rates and p; invalid for a fixed joint. The
+  // one-coordinate joints come first in both, in body order, so that the
+  // trajectory's columns keep them together; nothing else relies on it.
+  std::vector<PositionIndex> first_position;
+  std::vector<VelocityIndex> first_velocity;
+  std::vector<int> joint_of_position;  // per entry of q
+  std::vector<int> joint_of_velocity;  // per entry of the rates
   int nq = 0;  // positions
   int nv = 0;  // velocity coordinates
 
@@ -55,6 +55,9 @@ struct Model {
   // entries of a ball, planar or free joint.
   std::string position_name(int c) const;
   std::string velocity_name(int c) const;
+  // The single coordinate of a one-coordinate joint j, in each space.
+  PositionIndex position_of(int j) const { return first_position[j]; }
+  VelocityIndex velocity_of(int j) const { return first_velocity[j]; }
   // Builds U_i and the coordinate map; throws std::invalid_argument when the
   // numbering is not regular (a parent after its child).
   void finalize();
@@ -63,7 +66,7 @@ struct Model {
   bool base_rotates() const { return !base_velocity.tail<3>().isZero(0); }
   // Whether some joint has several coordinates (then nq may differ from nv).
   bool has_multi_dof_joints() const { return scalar_coordinates != nv; }
-  int scalar_coordinates = 0;  // the one-coordinate joints' (the first of q and of the rates)
+  int scalar_coordinates = 0;  // how many one-coordinate joints (the first of q and of the rates)
   // Body 0 on a free joint: a free-floating spacecraft bus.
   bool free_floating() const { return !joints.empty() && joints[0].type == JointType::free; }
 };

@@ -74,28 +74,34 @@ class Regulator {
   // Whether control() wants the residual's acceleration d.
   bool uses_feedforward() const { return settings_.gains == GainTuning::full && settings_.feedforward; }
 
-  // lambda of (12) and u' of (13) at the sweep's current configuration,
-  // from the gap g, the regulator state u, eps v and (with feedforward) d.
-  // False (and NaN in lambda) if R could not be factored.
-  bool control(const Sweep& sweep, const double* g, const double* u, const double* g_dot, const double* d,
-               double* lambda, double* u_dot);
+  // Factors R = W + delta I for the sweep's configuration, which the caller
+  // names by `configuration` (a key that changes whenever q does): at the
+  // key it last factored for it keeps what it has. False if R could not be
+  // factored.
+  bool factorize(const Sweep& sweep, long configuration);
+  // Which gains control() and energy() use:
+  // - current: those of the last factorize(), solved with refinement;
+  // - held: the same factorization applied at another state, solved
+  //   without refinement: what a Jacobian-vector product needs (a linear
+  //   stand-in for R^-1 there, dynamics.hpp).
+  enum class Gains { current, held };
 
-  // Holds the gains of the sweep's configuration (factorized now unless
-  // they already are): until release_gains(), control() uses them whatever
-  // q it is given and solves without refinement. What a Jacobian-vector
-  // product needs (dynamics.hpp); false if R could not be factored.
-  bool hold_gains(const Sweep& sweep);
-  // Holds the gains of the last factorization, wherever that was.
-  void hold_last_gains() { held_ = true; }
-  void release_gains() { held_ = false; }
-  // How many times R has been factored: unchanged, the last gains stand.
+  // lambda of (12) and u' of (13) from the gap g, the regulator state u,
+  // eps v and (with feedforward) d, with the gains of the last factorize().
+  void control(const double* g, const double* u, const double* g_dot, const double* d, Gains gains, double* lambda,
+               double* u_dot);
+
+  // How many times R has been factored (statistics), and the key of the
+  // configuration it was last factored for.
   long factorizations() const { return factorizations_; }
+  long factorized_configuration() const { return factorized_configuration_; }
 
   // Adds -eps^T lambda to the body forces.
   void apply(const double* lambda, std::vector<Vec6>& F) const;
 
-  // Potential energy of the regulator's springs, (g + u)^T C (g + u) / 2.
-  double energy(const Sweep& sweep, const double* g, const double* u);
+  // Potential energy of the regulator's springs, (g + u)^T C (g + u) / 2,
+  // with the gains of the last factorize().
+  double energy(const double* g, const double* u);
 
   // W at the sweep's configuration (for analysis; at most
   // kMaxDenseComponents components).
@@ -109,12 +115,9 @@ class Regulator {
   std::unique_ptr<ClosureSolver> solver_;  // the full tuning's solves with R
   double delta_ = 0;
   Eigen::VectorXd diagonal_W0_;  // paper tuning: diag W(0)
-  // The solver's factorization: for which sweep and configuration.
-  bool factorize(const Sweep& sweep);
-  const Sweep* factorized_sweep_ = nullptr;
-  long factorized_configuration_ = 0;
+  // The configuration key of the last factorization, and its outcome.
+  long factorized_configuration_ = -1;
   bool factorized_ok_ = false;
-  bool held_ = false;
   long factorizations_ = 0;
 
   // Scratch, sized once: the right-hand sides of (12) and (13) side by

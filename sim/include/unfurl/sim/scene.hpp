@@ -1,17 +1,16 @@
-// A scene: the mechanism (tree, forces, latches, loops, regulator), its
+// A scene: the mechanism (tree, force elements, loops, regulator), its
 // initial state and how to run it. What the renderer draws is apart
 // (visuals.hpp).
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
-#include "unfurl/sim/forces.hpp"
-#include "unfurl/sim/friction.hpp"
-#include "unfurl/sim/latch.hpp"
+#include "unfurl/sim/elements/latch.hpp"
+#include "unfurl/sim/force_element.hpp"
 #include "unfurl/sim/loop.hpp"
 #include "unfurl/sim/model.hpp"
-#include "unfurl/sim/point_spring.hpp"
 #include "unfurl/sim/regulator_settings.hpp"
 #include "unfurl/sim/run_settings.hpp"
 
@@ -22,12 +21,8 @@ struct Scene {
   std::string description;
   std::string source;  // the file it came from, or "built-in"
   Model model;
-  std::vector<JointSpring> springs;  // the file's springs, then its dampers
-  std::size_t dampers_from = 0;      // springs[dampers_from..] came from `dampers:`
-  std::vector<JointFriction> friction;
-  std::vector<PointSpring> point_springs;
-  std::vector<BodyLoad> loads;
-  std::vector<Latch> latches;
+  // Everything that applies force, in the order their forces add up.
+  std::vector<std::shared_ptr<const ForceElement>> elements;
   std::vector<Loop> loops;
   RegulatorSettings regulator;
   std::vector<double> q0;     // per position coordinate
@@ -35,6 +30,27 @@ struct Scene {
   std::vector<double> p0;     // per velocity coordinate, optional
   double closure_tolerance = 1e-6;  // how far the initial loops may be open
   RunSettings run;
+
+  // The elements of one kind, in scene order.
+  template <class Element>
+  std::vector<const Element*> elements_of() const {
+    std::vector<const Element*> out;
+    for (const auto& e : elements)
+      if (const auto* x = dynamic_cast<const Element*>(e.get())) out.push_back(x);
+    return out;
+  }
+  // The latches, in the order of their events (LatchEvent::latch).
+  std::vector<const Latch*> latches() const { return elements_of<Latch>(); }
+  // Uniform gravity (base frame), zero without it.
+  Vec3 gravity() const;
+  // The load columns of the elements (loads.hpp), one per name in the
+  // order first named; with `of_element`, which columns each element writes.
+  std::vector<LoadColumn> load_columns(std::vector<std::vector<int>>* of_element = nullptr) const;
+  // The --set path of element k ("springs.j1", or "springs.3" where its
+  // handle is shared or missing), and every path that names it (by index,
+  // and by handle where no other element of its list shares it).
+  std::string element_path(std::size_t k) const { return element_paths(k).back(); }
+  std::vector<std::string> element_paths(std::size_t k) const;
 };
 
 }  // namespace unfurl

@@ -6,8 +6,8 @@
 // constructor.
 //
 // Coordinate arrays p, dq, Q and joint_diagonal are per velocity coordinate
-// (Model::velocity, nv of them); only set_configuration's q is per position
-// (Model::coordinate, nq).
+// (Model::first_velocity, nv of them); only set_configuration's q is per
+// position (Model::first_position, nq).
 //
 // The passes also run on k load cases at once (6 x k blocks per body, k x
 // columns of coordinates), which the loop regulator uses to form W.
@@ -27,17 +27,11 @@ class Sweep {
 
   // Joint placements X_i = (G_i, rho_i) and the articulated quantities
   // M*_i, D_i, M*_i A_i of the first backward pass (they depend on q only).
-  // With joint_diagonal (one value per coordinate, k_c), the passes solve
-  // with Mtilde + diag(k) instead: D_i = (A_i^T M*_i A_i + k_i)^-1, as a
-  // joint's armature enters the articulated inertia.
-  // Called again with the q it has (and no joint_diagonal), it keeps what it
-  // computed: the finite-difference Jacobian's momentum columns and the
-  // observers after a step revisit the same q.
+  // With joint_diagonal (one value per velocity coordinate, k_c), the passes
+  // solve with Mtilde + diag(k) instead: D_i = (A_i^T M*_i A_i + k_i)^-1, as
+  // a joint's armature enters the articulated inertia. Always computes: what
+  // may be reused between calls is the caller's to key (dynamics.hpp).
   void set_configuration(const double* q, const double* joint_diagonal = nullptr);
-
-  // Changes whenever set_configuration computes anew: what depends on q
-  // alone (the regulator's factorized W) is kept while it stays.
-  long configuration() const { return configuration_; }
 
   // phi*_i of the first backward pass for momenta p (v*_i = 0).
   void bias(const double* p, std::vector<Vec6>& phi) const { bias_pass(coordinates(p), phi); }
@@ -139,8 +133,6 @@ class Sweep {
   std::vector<int> multi_;      // index into multi_axes_, -1 for n_i <= 1
   std::vector<MultiAxis> multi_axes_;
   std::vector<double> q_;       // the q of the quantities above
-  bool with_diagonal_ = false;  // ... and whether a joint diagonal entered them
-  long configuration_ = 0;      // 0: none yet
 };
 
 template <class S, class P>
@@ -152,7 +144,7 @@ void Sweep::bias_pass(const P& p, std::vector<S>& phi) const {
     if (k == kBase) continue;
     // M*_j A_j D_j p_j + H_j phi*_j
     S carried = phi[j];
-    const int c = model_.velocity[j];
+    const int c = model_.first_velocity[j].value;
     if (multi_[j] >= 0) {
       const MultiAxis& J = multi_axes_[multi_[j]];
       carried.noalias() += J.M_star_A * (J.D * (padded(p, c, J.n) - J.A.transpose() * phi[j]));
@@ -171,7 +163,7 @@ void Sweep::velocity_pass(const P& p, const std::vector<S>& phi, const Vec6& v_b
   for (int i = 0; i < N; ++i) {
     const int k = model_.parent[i];
     v[i] = X_[i].transform_velocity(k == kBase ? base : v[k]);
-    const int c = model_.velocity[i];
+    const int c = model_.first_velocity[i].value;
     if (multi_[i] >= 0) {
       const MultiAxis& J = multi_axes_[multi_[i]];
       const auto w = (J.D * (padded(p, c, J.n) - J.A.transpose() * (phi[i] + M_star_[i] * v[i]))).eval();
@@ -187,7 +179,7 @@ void Sweep::velocity_pass(const P& p, const std::vector<S>& phi, const Vec6& v_b
 template <class S, class Pout>
 void Sweep::force_pass(std::vector<S>& F, Pout& Q) const {
   for (int i = model_.size() - 1; i >= 0; --i) {
-    const int c = model_.velocity[i];
+    const int c = model_.first_velocity[i].value;
     if (multi_[i] >= 0) {
       const MultiAxis& J = multi_axes_[multi_[i]];
       const auto Q_i = (J.A.transpose() * F[i]).eval();

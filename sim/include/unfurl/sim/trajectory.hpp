@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "unfurl/sim/energy.hpp"
+#include "unfurl/sim/force_element.hpp"
 #include "unfurl/sim/loads.hpp"
 #include "unfurl/sim/loop.hpp"
 #include "unfurl/sim/momentum.hpp"
@@ -17,7 +18,7 @@ namespace unfurl {
 struct Sample {
   double t = 0;
   std::vector<double> y;             // the full state
-  std::vector<double> dq;            // q' (a one-coordinate joint's rate)
+  std::vector<double> q_dot;         // q' (a one-coordinate joint's rate)
   std::vector<ClosureError> closure; // geometric gap per loop
   EnergyParts energy;
   SystemMomentum momentum;
@@ -33,6 +34,7 @@ struct LatchEvent {
 struct Trajectory {
   StateLayout layout;
   std::vector<LoopComponent> loop_components;  // what Loads::loop_force holds
+  std::vector<LoadColumn> load_columns;        // what Loads::element holds
   std::vector<Sample> samples;
   std::vector<LatchEvent> events;
 

@@ -1,4 +1,4 @@
-#include "unfurl/sim/spring_curve.hpp"
+#include "unfurl/sim/elements/spring_curve.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,14 +1,19 @@
 // Latches: a stop that catches a joint the first time it reaches its
 // deployed position and from then on holds it with a stiff spring-damper.
-// A latch never lets go.
+// A latch never lets go. Whether it has engaged is the run's (LatchState),
+// handed to the element as ElementState::engaged.
 #pragma once
 
 #include <vector>
 
+#include "unfurl/sim/elements/joint_element.hpp"
+
 namespace unfurl {
 
-struct Latch {
-  int joint = 0;
+class Latch : public JointElement {
+ public:
+  using JointElement::JointElement;
+
   double position = 0;   // the deployed angle (or length)
   double stiffness = 0;  // k_L
   double damping = 0;    // c_L
@@ -33,6 +38,20 @@ struct Latch {
     return tau * x > 0 ? 0.0 : tau;
   }
   double energy(double q) const { return 0.5 * stiffness * penetration(q) * penetration(q); }
+
+  std::string kind() const override { return "latch"; }
+  std::string list() const override { return "latches"; }
+  // Each of these acts only once the latch has engaged.
+  void add_forces(const ElementState& s, ElementForces& out) const override;
+  double potential_energy(const ElementState& s) const override;
+  EnergyStore energy_store() const override { return EnergyStore::latches; }
+  double dissipated_power(const ElementState& s) const override;
+  bool dissipative() const override { return damping > 0; }
+  void add_joint_stiffness(const ElementState& s, RatesOut stiffness, RatesOut damping) const override;
+  std::vector<LoadColumn> load_columns(const Model& model) const override;  // tau_latch
+  void load_values(const ElementState& s, double* values) const override;
+  std::vector<ElementParameter> parameters() const override;
+  std::string note() const override;
 };
 
 // The engagement state of a scene's latches along one run.
@@ -40,7 +59,7 @@ class LatchState {
  public:
   // `side` of each latch: the sign of q(0) - position, the side the joint
   // starts on; a latch whose joint starts at its position starts engaged.
-  LatchState(const std::vector<Latch>& latches, const std::vector<double>& q0_of_latch);
+  LatchState(const std::vector<const Latch*>& latches, const std::vector<double>& q0_of_latch);
 
   // The root function of latch l: s (q - position), crossing zero downwards
   // when the joint reaches the deployed position; +1 once engaged.

@@ -1,0 +1,29 @@
+// A constant force and torque applied to a body (a thruster, a test load):
+// the force acts at `point` (body frame); both are given in the body frame,
+// or in the base frame.
+#pragma once
+
+#include "unfurl/sim/force_element.hpp"
+
+namespace unfurl {
+
+class AppliedForce : public ForceElement {
+ public:
+  int body = 0;
+  Vec3 force = Vec3::Zero();
+  Vec3 torque = Vec3::Zero();
+  Vec3 point = Vec3::Zero();
+  bool in_base_frame = false;
+
+  std::string kind() const override { return "applied force"; }
+  std::string list() const override { return "loads"; }
+  std::string handle(const Model& model) const override { return model.bodies[body].name; }
+  void add_forces(const ElementState& s, ElementForces& out) const override;
+  bool needs_poses() const override { return in_base_frame; }
+  std::vector<ElementParameter> parameters() const override;
+};
+
+// (f, m) at a body's origin of a force f at `point` and a torque m.
+Vec6 wrench_at_origin(const Vec3& force, const Vec3& torque, const Vec3& point);
+
+}  // namespace unfurl

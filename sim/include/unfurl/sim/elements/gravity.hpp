@@ -1,0 +1,25 @@
+// Uniform gravity: m g on every body at its centre of mass, g given in the
+// base (inertial) frame, which must not rotate.
+#pragma once
+
+#include "unfurl/sim/force_element.hpp"
+
+namespace unfurl {
+
+class Gravity : public ForceElement {
+ public:
+  explicit Gravity(const Vec3& g) : g(g) {}
+
+  Vec3 g;  // m/s^2, base frame
+
+  std::string kind() const override { return "gravity"; }
+  std::string list() const override { return "gravity"; }
+  std::string handle(const Model&) const override { return ""; }
+  void add_forces(const ElementState& s, ElementForces& out) const override;
+  bool needs_poses() const override { return true; }
+  // -sum m_i g . r_c,i
+  double potential_energy(const ElementState& s) const override;
+  EnergyStore energy_store() const override { return EnergyStore::gravity; }
+};
+
+}  // namespace unfurl

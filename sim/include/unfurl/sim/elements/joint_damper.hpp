@@ -1,0 +1,25 @@
+// A viscous damper on one joint: tau = -damping q'.
+#pragma once
+
+#include "unfurl/sim/elements/joint_element.hpp"
+
+namespace unfurl {
+
+class JointDamper : public JointElement {
+ public:
+  using JointElement::JointElement;
+
+  double damping = 0;
+
+  std::string kind() const override { return "damper"; }
+  std::string list() const override { return "dampers"; }
+  void add_forces(const ElementState& s, ElementForces& out) const override;
+  double dissipated_power(const ElementState& s) const override;
+  bool dissipative() const override { return damping > 0; }
+  void add_joint_stiffness(const ElementState& s, RatesOut stiffness, RatesOut damping) const override;
+  std::vector<LoadColumn> load_columns(const Model& model) const override;  // tau_damper
+  void load_values(const ElementState& s, double* values) const override;
+  std::vector<ElementParameter> parameters() const override;
+};
+
+}  // namespace unfurl

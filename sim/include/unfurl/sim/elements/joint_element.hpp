@@ -1,0 +1,33 @@
+// What the elements acting along one revolute or prismatic joint share: the
+// joint, how it names them, and the units of their torques (N m, or N on a
+// slider) and angles (rad, or m).
+#pragma once
+
+#include <string>
+
+#include "unfurl/sim/force_element.hpp"
+
+namespace unfurl {
+
+class JointElement : public ForceElement {
+ public:
+  explicit JointElement(int joint) : joint(joint) {}
+
+  std::string handle(const Model& model) const override { return model.joints[joint].name; }
+
+  int joint = 0;
+
+ protected:
+  // The joint's coordinate in each space.
+  PositionIndex q_index(const Model& model) const { return model.position_of(joint); }
+  VelocityIndex w_index(const Model& model) const { return model.velocity_of(joint); }
+  // "N m" on a hinge, "N" on a slider; "rad" and "m" for its coordinate.
+  static std::string torque_unit(const Model& model, int joint);
+  static std::string angle_unit(const Model& model, int joint);
+  // A column listed with the joint.
+  LoadColumn column(const Model& model, const std::string& quantity) const {
+    return {quantity + "." + model.joints[joint].name, torque_unit(model, joint), "", joint};
+  }
+};
+
+}  // namespace unfurl

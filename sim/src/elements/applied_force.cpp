@@ -1,0 +1,33 @@
+#include "unfurl/sim/elements/applied_force.hpp"
+
+namespace unfurl {
+
+Vec6 wrench_at_origin(const Vec3& force, const Vec3& torque, const Vec3& point) {
+  Vec6 F;
+  F.head<3>() = force;
+  F.tail<3>() = torque + point.cross(force);
+  return F;
+}
+
+void AppliedForce::add_forces(const ElementState& s, ElementForces& out) const {
+  if (in_base_frame) {
+    const Mat3& R = s.poses[body].rotation;
+    out.F[body] += wrench_at_origin(R * force, R * torque, point);
+  } else {
+    out.F[body] += wrench_at_origin(force, torque, point);
+  }
+}
+
+std::vector<ElementParameter> AppliedForce::parameters() const {
+  std::vector<ElementParameter> p;
+  const char* axes[] = {"x", "y", "z"};
+  for (int a = 0; a < 3; ++a)
+    p.push_back({"force." + std::to_string(a), std::string("force ") + axes[a] + " [N]", force[a], 0.1, 0, 0,
+                 "the applied force, in the body's frame (or the base's)"});
+  for (int a = 0; a < 3; ++a)
+    p.push_back({"torque." + std::to_string(a), std::string("torque ") + axes[a] + " [N m]", torque[a], 0.01, 0, 0,
+                 "the applied torque, in the body's frame (or the base's)"});
+  return p;
+}
+
+}  // namespace unfurl

@@ -1,0 +1,23 @@
+#include "unfurl/sim/elements/gravity.hpp"
+
+#include "unfurl/sim/elements/applied_force.hpp"
+
+namespace unfurl {
+
+void Gravity::add_forces(const ElementState& s, ElementForces& out) const {
+  for (int i = 0; i < s.model.size(); ++i) {
+    const Body& b = s.model.bodies[i];
+    out.F[i] += wrench_at_origin(s.poses[i].rotation * (b.mass * g), Vec3::Zero(), b.com);
+  }
+}
+
+double Gravity::potential_energy(const ElementState& s) const {
+  double V = 0;
+  for (int i = 0; i < s.model.size(); ++i) {
+    const Body& b = s.model.bodies[i];
+    V -= b.mass * g.dot(s.poses[i].to_base(b.com));
+  }
+  return V;
+}
+
+}  // namespace unfurl

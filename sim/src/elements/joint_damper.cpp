@@ -1,0 +1,28 @@
+#include "unfurl/sim/elements/joint_damper.hpp"
+
+namespace unfurl {
+
+void JointDamper::add_forces(const ElementState& s, ElementForces& out) const {
+  out.Q[w_index(s.model)] += -damping * s.w[w_index(s.model)];
+}
+
+double JointDamper::dissipated_power(const ElementState& s) const {
+  const double w = s.w[w_index(s.model)];
+  return damping * w * w;
+}
+
+void JointDamper::add_joint_stiffness(const ElementState& s, RatesOut, RatesOut c) const {
+  c[w_index(s.model)] += damping;
+}
+
+std::vector<LoadColumn> JointDamper::load_columns(const Model& model) const { return {column(model, "tau_damper")}; }
+
+void JointDamper::load_values(const ElementState& s, double* values) const {
+  values[0] = -damping * s.w[w_index(s.model)];
+}
+
+std::vector<ElementParameter> JointDamper::parameters() const {
+  return {{"damping", "damping [N m s/rad]", damping, 0.001, 0, 1e9, "viscous damping c of the hinge"}};
+}
+
+}  // namespace unfurl

@@ -1,0 +1,32 @@
+#include "unfurl/sim/elements/joint_friction.hpp"
+
+namespace unfurl {
+
+void JointFriction::add_forces(const ElementState& s, ElementForces& out) const {
+  out.Q[w_index(s.model)] += torque(s.w[w_index(s.model)]);
+}
+
+void JointFriction::add_joint_stiffness(const ElementState& s, RatesOut, RatesOut c) const {
+  // The tanh's slope; 0 far out on its flat part (no inf * 0).
+  const double x = s.w[w_index(s.model)] / velocity_scale;
+  const double sech = std::abs(x) < 30 ? 1 / std::cosh(x) : 0.0;
+  c[w_index(s.model)] += viscous + coulomb * (sech * sech / velocity_scale);
+}
+
+std::vector<LoadColumn> JointFriction::load_columns(const Model& model) const {
+  return {column(model, "tau_friction")};
+}
+
+void JointFriction::load_values(const ElementState& s, double* values) const {
+  values[0] = torque(s.w[w_index(s.model)]);
+}
+
+std::vector<ElementParameter> JointFriction::parameters() const {
+  return {{"coulomb", "Coulomb [N m]", coulomb, 0.001, 0, 1e9,
+           "sliding friction torque T_c: tau = -T_c tanh(dq / v_s) - c_v dq"},
+          {"viscous", "viscous [N m s/rad]", viscous, 0.001, 0, 1e9, "viscous friction coefficient c_v"},
+          {"velocity_scale", "velocity scale [rad/s]", velocity_scale, 1e-4, 1e-9, 1e3,
+           "v_s: the Coulomb torque ramps through zero speed over about this rate"}};
+}
+
+}  // namespace unfurl

@@ -1,0 +1,51 @@
+#include "unfurl/sim/elements/joint_spring.hpp"
+
+#include <algorithm>
+
+namespace unfurl {
+
+void JointSpring::add_forces(const ElementState& s, ElementForces& out) const {
+  out.Q[w_index(s.model)] += torque(s.q[q_index(s.model)], s.w[w_index(s.model)]);
+}
+
+double JointSpring::potential_energy(const ElementState& s) const { return energy(s.q[q_index(s.model)]); }
+
+double JointSpring::dissipated_power(const ElementState& s) const {
+  const double w = s.w[w_index(s.model)];
+  return damping * w * w;
+}
+
+void JointSpring::add_joint_stiffness(const ElementState& s, RatesOut k, RatesOut c) const {
+  const VelocityIndex v = w_index(s.model);
+  k[v] += std::max(0.0, local_stiffness(s.q[q_index(s.model)]));  // a rising stretch of a curve: none
+  c[v] += damping;
+}
+
+std::vector<LoadColumn> JointSpring::load_columns(const Model& model) const {
+  std::vector<LoadColumn> columns{column(model, "tau_spring")};
+  if (damping != 0) columns.push_back(column(model, "tau_damper"));
+  return columns;
+}
+
+void JointSpring::load_values(const ElementState& s, double* values) const {
+  values[0] = elastic_torque(s.q[q_index(s.model)]);
+  if (damping != 0) values[1] = -damping * s.w[w_index(s.model)];
+}
+
+std::string JointSpring::note() const {
+  return curve ? "measured curve, " + std::to_string(curve->angles().size()) + " points (edit the file's table)" : "";
+}
+
+std::vector<ElementParameter> JointSpring::parameters() const {
+  std::vector<ElementParameter> p;
+  if (!curve) {
+    p.push_back({"stiffness", "stiffness [N m/rad]", stiffness, 0.005, 0, 1e9,
+                 "torsion spring rate k: tau = -k (q - free angle) - c dq"});
+    p.push_back({"free_position", "preload: free angle [rad]", free_position, 0.01, 0, 0,
+                 "the angle where the spring is relaxed; the preload at q is k (free angle - q)"});
+  }
+  p.push_back({"damping", "damping [N m s/rad]", damping, 0.001, 0, 1e9, "viscous damping c of the hinge"});
+  return p;
+}
+
+}  // namespace unfurl

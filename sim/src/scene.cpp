@@ -1,0 +1,45 @@
+#include "unfurl/sim/scene.hpp"
+
+#include <algorithm>
+
+#include "unfurl/sim/elements/gravity.hpp"
+
+namespace unfurl {
+
+Vec3 Scene::gravity() const {
+  Vec3 g = Vec3::Zero();
+  for (const Gravity* e : elements_of<Gravity>()) g += e->g;
+  return g;
+}
+
+std::vector<LoadColumn> Scene::load_columns(std::vector<std::vector<int>>* of_element) const {
+  std::vector<LoadColumn> columns;
+  if (of_element) of_element->assign(elements.size(), {});
+  for (std::size_t k = 0; k < elements.size(); ++k) {
+    for (const LoadColumn& c : elements[k]->load_columns(model)) {
+      const auto same = std::find_if(columns.begin(), columns.end(), [&](const LoadColumn& o) { return o.name == c.name; });
+      if (of_element) (*of_element)[k].push_back(static_cast<int>(same - columns.begin()));
+      if (same == columns.end()) columns.push_back(c);
+    }
+  }
+  return columns;
+}
+
+std::vector<std::string> Scene::element_paths(std::size_t k) const {
+  const ForceElement& e = *elements[k];
+  const std::string list = e.list(), handle = e.handle(model);
+  // Its index among its list's elements, and whether another one there is
+  // called the same (a --set path names the first it finds).
+  std::size_t index = 0;
+  bool shared = handle.empty();
+  for (std::size_t j = 0; j < elements.size(); ++j) {
+    if (elements[j]->list() != list) continue;
+    if (j < k) ++index;
+    if (j != k && elements[j]->handle(model) == handle) shared = true;
+  }
+  std::vector<std::string> paths{list + "." + std::to_string(index)};
+  if (!shared) paths.push_back(list + "." + handle);
+  return paths;
+}
+
+}  // namespace unfurl
