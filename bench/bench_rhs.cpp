@@ -43,19 +43,19 @@ void BM_RhsZfold(benchmark::State& state) {
 BENCHMARK(BM_RhsZfold)->Unit(benchmark::kMicrosecond);
 
 void BM_RhsChain(benchmark::State& state) {
-  run_rhs(state, load_scene_text(generate_chain(static_cast<int>(state.range(0))), "chain"));
+  run_rhs(state, generate_chain(static_cast<int>(state.range(0))).scene);
 }
 BENCHMARK(BM_RhsChain)->Arg(10)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 
 void BM_RhsZfoldPanels(benchmark::State& state) {
-  run_rhs(state, load_scene_text(generate_zfold(static_cast<int>(state.range(0))), "zfold"));
+  run_rhs(state, generate_zfold(static_cast<int>(state.range(0))).scene);
 }
 BENCHMARK(BM_RhsZfoldPanels)->Arg(9)->Arg(99)->Arg(999)->Arg(9999)->Unit(benchmark::kMicrosecond);
 
 // Stages 3 .. 3333: 11 .. 10,001 bodies, 9 .. 9999 loop components (dense
 // gains up to 48 components, sparse beyond).
 void BM_RhsPantographStages(benchmark::State& state) {
-  run_rhs(state, load_scene_text(generate_pantograph(static_cast<int>(state.range(0))), "pantograph"));
+  run_rhs(state, generate_pantograph(static_cast<int>(state.range(0))).scene);
 }
 BENCHMARK(BM_RhsPantographStages)->Arg(3)->Arg(10)->Arg(33)->Arg(333)->Arg(3333)->Unit(benchmark::kMicrosecond);
 

@@ -38,7 +38,7 @@ BENCHMARK(BM_PantographRun)
 // sweep preconditioner (sparse gains): whole-run cost against size.
 void BM_LargePantographFirstSecond(benchmark::State& state) {
   const Scene scene =
-      load_scene_text(generate_pantograph(static_cast<int>(state.range(0))), "pantograph", {{"run.t_end", "1"}});
+      apply_overrides(generate_pantograph(static_cast<int>(state.range(0))), {{"run.t_end", "1"}}).scene;
   RunSettings settings = scene.run;
   settings.rtol = 1e-8;
   settings.atol = 1e-10;

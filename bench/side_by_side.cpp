@@ -126,11 +126,11 @@ std::vector<Case> cases(const std::vector<std::string>& names) {
       c.scene = load_builtin_scene("zfold");
       c.description = "built-in z-fold (a tree), against unfurl at rtol 1e-12";
     } else if (name == "pantograph10") {
-      c.scene = load_scene_text(generate_pantograph(10), "pantograph10", {});
+      c.scene = generate_pantograph(10).scene;
       c.description = "generated 10-stage pantograph, 20 s, against unfurl at rtol 1e-12";
     } else if (name == "pantograph30") {
       // Its 20 s take a minute a run at present: the first 2 s, before any latch.
-      c.scene = load_scene_text(generate_pantograph(30), "pantograph30", {{"run.t_end", "2"}});
+      c.scene = apply_overrides(generate_pantograph(30), {{"run.t_end", "2"}}).scene;
       c.description = "generated 30-stage pantograph, first 2 s, against unfurl at rtol 1e-12";
     } else {
       throw std::runtime_error("unknown scene '" + name + "'");

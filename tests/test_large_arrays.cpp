@@ -51,24 +51,24 @@ void expect_same_mechanism(const Scene& a, const Scene& b) {
 }
 
 TEST(Generator, ThreeStagePantographIsTheReferenceScene) {
-  expect_same_mechanism(load_scene_text(generate_pantograph(3), "generated"), test::scene_file("pantograph"));
+  expect_same_mechanism(generate_pantograph(3).scene, test::scene_file("pantograph"));
 }
 
 TEST(Generator, ThreePanelZfoldIsTheReferenceScene) {
-  expect_same_mechanism(load_scene_text(generate_zfold(3), "generated"), test::scene_file("zfold"));
+  expect_same_mechanism(generate_zfold(3).scene, test::scene_file("zfold"));
 }
 
 TEST(Generator, LargerScenesLoadAndClose) {
   // The loader checks the loops close at the initial state.
-  EXPECT_EQ(load_scene_text(generate_pantograph(8), "generated").loops.size(), 8u);
-  EXPECT_EQ(load_scene_text(generate_zfold(20), "generated").model.size(), 21);
-  EXPECT_EQ(load_scene_text(generate_chain(50), "generated").model.size(), 50);
+  EXPECT_EQ(generate_pantograph(8).scene.loops.size(), 8u);
+  EXPECT_EQ(generate_zfold(20).scene.model.size(), 21);
+  EXPECT_EQ(generate_chain(50).scene.model.size(), 50);
 }
 
 TEST(LargeArray, TwentyStagePantographStaysClosedWithSparseGainsAndKrylov) {
   // 62 bodies, 60 loop components: beyond the dense solvers, so the gains
   // come from the sparse closure solver and BDF's Newton systems from GMRES.
-  const Scene scene = load_scene_text(generate_pantograph(20), "pantograph_20", {{"run.t_end", "1"}});
+  const Scene scene = apply_overrides(generate_pantograph(20), {{"run.t_end", "1"}}).scene;
   const RunResult run = simulate(scene, scene.run);
   ASSERT_EQ(run.status, RunStatus::finished) << describe(run.failure);
   EXPECT_GT(run.stats.linear_iterations, 0);
@@ -81,7 +81,7 @@ TEST(LargeArray, TwentyStagePantographStaysClosedWithSparseGainsAndKrylov) {
 }
 
 TEST(ClosureSolver, SparseOnTenLoops) {
-  const Scene scene = load_scene_text(generate_pantograph(10), "pantograph_10");
+  const Scene scene = generate_pantograph(10).scene;
   VectorXd q(scene.model.nq);
   for (int k = 0; k < q.size(); ++k) q[k] = 0.5 * scene.q0[k];
   expect_closure_solve_matches_dense(scene, ClosureSolverKind::sparse, q, 1e-5);

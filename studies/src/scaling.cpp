@@ -18,14 +18,10 @@ std::string family_label(const ScalingScene& s) {
 Scene load_scaling_scene(const ScalingScene& s) {
   std::vector<Override> overrides;
   for (const auto& [path, value] : s.overrides) overrides.push_back({path, value});
-  std::string text;
-  if (s.family == "chain")
-    text = generate_chain(s.size);
-  else if (s.family == "zfold")
-    text = generate_zfold(s.size);
-  else
-    text = generate_pantograph(s.size);
-  return load_scene_text(text, "generated:" + s.family + ":" + std::to_string(s.size), overrides);
+  const SceneFile file = s.family == "chain"   ? generate_chain(s.size)
+                         : s.family == "zfold" ? generate_zfold(s.size)
+                                               : generate_pantograph(s.size);
+  return apply_overrides(file, overrides).scene;
 }
 
 RhsTiming time_right_hand_side(const ScalingScene& s, double seconds) {

@@ -1,78 +1,102 @@
 #include "unfurl/studies/scene_generators.hpp"
 
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
-#include "unfurl/sim/number_text.hpp"
+#include "unfurl/sim/elements/all.hpp"
+#include "unfurl/sim/scene_builder.hpp"
 
 namespace unfurl {
 
 namespace {
 
-std::string vec(double x, double y, double z) { return "[" + format_number(x) + ", " + format_number(y) + ", " + format_number(z) + "]"; }
-
 // The geometry and loads of SCENES.md, shared by the pantograph and z-fold.
 constexpr double kFrameHalf = 0.30, kPanelHalf = 0.60, kChainX = 0.45, kPitch = 0.03;
 constexpr double kFrameMass = 1.2, kPanelMass = 4.0;
-const double kFrameInertia[3] = {0.03606, 0.08106, 0.11700};
-const double kPanelInertia[3] = {0.4802, 0.2702, 0.7500};
+const Vec3 kFrameInertia(0.03606, 0.08106, 0.11700);
+const Vec3 kPanelInertia(0.4802, 0.2702, 0.7500);
 constexpr double kSpring = 0.10, kSpringDamping = 0.02, kLatch = 1000, kLatchDamping = 10;
 const double kOpen = M_PI / 2 - 0.01;  // a(0): 0.01 rad off the stowed stack
 
 // Pivot-line offset of panel k (1-based) of chain A; chain B mirrors it.
 double pivot_offset(int k) { return (k % 2 == 1 ? 1 : -1) * kPitch * k; }
 
-struct Writer {
-  std::ostringstream out;
+Body box(const std::string& name, double mass, const Vec3& inertia, double share) {
+  Body b;
+  b.name = name;
+  b.mass = mass * share;
+  b.inertia_com = (inertia * share).asDiagonal();
+  return b;
+}
 
-  void body(const std::string& name, const std::string& parent, double mass, const double inertia[3],
-            double share, const std::string& mesh, const std::string& joint, const std::string& parent_point,
-            const std::string& child_point) {
-    out << "  - name: " << name << "\n    parent: " << parent << "\n    mass: " << format_number(mass * share)
-        << "\n    inertia: " << vec(inertia[0] * share, inertia[1] * share, inertia[2] * share) << "\n";
-    if (!mesh.empty()) out << "    mesh: " << mesh << "\n";
-    out << "    joint: {name: " << joint << ", type: revolute, axis: [1, 0, 0], parent_point: " << parent_point
-        << ", child_point: " << child_point << "}\n";
-  }
-};
+Visual mesh(const std::string& name) {
+  Visual v;
+  v.mesh = name;
+  return v;
+}
 
-const char* kPanelMesh = "panel";
-const char* kFrameMesh = "yoke";
-const char* kBus = "base:\n  name: bus\n  mesh: {name: bus, scale: [1.6, 1.2, 1.2]}\n\n";
+void bus(SceneBuilder& b) {
+  Visual v = mesh("bus");
+  v.scale = Vec3(1.6, 1.2, 1.2);
+  b.fixed_base("bus", Vec6::Zero(), v);
+}
+
+std::string joint_name(int j) { return "j" + std::to_string(j); }
 
 // One chain of a frame and `panels` panels at x; joints named j<first>...
 // mirror = +1 for chain A, -1 for chain B; share: the mass share of panels.
-void chain(Writer& w, const std::string& label, double x, double mirror, int panels, int first_joint,
+void chain(SceneBuilder& b, const std::string& label, double x, double mirror, int panels, int first_joint,
            double panel_share) {
   const std::string frame = "frame_" + label;
-  w.body(frame, "bus", kFrameMass, kFrameInertia, 1.0, kFrameMesh, "j" + std::to_string(first_joint),
-         vec(x, 0.75, 0), vec(0, -kFrameHalf, 0));
+  b.body(box(frame, kFrameMass, kFrameInertia, 1.0), "bus",
+         joints::revolute(joint_name(first_joint), Vec3::UnitX(), Vec3(x, 0.75, 0), Vec3(0, -kFrameHalf, 0)),
+         mesh("yoke"));
   std::string parent = frame;
   double parent_half = kFrameHalf, parent_p = 0;
   for (int k = 1; k <= panels; ++k) {
     const double p = mirror * pivot_offset(k);
     const std::string name = "panel_" + label + std::to_string(k);
-    w.body(name, parent, kPanelMass, kPanelInertia, panel_share, kPanelMesh, "j" + std::to_string(first_joint + k),
-           vec(0, parent_half, parent_p), vec(0, -kPanelHalf, p));
+    b.body(box(name, kPanelMass, kPanelInertia, panel_share), parent,
+           joints::revolute(joint_name(first_joint + k), Vec3::UnitX(), Vec3(0, parent_half, parent_p),
+                            Vec3(0, -kPanelHalf, p)),
+           mesh("panel"));
     parent = name;
     parent_half = kPanelHalf;
     parent_p = p;
   }
 }
 
-// Springs and latches of joints j<first>..j<first + count - 1>, starting at
-// q(0) = sign * (a, -2a, 2a, ...) pattern given by `signs`.
-void chain_forces(std::ostringstream& springs, std::ostringstream& latches, int first, int count,
-                  double first_sign) {
+// Springs and latches of joints j<first>..j<first + count - 1>, the first
+// starting on the side first_sign, the rest alternating: each spring's free
+// angle is pi/2 past the deployed angle 0, where its latch catches it.
+void chain_forces(SceneBuilder& b, int first, int count, double first_sign) {
   for (int j = 0; j < count; ++j) {
     const double s = j == 0 ? first_sign : (j % 2 == 1 ? -first_sign : first_sign);
-    springs << "  - {joint: j" << first + j << ", stiffness: " << format_number(kSpring) << ", free_position: " << format_number(-s * M_PI / 2)
-            << ", damping: " << format_number(kSpringDamping) << "}\n";
-    latches << "  - {joint: j" << first + j << ", position: 0, stiffness: " << format_number(kLatch)
-            << ", damping: " << format_number(kLatchDamping) << "}\n";
+    auto spring = std::make_shared<JointSpring>(b.joint_index(joint_name(first + j), "springs"));
+    spring->stiffness = kSpring;
+    spring->free_position = -s * M_PI / 2;
+    spring->damping = kSpringDamping;
+    b.element(spring);
   }
+}
+
+void chain_latches(SceneBuilder& b, int first, int count) {
+  for (int j = 0; j < count; ++j) {
+    auto latch = std::make_shared<Latch>(b.joint_index(joint_name(first + j), "latches"));
+    latch->stiffness = kLatch;
+    latch->damping = kLatchDamping;
+    b.element(latch);
+  }
+}
+
+RunSettings run(double t_end, double rtol, double atol) {
+  RunSettings r;
+  r.t_end = t_end;
+  r.rtol = rtol;
+  r.atol = atol;
+  r.sample = 0.01;
+  return r;
 }
 
 void check_count(int n, const char* what) {
@@ -81,30 +105,29 @@ void check_count(int n, const char* what) {
 
 }  // namespace
 
-std::string generate_pantograph(int stages) {
+SceneFile generate_pantograph(int stages) {
   check_count(stages, "the number of stages");
   const int N = stages;
-  Writer w;
-  w.out << "# Generated by `unfurl generate pantograph --stages " << N << "`: the pantograph of\n"
-        << "# SCENES.md with " << N << " panel pairs. Chains A and B (a frame and " << N << " panels each)\n"
-        << "# are cross-linked at the panel centres; the loops are opened by splitting\n"
-        << "# chain A's panels, whose images hang on chain B. Bodies in regular numbering:\n"
-        << "# frame_A, panels A1..A" << N << ", frame_B, panels B1..B" << N << ", images A1..A" << N << ".\n"
-        << "name: pantograph_" << N << "\n"
-        << "description: The pantograph solar array with " << N << " panel pairs (" << N << " loops).\n\n"
-        << kBus << "bodies:\n";
-  chain(w, "A", -kChainX, 1, N, 1, 0.5);
-  chain(w, "B", kChainX, -1, N, N + 2, 1.0);
+  SceneBuilder b("pantograph_" + std::to_string(N),
+                 "The pantograph solar array with " + std::to_string(N) + " panel pairs (" + std::to_string(N) +
+                     " loops).");
+  b.source("generated");
+  bus(b);
+  chain(b, "A", -kChainX, 1, N, 1, 0.5);
+  chain(b, "B", kChainX, -1, N, N + 2, 1.0);
   for (int k = 1; k <= N; ++k) {
     const double p_child = pivot_offset(k), p_parent = -p_child;
-    w.body("image_A" + std::to_string(k), "panel_B" + std::to_string(k), kPanelMass, kPanelInertia, 0.5, "",
-           "j" + std::to_string(2 * N + 2 + k), vec(-kChainX, 0, p_parent), vec(kChainX, 0, p_child));
+    b.body(box("image_A" + std::to_string(k), kPanelMass, kPanelInertia, 0.5), "panel_B" + std::to_string(k),
+           joints::revolute(joint_name(2 * N + 2 + k), Vec3::UnitX(), Vec3(-kChainX, 0, p_parent),
+                            Vec3(kChainX, 0, p_child)));
   }
-  std::ostringstream springs, latches, loops, q;
-  chain_forces(springs, latches, 1, N + 1, -1);
-  chain_forces(springs, latches, N + 2, N + 1, 1);
+  chain_forces(b, 1, N + 1, -1);
+  chain_forces(b, N + 2, N + 1, 1);
+  chain_latches(b, 1, N + 1);
+  chain_latches(b, N + 2, N + 1);
   for (int k = 1; k <= N; ++k)
-    loops << "  - {name: A" << k << ", body: panel_A" << k << ", image: image_A" << k << "}\n";
+    b.loop("A" + std::to_string(k), "panel_A" + std::to_string(k), "image_A" + std::to_string(k));
+  b.regulator(RegulatorSettings{});
   // On the lazy-tongs path: chain A (-a, 2a, -2a, ...), chain B its
   // negative, images (2a, -2a, ...).
   auto angle = [&](int j) {  // joint j (1-based) at a = kOpen
@@ -114,67 +137,52 @@ std::string generate_pantograph(int stages) {
     if (j <= 2 * N + 2) return ((j - N - 1) % 2 == 0 ? -2 : 2) * kOpen;
     return ((j - 2 * N - 2) % 2 == 1 ? 2 : -2) * kOpen;
   };
-  q << "  q: {";
-  for (int j = 1; j <= 3 * N + 2; ++j) q << (j > 1 ? ", " : "") << "j" << j << ": " << format_number(angle(j));
-  q << "}\n";
-  w.out << "\nsprings:\n"
-        << springs.str() << "\nlatches:\n"
-        << latches.str() << "\nloops:\n"
-        << loops.str() << "\nregulator: {gains: full, v_max: 2000, p0: 1.0, p1: 0.5}\n\ninitial:\n"
-        << q.str() << "\nrun: {t_end: 20, integrator: cvode-bdf, rtol: 1.0e-10, atol: 1.0e-12, sample: 0.01}\n";
-  return w.out.str();
+  for (int j = 1; j <= 3 * N + 2; ++j) b.initial_position(joint_name(j), {angle(j)});
+  b.run(run(20, 1e-10, 1e-12));
+  return b.build();
 }
 
-std::string generate_zfold(int panels) {
+SceneFile generate_zfold(int panels) {
   check_count(panels, "the number of panels");
   const int N = panels;
-  Writer w;
-  w.out << "# Generated by `unfurl generate zfold --panels " << N << "`: chain A of the pantograph\n"
-        << "# with " << N << " panels (full masses), a tree with no loops.\n"
-        << "name: zfold_" << N << "\n"
-        << "description: A Z-folded wing of a frame and " << N << " panels.\n\n"
-        << kBus << "bodies:\n";
-  chain(w, "A", -kChainX, 1, N, 1, 1.0);
-  std::ostringstream springs, latches, q;
-  chain_forces(springs, latches, 1, N + 1, -1);
-  q << "  q: {j1: " << format_number(-M_PI / 2);
-  for (int j = 2; j <= N + 1; ++j) q << ", j" << j << ": " << format_number((j % 2 == 0 ? 1 : -1) * M_PI);
-  q << "}\n";
-  w.out << "\nsprings:\n"
-        << springs.str() << "\nlatches:\n"
-        << latches.str() << "\ninitial:\n"
-        << q.str() << "\nrun: {t_end: 20, integrator: cvode-bdf, rtol: 1.0e-8, atol: 1.0e-10, sample: 0.01}\n";
-  return w.out.str();
+  SceneBuilder b("zfold_" + std::to_string(N), "A Z-folded wing of a frame and " + std::to_string(N) + " panels.");
+  b.source("generated");
+  bus(b);
+  chain(b, "A", -kChainX, 1, N, 1, 1.0);
+  chain_forces(b, 1, N + 1, -1);
+  chain_latches(b, 1, N + 1);
+  b.initial_position("j1", {-M_PI / 2});
+  for (int j = 2; j <= N + 1; ++j) b.initial_position(joint_name(j), {(j % 2 == 0 ? 1 : -1) * M_PI});
+  b.run(run(20, 1e-8, 1e-10));
+  return b.build();
 }
 
-std::string generate_chain(int links) {
+SceneFile generate_chain(int links) {
   check_count(links, "the number of links");
   const int N = links;
   const double length = 1.0 / N, mass = 1.0 / N;
   const double I = mass * length * length / 12;
-  Writer w;
-  w.out << "# Generated by `unfurl generate chain --links " << N << "`: " << N << " uniform links\n"
-        << "# (a 1 m, 1 kg chain in all) hinged end to end about x, hanging under\n"
-        << "# gravity with light joint damping, released from a bent shape.\n"
-        << "name: chain_" << N << "\n"
-        << "description: A hanging chain of " << N << " links.\n\n"
-        << "base:\n  name: ground\n\ngravity: [0, 0, -9.81]\n\nbodies:\n";
+  SceneBuilder b("chain_" + std::to_string(N), "A hanging chain of " + std::to_string(N) + " links.");
+  b.source("generated");
+  b.fixed_base("ground").gravity(Vec3(0, 0, -9.81));
   // A thin rod: about its own axis a thousandth of I (the radius a
   // hundredth of the length), which keeps the principal moments a rigid
   // body can have at any N (a floor of 1e-12 did not, from 10,000 links).
-  const double inertia[3] = {I, I, 1e-3 * I};
-  std::ostringstream dampers, q;
+  const Vec3 inertia(I, I, 1e-3 * I);
   for (int i = 1; i <= N; ++i) {
     const std::string parent = i == 1 ? "ground" : "link" + std::to_string(i - 1);
-    w.body("link" + std::to_string(i), parent, mass, inertia, 1.0, "", "j" + std::to_string(i),
-           i == 1 ? vec(0, 0, 0) : vec(0, 0, -length / 2), vec(0, 0, length / 2));
-    dampers << "  - {joint: j" << i << ", damping: " << format_number(1e-4 * mass) << "}\n";
-    q << (i > 1 ? ", " : "") << "j" << i << ": " << format_number(i == 1 ? 1.0 : 0.5 / N);
+    b.body(box("link" + std::to_string(i), mass, inertia, 1.0), parent,
+           joints::revolute(joint_name(i), Vec3::UnitX(), i == 1 ? Vec3::Zero() : Vec3(0, 0, -length / 2),
+                            Vec3(0, 0, length / 2)));
   }
-  w.out << "\ndampers:\n"
-        << dampers.str() << "\ninitial:\n  q: {" << q.str()
-        << "}\n\nrun: {t_end: 5, integrator: cvode-bdf, rtol: 1.0e-8, atol: 1.0e-10, sample: 0.01}\n";
-  return w.out.str();
+  for (int i = 1; i <= N; ++i) {
+    auto damper = std::make_shared<JointDamper>(b.joint_index(joint_name(i), "dampers"));
+    damper->damping = 1e-4 * mass;
+    b.element(damper);
+  }
+  for (int i = 1; i <= N; ++i) b.initial_position(joint_name(i), {i == 1 ? 1.0 : 0.5 / N});
+  b.run(run(5, 1e-8, 1e-10));
+  return b.build();
 }
 
 }  // namespace unfurl

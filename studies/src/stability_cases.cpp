@@ -146,8 +146,7 @@ Scene stability_scene(const StabilityCase& c) {
   if (colon == std::string::npos) return load_builtin_scene(c.scene, c.overrides);
   const std::string kind = c.scene.substr(0, colon);
   const int n = std::stoi(c.scene.substr(colon + 1));
-  const std::string text = kind == "pantograph" ? generate_pantograph(n) : generate_zfold(n);
-  return load_scene_text(text, "generated:" + c.scene, c.overrides);
+  return apply_overrides(kind == "pantograph" ? generate_pantograph(n) : generate_zfold(n), c.overrides).scene;
 }
 
 std::string reproduce_command(const StabilityCase& c) {

@@ -1,5 +1,8 @@
 #include "unfurl/sim/elements/applied_force.hpp"
 
+#include "unfurl/sim/scene.hpp"
+#include "unfurl/sim/scene_validation.hpp"
+
 namespace unfurl {
 
 Vec6 wrench_at_origin(const Vec3& force, const Vec3& torque, const Vec3& point) {
@@ -28,6 +31,12 @@ std::vector<ElementParameter> AppliedForce::parameters() const {
     p.push_back({"torque." + std::to_string(a), std::string("torque ") + axes[a] + " [N m]", torque[a], 0.01, 0, 0,
                  "the applied torque, in the body's frame (or the base's)"});
   return p;
+}
+
+void AppliedForce::validate(const Scene& scene, const std::string& field) const {
+  if (body < 0 || body >= scene.model.size()) throw SceneInvalid(field + ".body", "the base cannot carry this");
+  if (in_base_frame && scene.model.base_rotates())
+    throw SceneInvalid(field + ".frame", "base-frame loads need a base that does not rotate");
 }
 
 }  // namespace unfurl

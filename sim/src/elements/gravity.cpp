@@ -2,6 +2,9 @@
 
 #include "unfurl/sim/elements/applied_force.hpp"
 
+#include "unfurl/sim/scene.hpp"
+#include "unfurl/sim/scene_validation.hpp"
+
 namespace unfurl {
 
 void Gravity::add_forces(const ElementState& s, ElementForces& out) const {
@@ -18,6 +21,10 @@ double Gravity::potential_energy(const ElementState& s) const {
     V -= b.mass * g.dot(s.poses[i].to_base(b.com));
   }
   return V;
+}
+
+void Gravity::validate(const Scene& scene, const std::string&) const {
+  if (!g.isZero(0) && scene.model.base_rotates()) throw SceneInvalid("gravity", "gravity needs a base that does not rotate");
 }
 
 }  // namespace unfurl

@@ -1,5 +1,8 @@
 #include "unfurl/sim/elements/joint_damper.hpp"
 
+#include "unfurl/sim/scene.hpp"
+#include "unfurl/sim/scene_validation.hpp"
+
 namespace unfurl {
 
 void JointDamper::add_forces(const ElementState& s, ElementForces& out) const {
@@ -23,6 +26,11 @@ void JointDamper::load_values(const ElementState& s, double* values) const {
 
 std::vector<ElementParameter> JointDamper::parameters() const {
   return {{"damping", "damping [N m s/rad]", damping, 0.001, 0, 1e9, "viscous damping c of the hinge"}};
+}
+
+void JointDamper::validate(const Scene& scene, const std::string& field) const {
+  JointElement::validate(scene, field);
+  check_non_negative(damping, field + ".damping");
 }
 
 }  // namespace unfurl

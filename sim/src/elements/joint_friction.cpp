@@ -1,5 +1,8 @@
 #include "unfurl/sim/elements/joint_friction.hpp"
 
+#include "unfurl/sim/scene.hpp"
+#include "unfurl/sim/scene_validation.hpp"
+
 namespace unfurl {
 
 void JointFriction::add_forces(const ElementState& s, ElementForces& out) const {
@@ -27,6 +30,15 @@ std::vector<ElementParameter> JointFriction::parameters() const {
           {"viscous", "viscous [N m s/rad]", viscous, 0.001, 0, 1e9, "viscous friction coefficient c_v"},
           {"velocity_scale", "velocity scale [rad/s]", velocity_scale, 1e-4, 1e-9, 1e3,
            "v_s: the Coulomb torque ramps through zero speed over about this rate"}};
+}
+
+void JointFriction::validate(const Scene& scene, const std::string& field) const {
+  JointElement::validate(scene, field);
+  check_non_negative(coulomb, field + ".coulomb");
+  check_non_negative(viscous, field + ".viscous");
+  check_positive(velocity_scale, field + ".velocity_scale");
+  if (velocity_scale < 1e-9)
+    throw SceneInvalid(field + ".velocity_scale", "below 1e-9 rad/s the smoothed friction is a step no integrator can follow");
 }
 
 }  // namespace unfurl

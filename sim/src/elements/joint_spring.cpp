@@ -2,6 +2,9 @@
 
 #include <algorithm>
 
+#include "unfurl/sim/scene.hpp"
+#include "unfurl/sim/scene_validation.hpp"
+
 namespace unfurl {
 
 void JointSpring::add_forces(const ElementState& s, ElementForces& out) const {
@@ -46,6 +49,12 @@ std::vector<ElementParameter> JointSpring::parameters() const {
   }
   p.push_back({"damping", "damping [N m s/rad]", damping, 0.001, 0, 1e9, "viscous damping c of the hinge"});
   return p;
+}
+
+void JointSpring::validate(const Scene& scene, const std::string& field) const {
+  JointElement::validate(scene, field);
+  if (!curve) check_non_negative(stiffness, field + ".stiffness");
+  check_non_negative(damping, field + ".damping");
 }
 
 }  // namespace unfurl

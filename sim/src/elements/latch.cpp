@@ -2,6 +2,9 @@
 
 #include <cstdio>
 
+#include "unfurl/sim/scene.hpp"
+#include "unfurl/sim/scene_validation.hpp"
+
 namespace unfurl {
 
 void Latch::add_forces(const ElementState& s, ElementForces& out) const {
@@ -62,6 +65,17 @@ int LatchState::engaged_count() const {
   int n = 0;
   for (char e : engaged_) n += e;
   return n;
+}
+
+void Latch::validate(const Scene& scene, const std::string& field) const {
+  JointElement::validate(scene, field);
+  check_positive(stiffness, field + ".stiffness");
+  check_non_negative(damping, field + ".damping");
+  check_non_negative(free_play, field + ".free_play");
+  for (const Latch* other : scene.latches()) {
+    if (other == this) break;
+    if (other->joint == joint) throw SceneInvalid(field + ".joint", "this joint already has a latch");
+  }
 }
 
 }  // namespace unfurl

@@ -1,5 +1,8 @@
 #include "unfurl/sim/elements/point_spring.hpp"
 
+#include "unfurl/sim/scene.hpp"
+#include "unfurl/sim/scene_validation.hpp"
+
 namespace unfurl {
 
 namespace {
@@ -68,6 +71,27 @@ std::vector<ElementParameter> PointSpring::parameters() const {
           {"rest_length", "rest length [m]", rest_length, 0.001, 0, 1e6,
            "the length at which it pulls nothing (a cable is slack below it)"},
           {"damping", "damping [N s/m]", damping, 0.01, 0, 1e12, "damping c along the line"}};
+}
+
+void PointSpring::validate(const Scene& scene, const std::string& field) const {
+  if (named && !is_valid_name(name))
+    throw SceneInvalid(field + ".name", "the name '" + name +
+                                            "' has characters other than letters, digits, '_' and '-' (or is empty or over 64)");
+  for (const PointSpring* other : scene.elements_of<PointSpring>()) {
+    if (other == this) break;
+    if (other->name == name) throw SceneInvalid(field + ".name", "a point spring named '" + name + "' already exists");
+  }
+  for (const int body : {body_a, body_b})
+    if (body < kBase || body >= scene.model.size()) throw SceneInvalid(field, "no such body");
+  if (body_a == body_b) throw SceneInvalid(field + ".body_b", "both ends are on one body: it would pull on itself");
+  check_non_negative(stiffness, field + ".stiffness");
+  check_non_negative(rest_length, field + ".rest_length");
+  check_non_negative(damping, field + ".damping");
+  std::vector<Pose> poses;
+  body_poses(scene.model, scene.q0.data(), poses);
+  const auto at = [&](int body, const Vec3& r) { return body == kBase ? r : poses[body].to_base(r); };
+  if ((at(body_b, point_b) - at(body_a, point_a)).norm() < 1e-9)
+    throw SceneInvalid(field, "its two points coincide at the initial state: the line of the force has no direction");
 }
 
 }  // namespace unfurl

@@ -20,6 +20,8 @@
 
 namespace unfurl {
 
+struct Scene;
+
 // Where an element's stored energy is counted (EnergyParts).
 enum class EnergyStore { springs, latches, gravity };
 
@@ -99,6 +101,10 @@ class ForceElement {
   // Its load columns, and their values at a state (one per column).
   virtual std::vector<LoadColumn> load_columns(const Model&) const { return {}; }
   virtual void load_values(const ElementState&, double* /*values*/) const {}
+
+  // Throws SceneInvalid (scene_validation.hpp) at `field` + ".key" when a
+  // value breaks the element's rules in the scene.
+  virtual void validate(const Scene& /*scene*/, const std::string& /*field*/) const {}
 
   virtual std::vector<ElementParameter> parameters() const { return {}; }
   // A line about it beyond its parameters (a measured curve's size), or "".

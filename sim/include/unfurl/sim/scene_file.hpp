@@ -46,6 +46,14 @@ SceneFile read_scene_file(const std::string& path, const std::vector<Override>& 
 SceneFile read_scene_text(const std::string& text, const std::string& source,
                           const std::vector<Override>& overrides = {});
 
+// A scene as a scene file that reads back to the same scene (and run),
+// headed by `comment` (its lines become # lines).
+std::string write_scene_text(const SceneFile& file, const std::string& comment = "");
+
+// A scene with --set overrides applied (through its file text: the paths
+// are the file's). Throws input::InputError as reading would.
+SceneFile apply_overrides(const SceneFile& file, const std::vector<Override>& overrides);
+
 // The Scene alone.
 Scene load_scene_file(const std::string& path, const std::vector<Override>& overrides = {});
 Scene load_scene_text(const std::string& text, const std::string& source,

@@ -20,6 +20,8 @@ class Gravity : public ForceElement {
   // -sum m_i g . r_c,i
   double potential_energy(const ElementState& s) const override;
   EnergyStore energy_store() const override { return EnergyStore::gravity; }
+  // A base that does not rotate (g is given in its frame).
+  void validate(const Scene& scene, const std::string& field) const override;
 };
 
 }  // namespace unfurl

@@ -14,6 +14,8 @@ class JointElement : public ForceElement {
   explicit JointElement(int joint) : joint(joint) {}
 
   std::string handle(const Model& model) const override { return model.joints[joint].name; }
+  // Its joint is a revolute or prismatic joint of the scene.
+  void validate(const Scene& scene, const std::string& field) const override;
 
   int joint = 0;
 

@@ -37,6 +37,7 @@ class JointSpring : public JointElement {
   // tau_spring (the elastic torque), and tau_damper where it damps.
   std::vector<LoadColumn> load_columns(const Model& model) const override;
   void load_values(const ElementState& s, double* values) const override;
+  void validate(const Scene& scene, const std::string& field) const override;
   std::vector<ElementParameter> parameters() const override;
   std::string note() const override;
 };

@@ -53,6 +53,9 @@ class PointSpring : public ForceElement {
   bool dissipative() const override { return damping > 0; }
   std::vector<LoadColumn> load_columns(const Model& model) const override;  // tension
   void load_values(const ElementState& s, double* values) const override;
+  // A valid name of its own, two distinct bodies, non-negative values, and
+  // two points apart at the initial state (the force needs a direction).
+  void validate(const Scene& scene, const std::string& field) const override;
   std::vector<ElementParameter> parameters() const override;
   std::vector<ElementLink> links() const override {
     return {{body_a, body_b, point_a, point_b, tension_only ? ElementLink::Style::cable : ElementLink::Style::spring}};

@@ -1,0 +1,197 @@
+#include "unfurl/sim/scene_builder.hpp"
+
+#include "unfurl/sim/elements/gravity.hpp"
+#include "unfurl/sim/scene_validation.hpp"
+
+namespace unfurl {
+
+namespace {
+
+// The inertial frame's name when the bus is body 0 on a free joint (the
+// bodies still name the bus as their parent).
+constexpr const char* kInertialFrame = "inertial";
+
+std::string body_list_field(const Scene& scene) {
+  const bool bus = !scene.model.joints.empty() && scene.model.joints[0].type == JointType::free;
+  return "bodies[" + std::to_string(scene.model.size() - (bus ? 1 : 0)) + "]";
+}
+
+}  // namespace
+
+SceneBuilder::SceneBuilder(std::string name, std::string description) {
+  scene_.name = std::move(name);
+  scene_.description = std::move(description);
+  scene_.source = "code";
+}
+
+SceneBuilder& SceneBuilder::source(std::string source) {
+  scene_.source = std::move(source);
+  return *this;
+}
+
+SceneBuilder& SceneBuilder::fixed_base(std::string name, const Vec6& velocity, Visual visual) {
+  scene_.model.base_name = std::move(name);
+  scene_.model.base_velocity = velocity;
+  visuals_.base = std::move(visual);
+  return *this;
+}
+
+SceneBuilder& SceneBuilder::free_base(const Body& bus, Visual visual) {
+  if (!scene_.model.bodies.empty()) throw SceneInvalid("base", "the free base comes before every body");
+  Joint joint;
+  joint.name = bus.name;
+  joint.type = JointType::free;
+  scene_.model.base_name = kInertialFrame;
+  scene_.model.bodies.push_back(bus);
+  scene_.model.joints.push_back(joint);
+  scene_.model.parent.push_back(kBase);
+  visuals_.bodies.push_back(std::move(visual));
+  return *this;
+}
+
+bool SceneBuilder::has_body(const std::string& name) const {
+  return name == scene_.model.base_name || scene_.model.find_body(name) >= 0;
+}
+
+int SceneBuilder::body_index(const std::string& name, const std::string& field) const {
+  if (name == scene_.model.base_name) return kBase;
+  const int i = scene_.model.find_body(name);
+  if (i < 0) throw SceneInvalid(field, "unknown body '" + name + "'");
+  return i;
+}
+
+int SceneBuilder::joint_index(const std::string& name, const std::string& field) const {
+  for (int j = 0; j < scene_.model.size(); ++j)
+    if (scene_.model.joints[j].name == name) return j;
+  throw SceneInvalid(field, "unknown joint '" + name + "'");
+}
+
+SceneBuilder& SceneBuilder::body(const Body& body, const std::string& parent, Joint joint, Visual visual) {
+  const std::string field = body_list_field(scene_);
+  if (has_body(body.name)) throw SceneInvalid(field + " (" + body.name + ")", "a body named '" + body.name + "' already exists");
+  if (!has_body(parent)) throw SceneInvalid(field + " (" + body.name + ").parent", "unknown parent '" + parent + "'");
+  if (joint.name.empty()) joint.name = body.name;
+  for (const Joint& other : scene_.model.joints)
+    if (other.name == joint.name)
+      throw SceneInvalid(field + " (" + body.name + ").joint", "a joint named '" + joint.name + "' already exists");
+  scene_.model.parent.push_back(body_index(parent, field + ".parent"));
+  scene_.model.bodies.push_back(body);
+  scene_.model.joints.push_back(std::move(joint));
+  visuals_.bodies.push_back(std::move(visual));
+  return *this;
+}
+
+SceneBuilder& SceneBuilder::element(std::shared_ptr<const ForceElement> element) {
+  scene_.elements.push_back(std::move(element));
+  return *this;
+}
+
+SceneBuilder& SceneBuilder::gravity(const Vec3& g) {
+  gravity_ = g;
+  return *this;
+}
+
+SceneBuilder& SceneBuilder::loop(std::string name, const std::string& body, const std::string& image) {
+  const std::string field = "loops[" + std::to_string(scene_.loops.size()) + "]";
+  Loop loop;
+  loop.name = name.empty() ? body : std::move(name);
+  loop.body = body_index(body, field + ".body");
+  loop.image = body_index(image, field + ".image");
+  if (loop.body == kBase || loop.image == kBase) throw SceneInvalid(field, "the base cannot close a loop");
+  scene_.loops.push_back(loop);
+  return *this;
+}
+
+SceneBuilder& SceneBuilder::regulator(const RegulatorSettings& settings) {
+  scene_.regulator = settings;
+  return *this;
+}
+
+SceneBuilder& SceneBuilder::closure_tolerance(double tolerance) {
+  scene_.closure_tolerance = tolerance;
+  return *this;
+}
+
+SceneBuilder& SceneBuilder::run(const RunSettings& settings) {
+  scene_.run = settings;
+  return *this;
+}
+
+void SceneBuilder::set_initial(const std::string& joint, std::vector<double> values, int which) {
+  initial_.push_back({joint, std::move(values), which});
+}
+
+SceneBuilder& SceneBuilder::initial_position(const std::string& joint, std::vector<double> q) {
+  set_initial(joint, std::move(q), 0);
+  return *this;
+}
+
+SceneBuilder& SceneBuilder::initial_rate(const std::string& joint, std::vector<double> w) {
+  set_initial(joint, std::move(w), 1);
+  return *this;
+}
+
+SceneBuilder& SceneBuilder::initial_momentum(const std::string& joint, std::vector<double> p) {
+  set_initial(joint, std::move(p), 2);
+  return *this;
+}
+
+SceneFile SceneBuilder::build() {
+  Scene scene = scene_;
+  // Gravity acts after the elements given (the order their forces add in).
+  if (!gravity_.isZero(0)) scene.elements.push_back(std::make_shared<Gravity>(gravity_));
+  // The coordinates' places are known once the tree is.
+  validate_model(scene);
+  const Model& model = scene.model;
+  bool rates = false, momenta = false;
+  for (const Initial& x : initial_) {
+    static const char* const key[] = {"q", "dq", "p"};
+    const std::string field = std::string("initial.") + key[x.which] + "." + x.joint;
+    const int j = joint_index(x.joint, field);
+    const Joint& joint = model.joints[j];
+    if (joint.dof() == 0) throw SceneInvalid(field, "joint '" + joint.name + "' is fixed: it has no coordinate");
+    const int n = x.which == 0 ? joint.positions() : joint.dof();
+    if (static_cast<int>(x.values.size()) != n) {
+      // "(qw, qx, qy, qz)": what the entries are.
+      std::string names;
+      const int from = x.which == 0 ? model.first_position[j].value : model.first_velocity[j].value;
+      for (int k = 0; k < n; ++k) {
+        const std::string full = x.which == 0 ? model.position_name(from + k) : model.velocity_name(from + k);
+        names += (k ? ", " : "") + full.substr(full.rfind('.') + 1);
+      }
+      throw SceneInvalid(field, "a " + std::string(joint_type_name(joint.type)) + " joint takes " + std::to_string(n) +
+                                    " numbers here (" + names + ")");
+    }
+    rates = rates || x.which == 1;
+    momenta = momenta || x.which == 2;
+    if (rates && momenta) throw SceneInvalid("initial.p", "give either dq or p, not both");
+    std::vector<double>& target = x.which == 0 ? scene.q0 : x.which == 1 ? scene.dq0 : scene.p0;
+    if (target.empty()) target.assign(model.nv, 0.0);  // p0 (validate() sized q0 and dq0)
+    const int at = x.which == 0 ? model.first_position[j].value : model.first_velocity[j].value;
+    std::copy(x.values.begin(), x.values.end(), target.begin() + at);
+  }
+  validate(scene);
+  return {scene, visuals_};
+}
+
+namespace joints {
+
+Joint revolute(std::string name, const Vec3& axis, const Vec3& parent_point, const Vec3& child_point) {
+  Joint j;
+  j.name = std::move(name);
+  j.type = JointType::revolute;
+  j.axis = axis;
+  j.parent_point = parent_point;
+  j.child_point = child_point;
+  return j;
+}
+
+Joint prismatic(std::string name, const Vec3& axis, const Vec3& parent_point, const Vec3& child_point) {
+  Joint j = revolute(std::move(name), axis, parent_point, child_point);
+  j.type = JointType::prismatic;
+  return j;
+}
+
+}  // namespace joints
+
+}  // namespace unfurl

@@ -1,0 +1,212 @@
+// A scene as a scene file (assets/scenes/README.md), the reader's inverse:
+// every number in its shortest form that reads back to the same double, so
+// the file reloads to the same run.
+#include <sstream>
+
+#include "unfurl/sim/elements/all.hpp"
+#include "unfurl/sim/number_text.hpp"
+#include "unfurl/sim/scene_file.hpp"
+
+namespace unfurl {
+
+namespace {
+
+std::string vec(const Vec3& x) {
+  return "[" + format_number(x[0]) + ", " + format_number(x[1]) + ", " + format_number(x[2]) + "]";
+}
+
+std::string numbers(const std::vector<double>& x) {
+  std::string out = "[";
+  for (std::size_t k = 0; k < x.size(); ++k) out += (k ? ", " : "") + format_number(x[k]);
+  return out + "]";
+}
+
+// A double-quoted YAML scalar.
+std::string quoted(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (c == '\n') {
+      out += "\\n";
+      continue;
+    }
+    out += c;
+  }
+  return out + "\"";
+}
+
+std::string visual(const Visual& v) {
+  const bool plain = v.scale == Vec3::Ones() && v.rotation_deg == 0 && v.offset.isZero(0);
+  if (plain) return v.mesh;
+  std::string out = "{name: " + v.mesh;
+  if (v.scale != Vec3::Ones()) out += ", scale: " + vec(v.scale);
+  if (v.rotation_deg != 0)
+    out += ", rotation: [" + format_number(v.rotation_axis[0]) + ", " + format_number(v.rotation_axis[1]) + ", " +
+           format_number(v.rotation_axis[2]) + ", " + format_number(v.rotation_deg) + "]";
+  if (!v.offset.isZero(0)) out += ", offset: " + vec(v.offset);
+  return out + "}";
+}
+
+void mass_properties(std::ostream& out, const Body& b, const std::string& pad) {
+  out << pad << "mass: " << format_number(b.mass) << "\n";
+  if (!b.com.isZero(0)) out << pad << "com: " << vec(b.com) << "\n";
+  const Mat3& I = b.inertia_com;
+  std::vector<double> inertia{I(0, 0), I(1, 1), I(2, 2)};
+  if (I(0, 1) != 0 || I(0, 2) != 0 || I(1, 2) != 0) inertia.insert(inertia.end(), {I(0, 1), I(0, 2), I(1, 2)});
+  out << pad << "inertia: " << numbers(inertia) << "\n";
+}
+
+std::string joint_text(const Joint& j) {
+  std::string out = "{name: " + j.name + ", type: " + joint_type_name(j.type);
+  const bool axial = j.type == JointType::revolute || j.type == JointType::prismatic || j.type == JointType::planar ||
+                     j.type == JointType::universal;
+  if (axial) out += ", axis: " + vec(j.axis);
+  if (j.type == JointType::universal) out += ", axis2: " + vec(j.axis2);
+  return out + ", parent_point: " + vec(j.parent_point) + ", child_point: " + vec(j.child_point) + "}";
+}
+
+// Each list of elements, in the reader's order.
+void elements(std::ostream& out, const Scene& scene) {
+  const Model& m = scene.model;
+  const auto joint = [&](int j) { return m.joints[j].name; };
+  const auto body = [&](int i) { return i == kBase ? m.base_name : m.bodies[i].name; };
+  const auto list = [&](const char* name, const auto& items, auto line) {
+    if (items.empty()) return;
+    out << "\n" << name << ":\n";
+    for (const auto* e : items) out << "  - {" << line(*e) << "}\n";
+  };
+  list("springs", scene.elements_of<JointSpring>(), [&](const JointSpring& s) {
+    std::string text = "joint: " + joint(s.joint);
+    if (s.curve) {
+      std::string table;
+      for (std::size_t k = 0; k < s.curve->angles().size(); ++k)
+        table += std::string(k ? ", " : "") + "[" + format_number(s.curve->angles()[k]) + ", " +
+                 format_number(s.curve->torques()[k]) + "]";
+      text += ", table: [" + table + "]";
+    } else {
+      text += ", stiffness: " + format_number(s.stiffness) + ", free_position: " + format_number(s.free_position);
+    }
+    return text + ", damping: " + format_number(s.damping);
+  });
+  list("dampers", scene.elements_of<JointDamper>(),
+       [&](const JointDamper& d) { return "joint: " + joint(d.joint) + ", damping: " + format_number(d.damping); });
+  list("friction", scene.elements_of<JointFriction>(), [&](const JointFriction& f) {
+    return "joint: " + joint(f.joint) + ", coulomb: " + format_number(f.coulomb) + ", viscous: " +
+           format_number(f.viscous) + ", velocity_scale: " + format_number(f.velocity_scale);
+  });
+  list("latches", scene.latches(), [&](const Latch& l) {
+    return "joint: " + joint(l.joint) + ", position: " + format_number(l.position) + ", stiffness: " +
+           format_number(l.stiffness) + ", damping: " + format_number(l.damping) + ", free_play: " +
+           format_number(l.free_play);
+  });
+  list("loads", scene.elements_of<AppliedForce>(), [&](const AppliedForce& l) {
+    return "body: " + body(l.body) + ", force: " + vec(l.force) + ", torque: " + vec(l.torque) + ", point: " +
+           vec(l.point) + ", frame: " + (l.in_base_frame ? "base" : "body");
+  });
+  list("point_springs", scene.elements_of<PointSpring>(), [&](const PointSpring& s) {
+    return (s.named ? "name: " + s.name + ", " : std::string()) + "body_a: " + body(s.body_a) + ", point_a: " +
+           vec(s.point_a) + ", body_b: " + body(s.body_b) + ", point_b: " + vec(s.point_b) + ", stiffness: " +
+           format_number(s.stiffness) + ", rest_length: " + format_number(s.rest_length) + ", damping: " +
+           format_number(s.damping) + ", tension_only: " + (s.tension_only ? "true" : "false");
+  });
+}
+
+// initial: the joints' positions where they differ from neutral, and their
+// rates or momenta where not zero.
+void initial(std::ostream& out, const Scene& scene) {
+  const Model& m = scene.model;
+  const auto entries = [&](const std::vector<double>& x, bool positions) {
+    std::string text;
+    for (int j = 0; j < m.size(); ++j) {
+      const Joint& joint = m.joints[j];
+      const int n = positions ? joint.positions() : joint.dof();
+      if (n == 0) continue;
+      const int from = positions ? m.first_position[j].value : m.first_velocity[j].value;
+      std::vector<double> values(x.begin() + from, x.begin() + from + n), neutral(n, 0.0);
+      if (positions && n > 1) joint.neutral_positions(neutral.data());
+      if (values == neutral) continue;
+      text += (text.empty() ? "" : ", ") + joint.name + ": " +
+              (joint.is_scalar() ? format_number(values[0]) : numbers(values));
+    }
+    return text;
+  };
+  const std::string q = entries(scene.q0, true);
+  const std::string rates = scene.p0.empty() ? entries(scene.dq0, false) : entries(scene.p0, false);
+  if (q.empty() && rates.empty()) return;
+  out << "\ninitial:\n";
+  if (!q.empty()) out << "  q: {" << q << "}\n";
+  if (!rates.empty()) out << "  " << (scene.p0.empty() ? "dq" : "p") << ": {" << rates << "}\n";
+}
+
+void regulator(std::ostream& out, const RegulatorSettings& r) {
+  const char* solver = r.solver == ClosureSolverKind::dense    ? "dense"
+                       : r.solver == ClosureSolverKind::sparse ? "sparse"
+                                                               : "auto";
+  out << "\nregulator: {gains: " << (r.gains == GainTuning::full ? "full" : "paper")
+      << ", v_max: " << format_number(r.v_max) << ", p0: " << format_number(r.p0) << ", p1: " << format_number(r.p1)
+      << ", regularization: " << format_number(r.regularization)
+      << ", feedforward: " << (r.feedforward ? "true" : "false") << ", solver: " << solver << "}\n";
+}
+
+void run(std::ostream& out, const RunSettings& r) {
+  const char* linear = r.linear_solver == LinearSolverKind::dense    ? "dense"
+                       : r.linear_solver == LinearSolverKind::krylov ? "krylov"
+                                                                     : "auto";
+  out << "\nrun: {t_end: " << format_number(r.t_end) << ", integrator: " << integrator_name(r.integrator)
+      << ", linear_solver: " << linear << ", rtol: " << format_number(r.rtol) << ", atol: " << format_number(r.atol)
+      << ", dt: " << format_number(r.dt) << ", sample: " << format_number(r.sample)
+      << ", max_closure: " << format_number(r.max_closure) << ", event_window: " << format_number(r.event_window)
+      << ", max_steps: " << r.max_steps << ", max_samples: " << r.max_samples;
+  if (r.max_wall_time > 0) out << ", max_wall_time: " << format_number(r.max_wall_time);
+  out << "}\n";
+}
+
+}  // namespace
+
+std::string write_scene_text(const SceneFile& file, const std::string& comment) {
+  const Scene& scene = file.scene;
+  const Model& m = scene.model;
+  std::ostringstream out;
+  std::istringstream lines(comment);
+  for (std::string line; std::getline(lines, line);) out << "# " << line << "\n";
+  out << "name: " << scene.name << "\n";
+  if (!scene.description.empty()) out << "description: " << quoted(scene.description) << "\n";
+  const bool bus = m.free_floating();
+  out << "\nbase:\n  name: " << (bus ? m.bodies[0].name : m.base_name) << "\n";
+  const Visual& base_visual = bus ? file.visuals.bodies[0] : file.visuals.base;
+  if (!base_visual.mesh.empty()) out << "  mesh: " << visual(base_visual) << "\n";
+  if (!m.base_velocity.isZero(0))
+    out << "  velocity: " << numbers({m.base_velocity.data(), m.base_velocity.data() + 6}) << "\n";
+  if (bus) {
+    out << "  free: true\n";
+    mass_properties(out, m.bodies[0], "  ");
+  }
+  if (!scene.gravity().isZero(0)) out << "\ngravity: " << vec(scene.gravity()) << "\n";
+  out << "\nbodies:\n";
+  for (int i = bus ? 1 : 0; i < m.size(); ++i) {
+    const int k = m.parent[i];
+    out << "  - name: " << m.bodies[i].name << "\n    parent: " << (k == kBase ? m.base_name : m.bodies[k].name) << "\n";
+    mass_properties(out, m.bodies[i], "    ");
+    if (!file.visuals.bodies[i].mesh.empty()) out << "    mesh: " << visual(file.visuals.bodies[i]) << "\n";
+    out << "    joint: " << joint_text(m.joints[i]) << "\n";
+  }
+  elements(out, scene);
+  if (!scene.loops.empty()) {
+    out << "\nloops:\n";
+    for (const Loop& l : scene.loops)
+      out << "  - {name: " << l.name << ", body: " << m.bodies[l.body].name << ", image: " << m.bodies[l.image].name
+          << "}\n";
+    regulator(out, scene.regulator);
+    out << "closure_tolerance: " << format_number(scene.closure_tolerance) << "\n";
+  }
+  initial(out, scene);
+  run(out, scene.run);
+  return out.str();
+}
+
+SceneFile apply_overrides(const SceneFile& file, const std::vector<Override>& overrides) {
+  if (overrides.empty()) return file;
+  return read_scene_text(write_scene_text(file), file.scene.source, overrides);
+}
+
+}  // namespace unfurl

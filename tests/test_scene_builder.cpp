@@ -1,0 +1,121 @@
+// Scenes built in code: the same rules as a file's, errors by field path,
+// the same run as the file's scene; and the writer, whose text reads back
+// to the same scene.
+#include <gtest/gtest.h>
+
+#include "support.hpp"
+#include "unfurl/sim/scene_builder.hpp"
+#include "unfurl/sim/scene_validation.hpp"
+#include "unfurl/studies/scene_generators.hpp"
+
+namespace unfurl {
+namespace {
+
+void expect_same_run(const Scene& a, const Scene& b) {
+  RunSettings settings = a.run;
+  settings.t_end = 8;  // through the latch-up at 7.39 s
+  const RunResult ra = simulate(a, settings), rb = simulate(b, settings);
+  ASSERT_EQ(ra.status, RunStatus::finished) << describe(ra.failure);
+  ASSERT_EQ(ra.trajectory.samples.size(), rb.trajectory.samples.size());
+  for (std::size_t k = 0; k < ra.trajectory.samples.size(); ++k) {
+    ASSERT_EQ(ra.trajectory.samples[k].y, rb.trajectory.samples[k].y) << "t = " << ra.trajectory.samples[k].t;
+    ASSERT_EQ(ra.trajectory.samples[k].loads.element, rb.trajectory.samples[k].loads.element);
+  }
+  ASSERT_EQ(ra.trajectory.events.size(), rb.trajectory.events.size());
+  EXPECT_EQ(ra.stats.steps, rb.stats.steps);
+}
+
+TEST(SceneBuilder, PantographBuiltInCodeRunsAsTheFilesPantograph) {
+  // generate_pantograph builds with SceneBuilder, no YAML on the way.
+  const SceneFile built = generate_pantograph(3);
+  EXPECT_EQ(built.scene.source, "generated");
+  expect_same_run(built.scene, test::scene_file("pantograph"));
+}
+
+TEST(SceneBuilder, PendulumInCode) {
+  SceneBuilder b("pendulum");
+  b.fixed_base("ground").gravity(Vec3(0, 0, -9.81));
+  Body rod;
+  rod.name = "rod";
+  rod.mass = 2;
+  rod.com = Vec3(0, 0, -0.5);
+  rod.inertia_com = Vec3(0.1, 0.1, 0.02).asDiagonal();
+  b.body(rod, "ground", joints::revolute("hinge", Vec3(2, 0, 0), Vec3::Zero(), Vec3::Zero()));
+  b.initial_position("hinge", {0.3});
+  const SceneFile file = b.build();
+  EXPECT_EQ(file.scene.model.joints[0].axis, Vec3::UnitX()) << "axes are made unit";
+  EXPECT_EQ(file.scene.q0, std::vector<double>{0.3});
+  EXPECT_EQ(file.scene.gravity(), Vec3(0, 0, -9.81));
+  const RunResult run = simulate(file.scene, file.scene.run);
+  EXPECT_EQ(run.status, RunStatus::finished);
+}
+
+// What build() says of a scene that breaks a rule: the field and why.
+std::pair<std::string, std::string> build_error(SceneBuilder& b) {
+  try {
+    b.build();
+  } catch (const SceneInvalid& e) {
+    return {e.field(), e.reason()};
+  }
+  return {"", "no error"};
+}
+
+Body unit_body(const std::string& name) {
+  Body body;
+  body.name = name;
+  body.mass = 1;
+  body.inertia_com = Mat3::Identity();
+  return body;
+}
+
+TEST(SceneBuilder, ErrorsNameTheFieldPath) {
+  {
+    SceneBuilder b("bad");
+    Body body = unit_body("a");
+    body.inertia_com = Vec3(1, 1, 3).asDiagonal();
+    b.body(body, "base", joints::revolute("j", Vec3::UnitX(), Vec3::Zero(), Vec3::Zero()));
+    const auto [field, reason] = build_error(b);
+    EXPECT_EQ(field, "bodies[0] (a).inertia");
+    EXPECT_NE(reason.find("no body has these principal moments"), std::string::npos) << reason;
+  }
+  {
+    SceneBuilder b("bad");
+    b.body(unit_body("a"), "base", joints::revolute("j", Vec3::UnitX(), Vec3::Zero(), Vec3::Zero()));
+    auto spring = std::make_shared<JointSpring>(b.joint_index("j", "springs[0].joint"));
+    spring->stiffness = -1;
+    b.element(spring);
+    const auto [field, reason] = build_error(b);
+    EXPECT_EQ(field, "springs[0].stiffness");
+    EXPECT_EQ(reason, "must not be negative, got -1");
+  }
+  {
+    SceneBuilder b("bad");
+    b.body(unit_body("a"), "base", joints::revolute("j", Vec3::UnitX(), Vec3::Zero(), Vec3::Zero()));
+    EXPECT_THROW(b.joint_index("k", "latches[0].joint"), SceneInvalid);
+    EXPECT_THROW(b.body(unit_body("b"), "nowhere", Joint{}), SceneInvalid);
+  }
+}
+
+TEST(SceneWriter, EveryBuiltInSceneReadsBackToTheSameRun) {
+  for (const std::string& name : builtin_scene_names()) {
+    const SceneFile file = read_builtin_scene(name);
+    const std::string text = write_scene_text(file);
+    const SceneFile back = read_scene_text(text, "written:" + name);
+    EXPECT_EQ(write_scene_text(back), text) << name;
+    Scene short_run = file.scene, short_back = back.scene;
+    for (Scene* s : {&short_run, &short_back}) s->run.t_end = std::min(s->run.t_end, 1.0);
+    const RunResult a = simulate(short_run, short_run.run), b = simulate(short_back, short_back.run);
+    ASSERT_EQ(a.trajectory.samples.size(), b.trajectory.samples.size()) << name;
+    EXPECT_EQ(a.trajectory.samples.back().y, b.trajectory.samples.back().y) << name;
+  }
+}
+
+TEST(SceneWriter, OverridesGoThroughTheText) {
+  const SceneFile file = generate_zfold(2);
+  const SceneFile changed = apply_overrides(file, {{"springs.j1.stiffness", "0.2"}});
+  EXPECT_EQ(changed.scene.elements_of<JointSpring>()[0]->stiffness, 0.2);
+  EXPECT_EQ(file.scene.elements_of<JointSpring>()[0]->stiffness, 0.1);
+}
+
+}  // namespace
+}  // namespace unfurl
