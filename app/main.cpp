@@ -8,7 +8,7 @@
 
 #include "cli.hpp"
 #include "commands.hpp"
-#include "output_file.hpp"
+#include "unfurl/io/output_file.hpp"
 #include "unfurl/sim/scene_file.hpp"
 
 namespace {
@@ -64,7 +64,7 @@ int main(int argc, char** argv) {
   } catch (const unfurl::app::UsageError& e) {
     std::fprintf(stderr, "unfurl %s: %s\n", command.c_str(), e.what());
     return 64;
-  } catch (const unfurl::app::OutputError& e) {
+  } catch (const unfurl::io::OutputError& e) {
     std::fprintf(stderr, "unfurl %s: %s\n", command.c_str(), e.what());
     return 73;
   } catch (const std::exception& e) {

@@ -7,7 +7,7 @@
 
 #include "unfurl/render/frame_renderer.hpp"
 #include "unfurl/render/gl_context.hpp"
-#include "png_file.hpp"
+#include "unfurl/io/png_file.hpp"
 #include "unfurl/sim/scene_file.hpp"
 
 namespace unfurl {
@@ -56,7 +56,7 @@ void BM_FrameRenderReadbackAndPng(benchmark::State& state) {
   const std::string path = (std::filesystem::temp_directory_path() / "unfurl_bench_frame.png").string();
   for (auto _ : state) {
     s.renderer.frame(s.poses, 1.0, s.camera, image);
-    app::write_png(image, path);
+    io::write_png(image, path);
   }
   std::filesystem::remove(path);
   state.counters["fps"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);

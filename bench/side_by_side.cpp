@@ -27,7 +27,7 @@
 #include <vector>
 
 #include "../tests/peer/mujoco_runner.hpp"
-#include "mjcf_export.hpp"
+#include "unfurl/io/mjcf_export.hpp"
 #include "unfurl/sim/scene_file.hpp"
 #include "unfurl/sim/simulation.hpp"
 #include "unfurl/studies/pantograph_reduction.hpp"
@@ -168,7 +168,7 @@ std::vector<Row> compare(const Case& c, double target, std::string& summary) {
   }
   // MuJoCo: halving steps until within the target.
   const std::filesystem::path xml = std::filesystem::temp_directory_path() / ("unfurl_side_by_side_" + c.name + ".xml");
-  std::ofstream(xml) << app::export_mjcf(scene).xml;
+  std::ofstream(xml) << io::export_mjcf(scene).xml;
   for (double dt = 4e-3; dt >= 1e-5; dt /= 2) {
     const peer::MujocoRun first = peer::run_mujoco(xml.string(), t_end, dt, kSample);
     Angles angles;

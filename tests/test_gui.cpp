@@ -14,7 +14,7 @@
 #include "png_read.hpp"
 #include "support.hpp"
 #include "gui/file_dialog.hpp"
-#include "video_pipe.hpp"
+#include "unfurl/io/video_pipe.hpp"
 
 namespace unfurl {
 namespace {
@@ -85,7 +85,7 @@ int bus_pixels(const render::Image& image, int x0, int y0, int x1, int y1) {
 }
 
 TEST(Gui, ScriptedSessionPlaysScrubsChangesAPreloadAndReruns) {
-  if (!app::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
+  if (!io::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
   const Scratch scratch("unfurl_gui");
   const fs::path& dir = scratch.path;
   std::ofstream(dir / "session.txt") << "wait_run\n"
@@ -146,7 +146,7 @@ TEST(Gui, ScriptedSessionPlaysScrubsChangesAPreloadAndReruns) {
 // run is neither drawn with the new scene's indices nor kept as its ghost
 // (it crashed the loop-gap and energy plots).
 TEST(Gui, OpeningAnotherSceneDropsThePreviousScenesRuns) {
-  if (!app::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
+  if (!io::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
   const Scratch scratch("unfurl_gui_open");
   const fs::path& dir = scratch.path;
   std::ofstream(dir / "session.txt") << "wait_run\n"
@@ -172,7 +172,7 @@ TEST(Gui, OpeningAnotherSceneDropsThePreviousScenesRuns) {
 // camera rides with the bus or stays in the inertial frame, where the bus
 // is seen turned (zfold_free's turns by about 0.2 rad).
 TEST(Gui, AFreeBusHasItsAttitudePlotAndTheCameraRidesWithItOrNot) {
-  if (!app::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
+  if (!io::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
   const Scratch scratch("unfurl_gui_free");
   const fs::path& dir = scratch.path;
   std::ofstream(dir / "session.txt") << "wait_run\n"
@@ -211,7 +211,7 @@ TEST(Gui, AFreeBusHasItsAttitudePlotAndTheCameraRidesWithItOrNot) {
 // Edits by name, undone and redone, and saved as a scene file that reloads
 // to the same run.
 TEST(Gui, EditsUndoRedoAndSaveAsAFileThatReloadsToTheSameRun) {
-  if (!app::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
+  if (!io::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
   const Scratch scratch("unfurl_gui_edits");
   const fs::path& dir = scratch.path;
   std::ofstream(dir / "session.txt") << "wait_run\n"
@@ -277,7 +277,7 @@ int pinned_yellow_pixels(const render::Image& image, int x0, int y0, int x1, int
 // in their colour; zoom and the joint checklist reach the plots; a scene of
 // another shape drops them.
 TEST(Gui, PinnedRunsAreTabledAndDrawnAgainstTheCurrentRun) {
-  if (!app::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
+  if (!io::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
   const Scratch scratch("unfurl_gui_pins");
   const fs::path& dir = scratch.path;
   std::ofstream(dir / "session.txt") << "wait_run\n"
@@ -338,7 +338,7 @@ TEST(Gui, PinnedRunsAreTabledAndDrawnAgainstTheCurrentRun) {
 // times are the study's own for it; a failure case (a latch removed) then
 // loads without drawing the other case's run as its ghost.
 TEST(Gui, StudyCasesOpenFromTheStudyTab) {
-  if (!app::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
+  if (!io::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
   const Scratch scratch("unfurl_gui_study");
   const fs::path& dir = scratch.path;
   const std::string study = std::string(UNFURL_SOURCE_DIR) + "/tests/studies/small_monte_carlo.yaml";
@@ -394,7 +394,7 @@ TEST(Gui, StudyCasesOpenFromTheStudyTab) {
 // the study file's: an edit of it is refused with a message (it used to fail to load, or be undone by the
 // failure), while the case's other parameters stay editable.
 TEST(Gui, AFailureCasesInjectedElementsAreReadOnly) {
-  if (!app::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
+  if (!io::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
   const Scratch scratch("unfurl_gui_failure");
   const fs::path& dir = scratch.path;
   const std::string study = std::string(UNFURL_SOURCE_DIR) + "/tests/studies/gui_failures.yaml";
@@ -434,8 +434,8 @@ TEST(Gui, AFailureCasesInjectedElementsAreReadOnly) {
 // A long export can be cancelled: the frames written so far stay, each
 // complete, and no video (finished or partial) is left behind.
 TEST(Gui, ALongExportCancelsAndLeavesNoPartialVideo) {
-  if (!app::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
-  if (!app::on_path("ffmpeg")) GTEST_SKIP() << "ffmpeg is not installed";
+  if (!io::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
+  if (!io::on_path("ffmpeg")) GTEST_SKIP() << "ffmpeg is not installed";
   const Scratch scratch("unfurl_gui_cancel");
   const fs::path& dir = scratch.path;
   std::ofstream(dir / "session.txt") << "wait_run\n"
@@ -485,7 +485,7 @@ TEST(FileDialog, ListsFoldersThenTheWantedFiles) {
 // (xdotool): the dialog opens in the scene's folder with the name field
 // focused; typing a file name and Enter opens it.
 TEST(Gui, TheFileDialogOpensASceneTypedWithTheKeyboard) {
-  if (!app::on_path("xvfb-run") || !app::on_path("xdotool")) GTEST_SKIP() << "needs xvfb-run and xdotool";
+  if (!io::on_path("xvfb-run") || !io::on_path("xdotool")) GTEST_SKIP() << "needs xvfb-run and xdotool";
   const Scratch scratch("unfurl_gui_dialog");
   const fs::path& dir = scratch.path;
   const fs::path scenes = fs::path(UNFURL_SOURCE_DIR) / "assets" / "scenes";

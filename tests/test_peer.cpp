@@ -15,7 +15,7 @@
 
 #include "unfurl/render/gl_context.hpp"
 #include "unfurl/render/plot_renderer.hpp"
-#include "png_file.hpp"
+#include "unfurl/io/png_file.hpp"
 #include "unfurl/sim/summary.hpp"
 #include "support.hpp"
 
@@ -293,7 +293,7 @@ TEST(Peer, ZfoldEnergyOfBothEnginesOnOnePlot) {
   render::PlotRenderer plotter(1280, 720);
   render::Image image;
   plotter.draw(spec, image);
-  app::write_png(image, (dir / "zfold_energy.png").string(), 6);
+  io::write_png(image, (dir / "zfold_energy.png").string(), 6);
   render::PlotSpec difference;
   difference.title = "zfold: energy difference between unfurl and MuJoCo";
   difference.y_label = "|E_unfurl - E_MuJoCo|, J";
@@ -309,7 +309,7 @@ TEST(Peer, ZfoldEnergyOfBothEnginesOnOnePlot) {
   }
   difference.series = {d};
   plotter.draw(difference, image);
-  app::write_png(image, (dir / "zfold_energy_difference.png").string(), 6);
+  io::write_png(image, (dir / "zfold_energy_difference.png").string(), 6);
   std::printf("zfold: energies differ by at most %.3g J; plot %s\n", largest, (dir / "zfold_energy.png").c_str());
 }
 

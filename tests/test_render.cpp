@@ -18,7 +18,7 @@
 #include "unfurl/render/mesh_generator.hpp"
 #include "render_options.hpp"
 #include "support.hpp"
-#include "video_pipe.hpp"
+#include "unfurl/io/video_pipe.hpp"
 
 namespace unfurl {
 namespace {
@@ -262,7 +262,7 @@ int run_command(const std::string& command) {
 }
 
 TEST(RenderCommand, WritesFramesPlotsAndAVideoWithTheExpectedFrameCount) {
-  if (!app::on_path("ffmpeg") || !app::on_path("ffprobe")) GTEST_SKIP() << "ffmpeg is not installed";
+  if (!io::on_path("ffmpeg") || !io::on_path("ffprobe")) GTEST_SKIP() << "ffmpeg is not installed";
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("unfurl_render_" + std::to_string(::getpid()));
   fs::remove_all(dir);
@@ -334,7 +334,7 @@ TEST(RenderCommand, AFreeBusGetsItsPlotAndTheCameraFrameMatters) {
 // H.264 needs even sizes: an odd one is padded by a pixel and said so, not a
 // silent exit 141 (SIGPIPE) with .partial files left behind.
 TEST(RenderCommand, OddVideoSizeIsPaddedAndSaid) {
-  if (!app::on_path("ffmpeg") || !app::on_path("ffprobe")) GTEST_SKIP() << "ffmpeg is not installed";
+  if (!io::on_path("ffmpeg") || !io::on_path("ffprobe")) GTEST_SKIP() << "ffmpeg is not installed";
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("unfurl_render_odd_" + std::to_string(::getpid()));
   fs::remove_all(dir);

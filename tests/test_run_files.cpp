@@ -6,9 +6,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "run_files.hpp"
+#include "unfurl/io/run_files.hpp"
 #include "support.hpp"
-#include "trajectory_csv.hpp"
+#include "unfurl/io/trajectory_csv.hpp"
 
 namespace unfurl {
 namespace {
@@ -21,8 +21,8 @@ TEST(LoadsFile, HasTheColumnsTheSceneHasAndReadsBack) {
   const RunResult run = simulate(scene, scene.run);
   const fs::path dir = fs::temp_directory_path() / ("unfurl_loads_" + std::to_string(::getpid()));
   fs::create_directories(dir);
-  app::write_trajectory_csv(scene, run.trajectory, (dir / "trajectory.csv").string());
-  app::write_loads_csv(scene, run.trajectory, (dir / "loads.csv").string());
+  io::write_trajectory_csv(scene, run.trajectory, (dir / "trajectory.csv").string());
+  io::write_loads_csv(scene, run.trajectory, (dir / "loads.csv").string());
   std::ifstream in(dir / "loads.csv");
   std::string header;
   std::getline(in, header);
@@ -30,7 +30,7 @@ TEST(LoadsFile, HasTheColumnsTheSceneHasAndReadsBack) {
   EXPECT_EQ(header.find("tau_spring.j9"), std::string::npos) << "no spring on a cross pivot";
   EXPECT_NE(header.find(",reaction.j9.mz,"), std::string::npos);
   EXPECT_NE(header.find(",loop_force.A1.fy,loop_force.A1.fz,loop_force.A1.mx,"), std::string::npos) << header;
-  const Trajectory back = app::read_trajectory_csv(scene, (dir / "trajectory.csv").string());
+  const Trajectory back = io::read_trajectory_csv(scene, (dir / "trajectory.csv").string());
   ASSERT_EQ(back.samples.size(), run.trajectory.samples.size());
   EXPECT_EQ(back.loop_components.size(), 9u);
   for (std::size_t k = 0; k < back.samples.size(); ++k)

@@ -3,8 +3,8 @@
 #include <chrono>
 #include <cstdio>
 
-#include "output_file.hpp"
-#include "png_file.hpp"
+#include "unfurl/io/output_file.hpp"
+#include "unfurl/io/png_file.hpp"
 
 namespace unfurl::app {
 
@@ -18,9 +18,9 @@ ExportJob::ExportJob(const ExportRequest& request, const Scene& scene, const Sce
       times_(frame_times(request.options, trajectory.t_begin(), trajectory.t_end())),
       renderer_(std::make_unique<render::FrameRenderer>(scene_, visuals, request.options.width, request.options.height,
                                                         mesh_directories(scene_))) {
-  if (request_.frames) make_directory(request_.dir);
+  if (request_.frames) io::make_directory(request_.dir);
   if (request_.options.video)
-    video_ = std::make_unique<VideoPipe>(*request_.options.video, request_.options.width, request_.options.height,
+    video_ = std::make_unique<io::VideoPipe>(*request_.options.video, request_.options.width, request_.options.height,
                                          request_.options.fps);
   encoder_ = std::thread([this] { encode(); });
 }
@@ -88,7 +88,7 @@ void ExportJob::encode() {
       if (request_.frames) {
         char name[32];
         std::snprintf(name, sizeof name, "/frame_%05zu.png", item.first);
-        write_png(item.second, request_.dir + name);
+        io::write_png(item.second, request_.dir + name);
       }
       if (video_) video_->add(item.second);
       std::lock_guard<std::mutex> lock(mutex_);

@@ -13,7 +13,7 @@
 
 #include "unfurl/render/frame_renderer.hpp"
 #include "gui_state.hpp"
-#include "video_pipe.hpp"
+#include "unfurl/io/video_pipe.hpp"
 
 namespace unfurl::app {
 
@@ -55,7 +55,7 @@ class ExportJob {
   bool finished_drawing_ = false, encoder_done_ = false, cancelled_ = false;
   std::size_t encoded_ = 0;
   std::string error_;
-  std::unique_ptr<VideoPipe> video_;
+  std::unique_ptr<io::VideoPipe> video_;
   std::thread encoder_;
 };
 

@@ -12,10 +12,10 @@
 #include "unfurl/render/frame_renderer.hpp"
 #include "unfurl/render/imgui_layer.hpp"
 #include "unfurl/render/window_surface.hpp"
-#include "output_file.hpp"
-#include "png_file.hpp"
+#include "unfurl/io/output_file.hpp"
+#include "unfurl/io/png_file.hpp"
 #include "gui_panels.hpp"
-#include "run_files.hpp"
+#include "unfurl/io/run_files.hpp"
 #include "scene_options.hpp"
 
 #define GLFW_INCLUDE_NONE
@@ -511,10 +511,10 @@ void GuiApp::apply(const Requests& r) {
   if (r.save_frame) save_view_png(*r.save_frame);
   if (r.save_trajectory) {
     try {
-      make_directory(std::filesystem::path(*r.save_trajectory).parent_path().string().empty()
+      io::make_directory(std::filesystem::path(*r.save_trajectory).parent_path().string().empty()
                          ? "."
                          : std::filesystem::path(*r.save_trajectory).parent_path().string());
-      write_trajectory_csv(state_.scene, state_.trajectory, *r.save_trajectory);
+      io::write_trajectory_csv(state_.scene, state_.trajectory, *r.save_trajectory);
       state_.notice = "saved " + *r.save_trajectory;
     } catch (const std::exception& e) {
       state_.notice = e.what();
@@ -551,8 +551,8 @@ void GuiApp::save_scene(const std::string& path, bool overwrite) {
     const std::string text = scene_text_with(scene_text_named(state_.scene_name), state_.scene.source, overrides);
     read_scene_text(text, path);  // it must read back
     const std::string dir = std::filesystem::path(path).parent_path().string();
-    if (!dir.empty()) make_directory(dir);
-    OutputFile file(path);
+    if (!dir.empty()) io::make_directory(dir);
+    io::OutputFile file(path);
     file.stream() << text;
     file.commit();
     state_.notice = "saved " + path;
@@ -564,7 +564,7 @@ void GuiApp::save_scene(const std::string& path, bool overwrite) {
 void GuiApp::save_view_png(const std::string& path) {
   try {
     const std::string dir = std::filesystem::path(path).parent_path().string();
-    if (!dir.empty()) make_directory(dir);
+    if (!dir.empty()) io::make_directory(dir);
     // At the export form's size, not the viewport's: the same camera and
     // play-head, drawn again off screen.
     const int w = std::clamp(state_.export_form.size[0], 16, 8192), h = std::clamp(state_.export_form.size[1], 16, 8192);
@@ -573,7 +573,7 @@ void GuiApp::save_view_png(const std::string& path) {
     current_poses(poses);
     render::Image image;
     renderer.frame(poses, state_.play_time, state_.camera, image);
-    write_png(image, path);
+    io::write_png(image, path);
     state_.notice = "saved " + path + " (" + std::to_string(w) + "x" + std::to_string(h) + ")";
   } catch (const std::exception& e) {
     state_.notice = e.what();
@@ -586,8 +586,8 @@ void GuiApp::screenshot(const std::string& path) {
   render::Image image;
   render::read_window(W, H, image);
   const std::string dir = std::filesystem::path(path).parent_path().string();
-  if (!dir.empty()) make_directory(dir);
-  write_png(image, path, 6);
+  if (!dir.empty()) io::make_directory(dir);
+  io::write_png(image, path, 6);
 }
 
 void GuiApp::camera_preset(const std::string& name) {

@@ -7,7 +7,7 @@
 #include <filesystem>
 
 #include "unfurl/sim/number_text.hpp"
-#include "output_file.hpp"
+#include "unfurl/io/output_file.hpp"
 #include "unfurl/render/trajectory_plots.hpp"
 
 namespace unfurl::app {

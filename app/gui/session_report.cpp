@@ -1,15 +1,15 @@
 #include "session_report.hpp"
 
 #include "gui_panels.hpp"
-#include "json_writer.hpp"
-#include "output_file.hpp"
+#include "unfurl/io/json_writer.hpp"
+#include "unfurl/io/output_file.hpp"
 #include "unfurl/render/trajectory_plots.hpp"
 
 namespace unfurl::app {
 
 void write_session_report(const GuiState& state, const std::string& path) {
-  OutputFile file(path);
-  JsonWriter json(file.stream());
+  io::OutputFile file(path);
+  io::JsonWriter json(file.stream());
   json.begin_object();
   json.value("scene", state.scene.name).value("generation", state.generation);
   if (state.study) json.value("study_case", state.study->shown).value("study_rows", static_cast<long>(state.study->rows.size()));

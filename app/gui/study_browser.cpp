@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <type_traits>
 
-#include "study_files.hpp"
+#include "unfurl/io/study_files.hpp"
 #include "unfurl/sim/elements/all.hpp"
 
 namespace unfurl::app {
@@ -19,7 +19,7 @@ StudyBrowser open_study(const std::string& study_path, const std::string& dir) {
   b.columns = case_columns(b.study, nominal_scene(b.study).scene);
   b.cases = study_cases(b.study);
   for (const StudyCase& c : b.cases)
-    if (auto row = read_case_record(b.columns, dir, c.id)) b.rows.push_back(std::move(*row));
+    if (auto row = io::read_case_record(b.columns, dir, c.id)) b.rows.push_back(std::move(*row));
   if (b.rows.empty())
     throw std::runtime_error(dir + " holds no finished case of " + study_path + " (run: unfurl sweep " + study_path +
                              " --out " + dir + ")");

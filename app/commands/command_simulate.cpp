@@ -1,0 +1,123 @@
+// unfurl simulate: run a scene and write trajectory.csv, events.csv and
+// summary.json.
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+
+#include "cli.hpp"
+#include "commands.hpp"
+#include "interrupt.hpp"
+#include "unfurl/io/output_file.hpp"
+#include "progress.hpp"
+#include "unfurl/io/run_files.hpp"
+#include "scene_options.hpp"
+#include "unfurl/sim/summary.hpp"
+
+namespace unfurl::app {
+
+namespace {
+
+const char* kHelp =
+    "usage: unfurl simulate [SCENE] [--out DIR] [--t-end T] [--integrator NAME] [--rtol X]\n"
+    "                       [--atol X] [--dt X] [--sample DT] [--set KEY=VALUE ...]\n"
+    "\n"
+    "Simulates a scene and writes into DIR (default out/):\n"
+    "  trajectory.csv   t, then q.J, dq.J, p.J per joint, closure_m.L and closure_rad.L\n"
+    "                   (the geometric gap) per loop, and energy, every DT seconds\n"
+    "  loads.csv        per joint the spring, damper and latch torques and the reaction\n"
+    "                   wrench at the hinge (child frame), per loop component the\n"
+    "                   constraint force, at the same times\n"
+    "  events.csv       latch engagements (t, event, joint)\n"
+    "  summary.json     integrator, statistics, latch times, peak loads, largest loop gap,\n"
+    "                   energy\n"
+    "\n"
+    "options:\n"
+    "  --out DIR             output directory (default out)\n"
+    "%s"
+    "  --quiet               print nothing but errors\n"
+    "\n"
+    "Exit status: 0 done, 1 the solver failed (what it computed is written), 2 bad scene,\n"
+    "64 bad usage.\n";
+
+void print_summary(const Scene& scene, const RunResult& result, const RunSummary& s, const std::string& dir) {
+  const RunSettings& run = result.settings;
+  std::printf("scene        %s (%s)\n", scene.name.c_str(), scene.source.c_str());
+  std::printf("integrator   %s, rtol %g, atol %g", integrator_name(run.integrator), run.rtol, run.atol);
+  if (run.integrator == IntegratorKind::rk4) std::printf(", dt %g", run.dt);
+  std::printf("\nrun          0 .. %g s %s in %.3f s wall (%.1fx real time)\n", s.t_reached,
+              run_status_name(result.status), result.wall_time_s,
+              result.wall_time_s > 0 ? s.t_reached / result.wall_time_s : 0.0);
+  std::printf("work         %ld steps, %ld right-hand sides, %ld Jacobians, min step %.3g s\n", result.stats.steps,
+              result.rhs_calls, result.stats.jacobian_evals, result.stats.min_step);
+  if (result.jacobian_product_evals > 0)
+    std::printf("             %ld evaluations for Jacobian products (gains held, cheaper)\n",
+                result.jacobian_product_evals);
+  if (!scene.latches().empty()) {
+    std::printf("latches      %zu of %zu engaged\n", s.latch_times.size(), scene.latches().size());
+    for (const auto& [joint, t] : s.latch_times) std::printf("               %-10s t = %.9f s\n", joint.c_str(), t);
+    for (const auto& joint : s.unlatched) std::printf("               %-10s never latched\n", joint.c_str());
+  }
+  if (!scene.loops.empty()) {
+    std::printf("loop gap     max %.3g m, %.3g rad (%.3g m, %.3g rad before the first latch)\n", s.max_closure_m,
+                s.max_closure_rad, s.max_closure_m_before_latch, s.max_closure_rad_before_latch);
+  }
+  const RunSummary::NamedPeak* latch = nullptr;
+  for (const auto& p : s.latch_peak_torque)
+    if (!std::isnan(p.peak.t) && (!latch || p.peak.value > latch->peak.value)) latch = &p;
+  if (latch)
+    std::printf("loads        peak latch torque %.4g N m at %s, t = %.6f s\n", latch->peak.value, latch->joint.c_str(),
+                latch->peak.t);
+  std::printf("energy       %.9g J at t = 0, %.9g J at t = %g s, %.9g J dissipated\n", s.energy_initial,
+              s.energy_final, s.t_reached, s.energy_dissipated);
+  if (s.free_bus)
+    std::printf("bus          turned %.4g rad, peak rate %.4g rad/s; momentum drift %.2g (linear), %.2g (angular)\n",
+                s.free_bus->final_attitude_change, s.free_bus->peak_rate, s.free_bus->linear_momentum_drift,
+                s.free_bus->angular_momentum_drift);
+  std::printf("files        %s/{trajectory,loads,events}.csv, %s/summary.json\n", dir.c_str(), dir.c_str());
+}
+
+}  // namespace
+
+int command_simulate(const std::vector<std::string>& argv) {
+  std::set<std::string> valued = scene_flags();
+  valued.insert("--out");
+  const Args args(argv, valued, {"--help", "-h", "--quiet"});
+  if (args.has("--help") || args.has("-h")) {
+    std::printf(kHelp, scene_flags_help());
+    return 0;
+  }
+  if (args.positionals().size() > 1) throw UsageError("simulate takes one SCENE (see --help)");
+  const std::optional<std::string> scene_arg =
+      args.positionals().empty() ? std::nullopt : std::optional(args.positionals()[0]);
+  const Scene scene = load_scene(scene_arg, args);
+  const std::string dir = args.get("--out").value_or("out");
+  io::make_directory(dir);
+
+  Progress progress("simulating " + scene.name, scene.run.t_end);
+  const InterruptScope interrupt;
+  RunObserver observer;
+  observer.cancel = &interrupt.flag();
+  if (!args.has("--quiet")) observer.on_progress = [&](const StepProgress& p) { progress.update(p.t); };
+  const RunResult result = simulate(scene, scene.run, observer);
+  progress.finish();
+  const RunSummary summary = summarize(scene, result);
+
+  io::write_trajectory_csv(scene, result.trajectory, dir + "/trajectory.csv");
+  io::write_loads_csv(scene, result.trajectory, dir + "/loads.csv");
+  io::write_events_csv(scene, result.trajectory, dir + "/events.csv");
+  io::write_summary_json(scene, result, summary, dir + "/summary.json");
+  if (!args.has("--quiet")) print_summary(scene, result, summary, dir);
+  if (result.status == RunStatus::failed) {
+    std::fprintf(stderr, "unfurl simulate: %s\n(the results up to t = %g s are written)\n",
+                 describe(result.failure).c_str(), summary.t_reached);
+    return 1;
+  }
+  if (result.status == RunStatus::cancelled) {
+    std::fprintf(stderr, "unfurl simulate: interrupted by %s at t = %g s\n(the results up to there are written)\n",
+                 interrupt.signal_name(), summary.t_reached);
+    return interrupt.exit_status();
+  }
+  return 0;
+}
+
+}  // namespace unfurl::app

@@ -1,0 +1,119 @@
+// The study's plots (needs the renderer): histograms of the deployment time
+// and the peak latch torque, each headline output against its strongest
+// driver, and one joint's angle in every case with the nominal case on top.
+#include <algorithm>
+#include <cmath>
+
+#include "report_plots.hpp"
+#include "study_plots.hpp"
+
+namespace unfurl::app {
+
+namespace {
+
+std::vector<double> deployed_values(const io::StudyReport& report, const std::string& output) {
+  std::vector<double> x;
+  for (const CaseResult& r : report.results) {
+    const double v = output_value(report.columns, r, output);
+    if (r.status == CaseStatus::deployed && r.failure.empty() && std::isfinite(v)) x.push_back(v);
+  }
+  return x;
+}
+
+// Counts per bin drawn as a staircase (the plot draws lines, not bars).
+render::PlotSpec histogram(const io::StudyReport& report, const std::string& output, const std::string& x_label) {
+  const std::vector<double> x = deployed_values(report, output);
+  render::PlotSpec spec;
+  spec.title = "histogram of " + output + " over " + std::to_string(x.size()) + " deployed cases";
+  spec.x_label = x_label;
+  spec.y_label = "cases per bin";
+  const auto [lo_it, hi_it] = std::minmax_element(x.begin(), x.end());
+  const double lo = *lo_it, hi = *hi_it > *lo_it ? *hi_it : *lo_it + 1e-9 * (1 + std::abs(*lo_it));
+  const int bins = std::clamp(static_cast<int>(std::ceil(std::sqrt(static_cast<double>(x.size())))), 5, 40);
+  std::vector<double> count(bins, 0);
+  for (double v : x) count[std::min(bins - 1, static_cast<int>((v - lo) / (hi - lo) * bins))] += 1;
+  render::Series s;
+  s.label = output;
+  s.color = render::palette(0);
+  const double w = (hi - lo) / bins;
+  s.x.push_back(lo), s.y.push_back(0);
+  for (int b = 0; b < bins; ++b) {
+    s.x.push_back(lo + b * w), s.y.push_back(count[b]);
+    s.x.push_back(lo + (b + 1) * w), s.y.push_back(count[b]);
+  }
+  s.x.push_back(hi), s.y.push_back(0);
+  spec.series.push_back(std::move(s));
+  return spec;
+}
+
+render::PlotSpec scatter(const io::StudyReport& report, const Driver& d) {
+  render::PlotSpec spec;
+  char rho[32];
+  std::snprintf(rho, sizeof rho, "%.3f", d.rho);
+  spec.title = d.output + " against " + d.input + " (Spearman rho " + rho + ")";
+  spec.x_label = d.input;
+  spec.y_label = d.output;
+  const auto input = static_cast<std::size_t>(
+      std::find(report.columns.inputs.begin(), report.columns.inputs.end(), d.input) - report.columns.inputs.begin());
+  render::Series cases, nominal;
+  cases.label = "deployed cases";
+  cases.color = render::palette(0);
+  cases.markers = true;
+  cases.lines = false;
+  nominal.label = "nominal";
+  nominal.color = render::palette(1);
+  nominal.markers = true;
+  nominal.lines = false;
+  for (const CaseResult& r : report.results) {
+    const double y = output_value(report.columns, r, d.output);
+    if (r.status != CaseStatus::deployed || !r.failure.empty() || !std::isfinite(y)) continue;
+    render::Series& s = r.id == "nominal" ? nominal : cases;
+    s.x.push_back(r.inputs[input]);
+    s.y.push_back(y);
+  }
+  spec.series = {cases, nominal};
+  return spec;
+}
+
+render::PlotSpec overlay(const io::StudyReport& report) {
+  render::PlotSpec spec;
+  spec.title = "angle of " + report.study.overlay_joint + " in every case";
+  spec.x_label = "t, s";
+  spec.y_label = "q." + report.study.overlay_joint + ", rad";
+  spec.ghost_label = "other cases (red: not deployed)";
+  for (const CaseResult& r : report.results) {
+    if (r.angle_t.empty()) continue;
+    render::Series s;
+    s.x = r.angle_t;
+    s.y = r.angle;
+    if (r.id == "nominal") {
+      s.label = "nominal";
+      s.color = render::palette(1);
+    } else {
+      s.label = r.status == CaseStatus::deployed ? "deployed case" : "not deployed or failed";
+      s.color = r.status == CaseStatus::deployed ? render::palette(0) : render::palette(3);
+      s.ghost = true;
+    }
+    spec.series.push_back(std::move(s));
+  }
+  // The nominal case is drawn last, over the others.
+  std::stable_partition(spec.series.begin(), spec.series.end(), [](const render::Series& s) { return s.ghost; });
+  return spec;
+}
+
+}  // namespace
+
+std::vector<std::string> write_study_plots(const io::StudyReport& report, const std::string& dir) {
+  std::vector<std::pair<render::PlotSpec, std::string>> plots;
+  if (deployed_values(report, "deployment_time_s").size() >= 2)
+    plots.emplace_back(histogram(report, "deployment_time_s", "deployment time (last latch engaged), s"),
+                       "hist_deployment_time.png");
+  if (deployed_values(report, "peak_latch_torque_Nm").size() >= 2)
+    plots.emplace_back(histogram(report, "peak_latch_torque_Nm", "peak latch torque over all latches, N m"),
+                       "hist_peak_latch_torque.png");
+  for (const Driver& d : report.statistics.drivers) plots.emplace_back(scatter(report, d), "scatter_" + d.output + ".png");
+  plots.emplace_back(overlay(report), "overlay_angles.png");
+  return write_plot_pngs(plots, dir);
+}
+
+}  // namespace unfurl::app

@@ -1,0 +1,263 @@
+#include "unfurl/io/study_files.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "unfurl/io/json_writer.hpp"
+#include "unfurl/io/output_file.hpp"
+
+namespace unfurl::io {
+
+namespace {
+
+// RFC 4180: a field with a comma, quote or line break is quoted, quotes doubled.
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\r\n") == std::string::npos) return s;
+  std::string out = "\"";
+  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+std::vector<std::string> split_csv_line(const std::string& line) {
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') fields.back() += '"', ++i;
+      else if (c == '"') quoted = false;
+      else fields.back() += c;
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      fields.emplace_back();
+    } else {
+      fields.back() += c;
+    }
+  }
+  return fields;
+}
+
+std::string number(double x) {
+  if (!std::isfinite(x)) return "";
+  char text[40];
+  std::snprintf(text, sizeof text, "%.17g", x);
+  return text;
+}
+
+double parse_number(const std::string& s) {
+  if (s.empty()) return std::nan("");
+  return std::stod(s);
+}
+
+std::optional<CaseStatus> parse_status(const std::string& s) {
+  for (CaseStatus status : {CaseStatus::deployed, CaseStatus::not_deployed, CaseStatus::failed})
+    if (s == case_status_name(status)) return status;
+  return std::nullopt;
+}
+
+std::string angle_csv(const CaseResult& r) {
+  std::string out = "t,q\n";
+  for (std::size_t k = 0; k < r.angle_t.size(); ++k) out += number(r.angle_t[k]) + "," + number(r.angle[k]) + "\n";
+  return out;
+}
+
+void parse_angle_csv(const std::string& text, CaseResult& r) {
+  std::istringstream lines(text);
+  std::string line;
+  std::getline(lines, line);  // header
+  while (std::getline(lines, line)) {
+    const auto f = split_csv_line(line);
+    if (f.size() != 2) continue;
+    r.angle_t.push_back(parse_number(f[0]));
+    r.angle.push_back(parse_number(f[1]));
+  }
+}
+
+void write_text(const std::string& path, const std::string& text) {
+  OutputFile out(path);
+  out.stream() << text;
+  out.commit();
+}
+
+const char* kNumberFormat = "%.6g";
+
+// A table cell's text: '|' would end the cell.
+std::string cell(const std::string& s) {
+  std::string out;
+  for (char c : s) out += c == '|' ? std::string("\\|") : std::string(1, c);
+  return out;
+}
+
+std::string fmt(double x) {
+  if (!std::isfinite(x)) return "-";
+  char text[40];
+  std::snprintf(text, sizeof text, kNumberFormat, x);
+  return text;
+}
+
+}  // namespace
+
+std::string read_text_file(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::string cases_header(const CaseColumns& columns) {
+  std::string h = "case,failure,status,reason";
+  for (const std::string& c : columns.inputs) h += "," + csv_field(c);
+  for (const std::string& c : columns.outputs) h += "," + csv_field(c);
+  return h;
+}
+
+std::string case_row(const CaseResult& r) {
+  std::string row = csv_field(r.id) + "," + csv_field(r.failure) + "," + case_status_name(r.status) + "," + csv_field(r.reason);
+  for (double x : r.inputs) row += "," + number(x);
+  for (double x : r.outputs) row += "," + number(x);
+  return row;
+}
+
+std::string case_record(const CaseColumns& columns, const CaseResult& r) {
+  return cases_header(columns) + "\n" + case_row(r) + "\n\f" + angle_csv(r);
+}
+
+std::optional<CaseResult> parse_case_record(const CaseColumns& columns, const std::string& record) {
+  const auto split = record.find('\f');
+  std::istringstream lines(record.substr(0, split));
+  std::string header, row;
+  if (!std::getline(lines, header) || header != cases_header(columns) || !std::getline(lines, row)) return std::nullopt;
+  const auto f = split_csv_line(row);
+  const std::size_t n_in = columns.inputs.size(), n_out = columns.outputs.size();
+  if (f.size() != 4 + n_in + n_out) return std::nullopt;
+  CaseResult r;
+  r.id = f[0];
+  r.failure = f[1];
+  const auto status = parse_status(f[2]);
+  if (!status) return std::nullopt;
+  r.status = *status;
+  r.reason = f[3];
+  try {
+    for (std::size_t i = 0; i < n_in; ++i) r.inputs.push_back(parse_number(f[4 + i]));
+    for (std::size_t i = 0; i < n_out; ++i) r.outputs.push_back(parse_number(f[4 + n_in + i]));
+    if (split != std::string::npos) parse_angle_csv(record.substr(split + 1), r);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+  return r;
+}
+
+void write_case_record(const std::string& dir, const std::string& id, const std::string& record) {
+  const std::string case_dir = dir + "/cases/" + id;
+  make_directory(case_dir);
+  const auto split = record.find('\f');
+  // The angles first: a case counts as finished once case.csv exists.
+  write_text(case_dir + "/angle.csv", split == std::string::npos ? "t,q\n" : record.substr(split + 1));
+  write_text(case_dir + "/case.csv", record.substr(0, split));
+}
+
+std::optional<CaseResult> read_case_record(const CaseColumns& columns, const std::string& dir, const std::string& id) {
+  const std::string case_dir = dir + "/cases/" + id;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(case_dir + "/case.csv", ec)) return std::nullopt;
+  return parse_case_record(columns, read_text_file(case_dir + "/case.csv") + "\f" + read_text_file(case_dir + "/angle.csv"));
+}
+
+void write_cases_csv(const StudyReport& report, const std::string& path) {
+  OutputFile out(path);
+  out.stream() << cases_header(report.columns) << "\n";
+  for (const CaseResult& r : report.results) out.stream() << case_row(r) << "\n";
+  out.commit();
+}
+
+void write_study_summary_json(const StudyReport& report, const std::string& path) {
+  OutputFile file(path);
+  JsonWriter json(file.stream());
+  const StudyStatistics& st = report.statistics;
+  json.begin_object();
+  json.value("study", report.study.source).value("scene", report.study.scene_source);
+  json.value("cases", static_cast<long>(report.total_cases)).value("finished", st.cases);
+  json.begin_object("status").value("deployed", st.deployed).value("not_deployed", st.not_deployed).value("failed", st.failed).end_object();
+  json.value("fraction_deployed", st.cases ? static_cast<double>(st.deployed) / static_cast<double>(st.cases) : 0.0);
+  json.value("resumed", report.resumed).value("wall_time_s", report.wall_time_s).value("processes", report.processes).value("jobs", report.jobs);
+  json.begin_object("outputs");
+  for (const OutputStatistics& o : st.outputs) {
+    json.begin_object(o.output).value("n", o.n).value("min", o.min).value("max", o.max).value("mean", o.mean);
+    json.value("sd", o.sd).value("p1", o.p1).value("p5", o.p5).value("p50", o.p50).value("p95", o.p95).value("p99", o.p99);
+    json.end_object();
+  }
+  json.end_object();
+  json.begin_object("drivers");
+  for (const Driver& d : st.drivers) json.begin_object(d.output).value("input", d.input).value("spearman_rho", d.rho).end_object();
+  json.end_object();
+  json.begin_array("correlations");
+  for (const Driver& d : st.correlations)
+    json.begin_object().value("output", d.output).value("input", d.input).value("spearman_rho", d.rho).end_object();
+  json.end_array();
+  json.end_object();
+  file.stream() << "\n";
+  file.commit();
+}
+
+void write_study_markdown(const StudyReport& report, const std::vector<std::string>& pictures, const std::string& path) {
+  const StudyStatistics& st = report.statistics;
+  OutputFile file(path);
+  std::ostream& md = file.stream();
+  md << "# Study: " << std::filesystem::path(report.study.source).filename().string() << "\n\n";
+  md << "Scene `" << report.study.scene << "`, " << report.total_cases << " cases";
+  if (report.study.runs > 0) md << " (the nominal case and " << report.study.runs << " random draws, seed " << report.study.seed << ")";
+  if (!report.study.failures.empty()) md << ", " << report.study.failures.size() << " of them injected failures";
+  md << ". Made by `" << report.command << "` in " << fmt(report.wall_time_s) << " s (" << report.processes
+     << (report.processes == 1 ? " process, " : " processes, ") << report.jobs << (report.jobs == 1 ? " job" : " jobs")
+     << (report.processes == 1 ? "" : " each") << ")";
+  if (report.resumed > 0) md << "; " << report.resumed << " cases were read back from an earlier run of the same command";
+  md << ".\n\n";
+  if (st.cases < report.total_cases) md << "**Incomplete:** " << st.cases << " of " << report.total_cases << " cases finished.\n\n";
+  md << "| status | cases | fraction |\n|---|---:|---:|\n";
+  const auto row = [&](const char* name, long n) {
+    md << "| " << name << " | " << n << " | " << fmt(st.cases ? 100.0 * static_cast<double>(n) / static_cast<double>(st.cases) : 0.0) << " % |\n";
+  };
+  row("deployed", st.deployed);
+  row("not deployed", st.not_deployed);
+  row("failed", st.failed);
+  md << "\n## Outputs over the deployed cases\n\nInjected failures are left out here (they are listed below).\n\n";
+  md << "| output | n | min | p1 | p5 | median | p95 | p99 | max | mean | sd |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const OutputStatistics& o : st.outputs) {
+    if (std::find(CaseColumns::headline().begin(), CaseColumns::headline().end(), o.output) == CaseColumns::headline().end()) continue;
+    md << "| " << o.output << " | " << o.n << " | " << fmt(o.min) << " | " << fmt(o.p1) << " | " << fmt(o.p5) << " | "
+       << fmt(o.p50) << " | " << fmt(o.p95) << " | " << fmt(o.p99) << " | " << fmt(o.max) << " | " << fmt(o.mean) << " | "
+       << fmt(o.sd) << " |\n";
+  }
+  md << "\nEvery output column (per latch and per joint) is summarized in summary.json.\n";
+  if (!st.drivers.empty()) {
+    md << "\n## What drives the spread\n\nSpearman's rank correlation of each output with each varied input, over the "
+          "deployed cases; the strongest per output:\n\n| output | strongest input | rho |\n|---|---|---:|\n";
+    for (const Driver& d : st.drivers) md << "| " << d.output << " | " << d.input << " | " << fmt(d.rho) << " |\n";
+    const Driver& d = st.drivers.front();
+    md << "\nThe deployment time is driven most by `" << d.input << "` (rho = " << fmt(d.rho) << ": "
+       << (d.rho < 0 ? "a larger value deploys sooner" : "a larger value deploys later") << ").\n";
+  }
+  bool any_failure = false;
+  for (const CaseResult& r : report.results) any_failure = any_failure || !r.failure.empty() || r.status != CaseStatus::deployed;
+  if (any_failure) {
+    md << "\n## Cases that did not deploy, and injected failures\n\n| case | failure | status | reason | deployment time, s | peak latch torque, N m |\n|---|---|---|---|---:|---:|\n";
+    for (const CaseResult& r : report.results) {
+      if (r.failure.empty() && r.status == CaseStatus::deployed) continue;
+      md << "| " << r.id << " | " << (r.failure.empty() ? "-" : r.failure) << " | " << case_status_name(r.status) << " | "
+         << (r.reason.empty() ? "-" : cell(r.reason)) << " | " << fmt(output_value(report.columns, r, "deployment_time_s"))
+         << " | " << fmt(output_value(report.columns, r, "peak_latch_torque_Nm")) << " |\n";
+    }
+  }
+  if (!pictures.empty()) {
+    md << "\n## Plots\n\n";
+    for (const std::string& p : pictures) md << "![" << p << "](" << p << ")\n\n";
+  }
+  md << "\nThe table of every case: cases.csv (one row per case; empty where a value does not exist).\n";
+  file.commit();
+}
+
+}  // namespace unfurl::io
