@@ -77,7 +77,7 @@ inline double q_of(const Scene& scene, const Sample& s, const std::string& name)
   throw std::runtime_error("no coordinate " + name);
 }
 
-// The load column `name` ("tau_latch.j1") of a run's samples, by the
+// The load column `name` ("latch_torque.j1") of a run's samples, by the
 // run's column description.
 inline double load_of(const std::vector<LoadColumn>& columns, const Loads& loads, const std::string& name) {
   const int c = find_load_column(columns, name);

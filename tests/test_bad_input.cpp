@@ -75,7 +75,9 @@ INSTANTIATE_TEST_SUITE_P(Catalogue, BadScene, ::testing::ValuesIn(catalogue()),
                          });
 
 // Python's csv module reads every header back to the same column names, and
-// the names are what pandas keeps as they are: unique, no spaces, no quotes.
+// the names are what pandas keeps as they are: unique, no quotes, a name of
+// letters, digits and . _ - and then, in brackets, its unit and frame (no
+// comma: the header splits as the rows do).
 TEST(OutputFiles, HeadersParseWithPythonsCsvModule) {
   const fs::path out = scratch("headers");
   const std::string unfurl = UNFURL_BINARY;
@@ -86,7 +88,7 @@ TEST(OutputFiles, HeadersParseWithPythonsCsvModule) {
       "    rows = list(csv.reader(open(name, newline='')))\n"
       "    header = rows[0]\n"
       "    assert len(header) == len(set(header)), name + ': repeated column'\n"
-      "    assert all(re.fullmatch(r'[A-Za-z0-9_.-]+', h) for h in header), name + ': odd column name'\n"
+      "    assert all(re.fullmatch(r'[A-Za-z0-9_.-]+( \\[[A-Za-z0-9/^ ;]+\\])?', h) for h in header), name + ': odd column name'\n"
       "    assert all(len(r) == len(header) for r in rows), name + ': ragged rows'\n"
       "    assert len(header) == open(name).readline().count(',') + 1, name + ': quoted header'\n"
       "print('ok')\n";

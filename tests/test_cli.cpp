@@ -116,8 +116,9 @@ TEST(Cli, ValidSceneRunsAndWritesTheThreeFiles) {
   std::string header;
   std::getline(csv, header);
   EXPECT_EQ(header,
-            "t,q.a,dq.a,p.a,q.b,dq.b,p.b,q.c,dq.c,p.c,q.d,dq.d,p.d,closure_m.rocker,closure_rad.rocker,"
-            "energy,energy_dissipated");
+            "t [s],q.a [rad],dq.a [rad/s],p.a [N m s],q.b [rad],dq.b [rad/s],p.b [N m s],q.c [rad],dq.c [rad/s],"
+            "p.c [N m s],q.d [rad],dq.d [rad/s],p.d [N m s],closure_gap.rocker [m],closure_angle.rocker [rad],"
+            "energy [J],energy_dissipated [J]");
   int rows = 0;
   for (std::string line; std::getline(csv, line);) ++rows;
   EXPECT_EQ(rows, 11);  // 0, 0.01, ..., 0.1

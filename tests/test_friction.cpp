@@ -116,11 +116,11 @@ TEST(Friction, LoadsReportTheFrictionTorque) {
   ASSERT_TRUE(dynamics.loads(0, y.data(), loads));
   const double expected = -0.2 * std::tanh(2.0) - 0.5 * 0.02;
   const std::vector<LoadColumn>& columns = dynamics.load_columns();
-  EXPECT_NEAR(test::load_of(columns, loads, "tau_friction.hinge"), expected, 1e-14);
+  EXPECT_NEAR(test::load_of(columns, loads, "friction_torque.hinge"), expected, 1e-14);
   EXPECT_NEAR(dynamics.dissipation(y.data(), std::vector<double>{0.02}.data()), -expected * 0.02, 1e-15);
   // The reaction's component about the hinge is the sum of the element torques.
   EXPECT_NEAR(loads.reaction[0][3],
-              test::load_of(columns, loads, "tau_spring.hinge") + test::load_of(columns, loads, "tau_friction.hinge"),
+              test::load_of(columns, loads, "spring_torque.hinge") + test::load_of(columns, loads, "friction_torque.hinge"),
               1e-12);
 }
 

@@ -375,7 +375,8 @@ TEST(Gui, StudyCasesOpenFromTheStudyTab) {
   std::string line, j1_time;
   std::getline(cases, line);
   const std::vector<std::string> header = cells(line);
-  const std::size_t column = std::find(header.begin(), header.end(), "latch_time_s.j1") - header.begin();
+  // The column's name precedes its unit, "latch_time.j1 [s]".
+  const std::size_t column = std::find(header.begin(), header.end(), "latch_time.j1 [s]") - header.begin();
   while (std::getline(cases, line))
     if (line.rfind("case-0003,", 0) == 0 && cells(line).size() > column) j1_time = cells(line)[column];
   ASSERT_FALSE(j1_time.empty());

@@ -74,8 +74,8 @@ TEST_F(Pantograph, LatchesHoldEveryJointAtTheDeployedAngle) {
 
 TEST_F(Pantograph, LoopsStayClosedOverTheWholeRun) {
   const RunSummary s = summarize(scene(), run());
-  EXPECT_LT(s.max_closure_m, 1e-7);
-  EXPECT_LT(s.max_closure_rad, 1e-6);
+  EXPECT_LT(s.max_closure_gap, 1e-7);
+  EXPECT_LT(s.max_closure_angle, 1e-6);
 }
 
 // The same deployment by another way to the same equations: latch times
@@ -87,7 +87,7 @@ void expect_same_deployment(const RunResult& a, const RunResult& b, const Scene&
   ASSERT_EQ(a.trajectory.events.size(), b.trajectory.events.size());
   for (std::size_t k = 0; k < a.trajectory.events.size(); ++k)
     EXPECT_NEAR(a.trajectory.events[k].t, b.trajectory.events[k].t, 1e-5);
-  EXPECT_LT(summarize(scene, b).max_closure_m, 1e-7);
+  EXPECT_LT(summarize(scene, b).max_closure_gap, 1e-7);
 }
 
 TEST_F(Pantograph, SparseGainSolverGivesTheSameDeployment) {
@@ -112,7 +112,7 @@ TEST(PantographOffNominal, LatchedRingDownConvergesWithoutNewtonFailures) {
   ASSERT_EQ(run.status, RunStatus::finished) << describe(run.failure);
   EXPECT_EQ(run.trajectory.events.size(), scene.latches().size());
   EXPECT_LT(run.stats.nonlinear_failures, 100);
-  EXPECT_LT(summarize(scene, run).max_closure_m, 1e-6);
+  EXPECT_LT(summarize(scene, run).max_closure_gap, 1e-6);
 }
 
 TEST(PantographReduction, MatchesTheMethodsFigures) {

@@ -68,7 +68,7 @@ TEST_F(Render, DeployedPantographFromAbove) {
 
   // The panel colour (the blue cells) at panel B2's centre, on its front
   // face (+z, towards the camera).
-  const int b2 = scene.model.find_body("panel_B2");
+  const int b2 = *scene.model.find_body("panel_B2");
   const Eigen::Vector3f centre = poses[b2].to_base(Vec3(0.1, 0.1, 0.0125)).cast<float>();
   const auto [px, py] = project(camera, centre, w, h);
   const std::uint8_t* c = image.pixel(px, py);

@@ -8,7 +8,7 @@
 
 #include "unfurl/io/run_files.hpp"
 #include "support.hpp"
-#include "unfurl/io/trajectory_csv.hpp"
+#include "unfurl/io/run_files.hpp"
 
 namespace unfurl {
 namespace {
@@ -26,17 +26,23 @@ TEST(LoadsFile, HasTheColumnsTheSceneHasAndReadsBack) {
   std::ifstream in(dir / "loads.csv");
   std::string header;
   std::getline(in, header);
-  EXPECT_EQ(header.find("t,tau_spring.j1,tau_damper.j1,tau_latch.j1,reaction.j1.fx,"), 0u) << header;
-  EXPECT_EQ(header.find("tau_spring.j9"), std::string::npos) << "no spring on a cross pivot";
-  EXPECT_NE(header.find(",reaction.j9.mz,"), std::string::npos);
-  EXPECT_NE(header.find(",loop_force.A1.fy,loop_force.A1.fz,loop_force.A1.mx,"), std::string::npos) << header;
+  EXPECT_EQ(header.find("t [s],spring_torque.j1 [N m],damper_torque.j1 [N m],latch_torque.j1 [N m],"
+                        "hinge_force.j1.x [N; child body frame],"),
+            0u)
+      << header;
+  EXPECT_EQ(header.find("spring_torque.j9"), std::string::npos) << "no spring on a cross pivot";
+  EXPECT_NE(header.find(",hinge_moment.j9.z [N m; child body frame about the hinge point],"), std::string::npos);
+  EXPECT_NE(header.find(",loop_force.A1.y [N; split body frame],loop_force.A1.z [N; split body frame],"
+                        "loop_moment.A1.x [N m; split body frame],"),
+            std::string::npos)
+      << header;
   const Trajectory back = io::read_trajectory_csv(scene, (dir / "trajectory.csv").string());
   ASSERT_EQ(back.samples.size(), run.trajectory.samples.size());
   EXPECT_EQ(back.loop_components.size(), 9u);
   for (std::size_t k = 0; k < back.samples.size(); ++k)
     for (int j = 0; j < scene.model.size(); ++j) {
       EXPECT_EQ(back.samples[k].loads.reaction[j], run.trajectory.samples[k].loads.reaction[j]);
-      const std::string spring = "tau_spring." + scene.model.joints[j].name;
+      const std::string spring = "spring_torque." + scene.model.joints[j].name;
       if (find_load_column(run.trajectory.load_columns, spring) < 0) continue;
       EXPECT_EQ(test::load_of(back.load_columns, back.samples[k].loads, spring),
                 test::load_of(run.trajectory.load_columns, run.trajectory.samples[k].loads, spring));

@@ -16,7 +16,7 @@ TEST(PantographStowed, RunsToTheEndAndReportsWhichJointsLatched) {
   const RunSummary s = summarize(scene, run);
   // Every latch is accounted for: latched with a time, or listed unlatched.
   EXPECT_EQ(s.latch_times.size() + s.unlatched.size(), scene.latches().size());
-  EXPECT_LT(s.max_closure_m, 1e-5);
+  EXPECT_LT(s.max_closure_gap, 1e-5);
   std::printf("stowed start: %zu of 8 latched;", s.latch_times.size());
   for (const auto& [joint, t] : s.latch_times) std::printf(" %s@%.4f", joint.c_str(), t);
   std::printf("\n");

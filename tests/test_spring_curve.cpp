@@ -109,7 +109,7 @@ TEST(LatchFreePlay, TheJointRattlesFreelyThenBitesHarder) {
   for (const Sample& s : loose.trajectory.samples) {
     if (s.t <= loose.trajectory.events[0].t || std::abs(s.y[0]) >= 0.05) continue;
     ++inside;
-    EXPECT_EQ(test::load_of(loose.trajectory.load_columns, s.loads, "tau_latch.hinge"), 0.0) << s.t;
+    EXPECT_EQ(test::load_of(loose.trajectory.load_columns, s.loads, "latch_torque.hinge"), 0.0) << s.t;
   }
   EXPECT_GT(inside, 0);
   // It bites at the edge of the play, faster than a tight latch catches:

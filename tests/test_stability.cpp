@@ -63,7 +63,7 @@ TEST(SingularStart, ExactStowedStateReportsTheBranchOfEachLoop) {
   // each chain stayed folded, so their latches did not engage.
   EXPECT_EQ(r.notes[0], "loop A1: held j2, j6; opened j1, j5, j9");
   EXPECT_EQ(r.latches_engaged, 4);
-  EXPECT_LT(r.max_closure_m, 1e-6);
+  EXPECT_LT(r.max_closure_gap, 1e-6);
 }
 
 TEST(SingularStart, DeployedStateIsLatchedFromTheStartAndStays) {
@@ -72,7 +72,7 @@ TEST(SingularStart, DeployedStateIsLatchedFromTheStartAndStays) {
   ASSERT_EQ(r.status, RunStatus::finished) << r.failure;
   EXPECT_EQ(r.latches_engaged, 8);
   for (const std::string& note : r.notes) EXPECT_NE(note.find("opened none"), std::string::npos) << note;
-  EXPECT_LT(r.max_closure_m, 1e-6);
+  EXPECT_LT(r.max_closure_gap, 1e-6);
 }
 
 TEST(SingularStart, OpenLoopIsPulledShut) {

@@ -165,12 +165,12 @@ TEST(StudyCases, FailedCasesReportWhatHappened) {
   const auto cases = study_cases(study);
   const CaseResult ok = case_result(study, nominal, cases[0], simulate_case(study, cases[0]));
   EXPECT_EQ(ok.status, CaseStatus::deployed);
-  EXPECT_NEAR(output_value(columns, ok, "deployment_time_s"), 7.3921759, 1e-5);
+  EXPECT_NEAR(output_value(columns, ok, "deployment_time"), 7.3921759, 1e-5);
   const CaseResult latch = case_result(study, nominal, cases[1], simulate_case(study, cases[1]));
   EXPECT_EQ(latch.status, CaseStatus::not_deployed);
   EXPECT_EQ(latch.reason, "never latched: j3");
-  EXPECT_TRUE(std::isnan(output_value(columns, latch, "latch_time_s.j3")));
-  EXPECT_FALSE(std::isnan(output_value(columns, latch, "latch_time_s.j2")));
+  EXPECT_TRUE(std::isnan(output_value(columns, latch, "latch_time.j3")));
+  EXPECT_FALSE(std::isnan(output_value(columns, latch, "latch_time.j2")));
   const CaseResult stuck = case_result(study, nominal, cases[2], simulate_case(study, cases[2]));
   EXPECT_EQ(stuck.status, CaseStatus::not_deployed);
   // j1 (the overlay joint) stays stowed: its stop, as stiff as a latch
@@ -181,7 +181,7 @@ TEST(StudyCases, FailedCasesReportWhatHappened) {
   // (8.05 s against 7.39 s).
   const CaseResult cold = case_result(study, nominal, cases[3], simulate_case(study, cases[3]));
   EXPECT_EQ(cold.status, CaseStatus::deployed) << cold.reason;
-  EXPECT_GT(output_value(columns, cold, "deployment_time_s"), 7.3921759 + 0.1);
+  EXPECT_GT(output_value(columns, cold, "deployment_time"), 7.3921759 + 0.1);
 }
 
 TEST(StudyStatistics, CountsAndDriversOverDeployedCasesWithoutInjectedFailures) {
@@ -205,7 +205,7 @@ TEST(StudyStatistics, CountsAndDriversOverDeployedCasesWithoutInjectedFailures) 
   EXPECT_DOUBLE_EQ(st.outputs[0].min, 1.0);
   EXPECT_DOUBLE_EQ(st.outputs[0].max, 10.0);
   ASSERT_FALSE(st.drivers.empty());
-  EXPECT_EQ(st.drivers[0].output, "deployment_time_s");
+  EXPECT_EQ(st.drivers[0].output, "deployment_time");
   EXPECT_DOUBLE_EQ(st.drivers[0].rho, -1.0);
 }
 

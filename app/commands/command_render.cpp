@@ -19,7 +19,7 @@
 #include "render_options.hpp"
 #include "scene_options.hpp"
 #include "unfurl/sim/simulation.hpp"
-#include "unfurl/io/trajectory_csv.hpp"
+#include "unfurl/io/run_files.hpp"
 #include "unfurl/render/plot_renderer.hpp"
 #include "unfurl/render/trajectory_plots.hpp"
 #include "unfurl/io/video_pipe.hpp"

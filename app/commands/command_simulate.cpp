@@ -58,11 +58,11 @@ void print_summary(const Scene& scene, const RunResult& result, const RunSummary
     for (const auto& joint : s.unlatched) std::printf("               %-10s never latched\n", joint.c_str());
   }
   if (!scene.loops.empty()) {
-    std::printf("loop gap     max %.3g m, %.3g rad (%.3g m, %.3g rad before the first latch)\n", s.max_closure_m,
-                s.max_closure_rad, s.max_closure_m_before_latch, s.max_closure_rad_before_latch);
+    std::printf("loop gap     max %.3g m, %.3g rad (%.3g m, %.3g rad before the first latch)\n", s.max_closure_gap,
+                s.max_closure_angle, s.max_closure_gap_before_latch, s.max_closure_angle_before_latch);
   }
   const RunSummary::NamedPeak* latch = nullptr;
-  for (const auto& p : s.latch_peak_torque)
+  for (const auto& p : s.peak_latch_torque)
     if (!std::isnan(p.peak.t) && (!latch || p.peak.value > latch->peak.value)) latch = &p;
   if (latch)
     std::printf("loads        peak latch torque %.4g N m at %s, t = %.6f s\n", latch->peak.value, latch->joint.c_str(),

@@ -23,13 +23,13 @@ std::vector<RunFigure> run_figures(const RunSummary& s) {
   for (const auto& [joint, t] : s.latch_times) last_latch = std::max(last_latch, t);
   // Deployed: every latch engaged; the deployment ends at the last of them.
   figures.push_back({"deployment time, s", s.unlatched.empty() ? last_latch : kNone});
-  double peak = s.latch_peak_torque.empty() ? kNone : 0;
-  for (const auto& p : s.latch_peak_torque) peak = std::max(peak, p.peak.value);
+  double peak = s.peak_latch_torque.empty() ? kNone : 0;
+  for (const auto& p : s.peak_latch_torque) peak = std::max(peak, p.peak.value);
   figures.push_back({"peak latch torque, N m", peak});
   figures.push_back({"final energy, J", s.energy_final});
   figures.push_back({"dissipated, J", s.energy_dissipated});
-  figures.push_back({"largest gap, m", s.max_closure_m});
-  figures.push_back({"largest gap, rad", s.max_closure_rad});
+  figures.push_back({"largest gap, m", s.max_closure_gap});
+  figures.push_back({"largest gap, rad", s.max_closure_angle});
   for (const auto& [joint, t] : s.latch_times) figures.push_back({"latch " + joint + ", s", t});
   for (const std::string& joint : s.unlatched) figures.push_back({"latch " + joint + ", s", kNone});
   return figures;

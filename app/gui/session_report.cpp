@@ -17,7 +17,7 @@ void write_session_report(const GuiState& state, const std::string& path) {
     json.begin_object(key);
     json.value("samples", static_cast<long>(tr.samples.size()));
     json.value("t_end", tr.empty() ? 0.0 : tr.t_end());
-    json.begin_object("latch_times");
+    json.begin_object("latch_time");
     for (const LatchEvent& e : tr.events) json.value(state.scene.model.joints[e.joint].name, e.t);
     json.end_object();
     json.end_object();

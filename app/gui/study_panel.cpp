@@ -104,9 +104,9 @@ void study_panel(GuiState& state, Requests& requests) {
   ImGui::TextDisabled("deployment time");
   ImGui::SameLine(half + 8);
   ImGui::TextDisabled("peak latch torque");
-  histogram(b, "deployment_time_s", "s", half);
+  histogram(b, "deployment_time", "s", half);
   ImGui::SameLine(half + 8);
-  histogram(b, "peak_latch_torque_Nm", "N m", half);
+  histogram(b, "peak_latch_torque", "N m", half);
   if (b.shown.empty())
     ImGui::TextDisabled("Click a case to show it (it re-runs here; the panel's edits apply on top).");
   else

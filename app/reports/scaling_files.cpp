@@ -20,12 +20,12 @@ void write_scaling_csv(const ScalingReport& report, const std::string& dir) {
   rhs.commit();
   io::OutputFile runs(dir + "/run_scaling.csv");
   runs.stream() << "family,size,bodies,states,method,status,t_reached,wall_time_s,steps,rhs_calls,jacobians,"
-                   "linear_iterations,max_closure_m\n";
+                   "linear_iterations,max_closure_gap\n";
   for (const RunTiming& t : report.runs)
     runs.stream() << t.scene.family << ',' << t.scene.size << ',' << t.bodies << ',' << t.states << ",\"" << t.method
                   << "\"," << run_status_name(t.status) << ',' << format_number(t.t_reached) << ','
                   << format_number(t.wall_time_s) << ',' << t.steps << ',' << t.rhs_calls << ',' << t.jacobians << ','
-                  << t.linear_iterations << ',' << format_number(t.max_closure_m) << '\n';
+                  << t.linear_iterations << ',' << format_number(t.max_closure_gap) << '\n';
   runs.commit();
 }
 
@@ -64,7 +64,7 @@ void write_scaling_markdown(const ScalingReport& report, const std::vector<std::
   for (const RunTiming& t : report.runs) {
     const std::string result = t.status == RunStatus::finished ? "finished" : t.failure;
     std::snprintf(buf, sizeof buf, "| %.3g | %ld | %ld | %ld | %ld | %.2e |\n", t.wall_time_s, t.steps, t.rhs_calls,
-                  t.jacobians, t.linear_iterations, t.max_closure_m);
+                  t.jacobians, t.linear_iterations, t.max_closure_gap);
     out << "| " << t.scene.family << ' ' << t.scene.size << " | " << t.bodies << " | " << t.states << " | " << t.method
         << " | " << io::table_cell(result) << ' ' << buf;
   }

@@ -41,7 +41,7 @@ void write_stability_csv(const StabilityReport& report, const std::string& path)
   io::OutputFile file(path);
   std::ostream& out = file.stream();
   out << "group,case,scene,status,as_expected,failed_check,t_reached,wall_time_s,steps,rhs_calls,min_step,bodies,"
-         "loop_components,energy_initial,energy_final,energy_drift,max_closure_m,max_closure_rad,"
+         "loop_components,energy_initial,energy_final,energy_drift,max_closure_gap,max_closure_angle,"
          "latches_engaged,latches_total\n";
   for (const StabilityResult& r : report.results)
     out << r.spec.group << ',' << '"' << r.spec.label << '"' << ',' << r.spec.scene << ',' << run_status_name(r.status)
@@ -49,7 +49,7 @@ void write_stability_csv(const StabilityReport& report, const std::string& path)
         << format_number(r.wall_time_s) << ',' << r.steps << ',' << r.rhs_calls << ',' << format_number(r.min_step)
         << ',' << r.bodies << ',' << r.loop_components << ',' << format_number(r.energy_initial) << ','
         << format_number(r.energy_final) << ',' << format_number(r.energy_drift) << ','
-        << format_number(r.max_closure_m) << ',' << format_number(r.max_closure_rad) << ',' << r.latches_engaged << ',' << r.latches_total << '\n';
+        << format_number(r.max_closure_gap) << ',' << format_number(r.max_closure_angle) << ',' << r.latches_engaged << ',' << r.latches_total << '\n';
   file.commit();
 }
 
@@ -131,7 +131,7 @@ void write_stability_markdown(const StabilityReport& report, const std::vector<s
     out << "| " << r.spec.label << " | " << outcome(r) << " | " << fixed(r.t_reached, "%g") << " | " << r.steps
         << " | " << fixed(r.wall_time_s, "%.3g") << " | " << sci(r.min_step) << " | " << fixed(r.energy_initial, "%.6g")
         << " -> " << fixed(r.energy_final, "%.6g") << " | " << sci(r.energy_drift) << " | "
-        << (r.loop_components ? sci(r.max_closure_m) + " / " + sci(r.max_closure_rad) : "no loops") << " | "
+        << (r.loop_components ? sci(r.max_closure_gap) + " / " + sci(r.max_closure_angle) : "no loops") << " | "
         << r.latches_engaged << " of " << r.latches_total << " |\n";
     for (const std::string& note : r.notes) out << "|  | " << io::table_cell(note) << " | | | | | | | | |\n";
     const bool last_of_group = &r == &report.results.back() || (&r + 1)->spec.group != group;

@@ -105,11 +105,11 @@ render::PlotSpec overlay(const io::StudyReport& report) {
 
 std::vector<std::string> write_study_plots(const io::StudyReport& report, const std::string& dir) {
   std::vector<std::pair<render::PlotSpec, std::string>> plots;
-  if (deployed_values(report, "deployment_time_s").size() >= 2)
-    plots.emplace_back(histogram(report, "deployment_time_s", "deployment time (last latch engaged), s"),
+  if (deployed_values(report, "deployment_time").size() >= 2)
+    plots.emplace_back(histogram(report, "deployment_time", "deployment time (last latch engaged), s"),
                        "hist_deployment_time.png");
-  if (deployed_values(report, "peak_latch_torque_Nm").size() >= 2)
-    plots.emplace_back(histogram(report, "peak_latch_torque_Nm", "peak latch torque over all latches, N m"),
+  if (deployed_values(report, "peak_latch_torque").size() >= 2)
+    plots.emplace_back(histogram(report, "peak_latch_torque", "peak latch torque over all latches, N m"),
                        "hist_peak_latch_torque.png");
   for (const Driver& d : report.statistics.drivers) plots.emplace_back(scatter(report, d), "scatter_" + d.output + ".png");
   plots.emplace_back(overlay(report), "overlay_angles.png");

@@ -1,97 +1,177 @@
 #include "unfurl/io/run_files.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
 
 #include "unfurl/io/json_writer.hpp"
+#include "unfurl/io/run_columns.hpp"
 #include "unfurl/sim/number_text.hpp"
 #include "unfurl/io/output_file.hpp"
 
 namespace unfurl::io {
 
-void write_trajectory_csv(const Scene& scene, const Trajectory& trajectory, const std::string& path) {
-  const Model& model = scene.model;
-  const StateLayout& L = trajectory.layout;
+namespace {
+
+// Writes columns of every sample as a CSV file with its header.
+void write_columns(const std::vector<RunColumn>& columns, const Trajectory& trajectory, const std::string& path) {
   OutputFile file(path);
   std::ostream& out = file.stream();
-  // One-coordinate joints: q, its rate dq and p side by side; then each
-  // position of a ball, planar or free joint with its q', then their momenta.
-  const int n1 = model.scalar_coordinates;
-  const bool bus = model.free_floating();
-  out << "t";
-  for (int c = 0; c < n1; ++c) {
-    const std::string name = model.position_name(c);
-    out << ",q." << name << ",dq." << name << ",p." << name;
-  }
-  for (int c = n1; c < model.nq; ++c) out << ",q." << model.position_name(c) << ",dq." << model.position_name(c);
-  for (int c = n1; c < model.nv; ++c) out << ",p." << model.velocity_name(c);
-  for (const Loop& loop : scene.loops) out << ",closure_m." << loop.name << ",closure_rad." << loop.name;
-  // Each ball or free joint's orientation as a rotation vector and its
-  // child's angular rate (its own frame); the system's momentum.
-  std::vector<int> turning;
-  for (int i = 0; i < model.size(); ++i)
-    if (model.joints[i].has_quaternion()) turning.push_back(i);
-  for (int i : turning) {
-    for (const char* axis : {"x", "y", "z"}) out << ",rotation_vector." << model.joints[i].name << '.' << axis;
-    for (const char* axis : {"x", "y", "z"}) out << ",rate." << model.joints[i].name << '.' << axis;
-  }
-  if (bus) {
-    for (const char* axis : {"x", "y", "z"}) out << ",momentum." << axis;
-    for (const char* axis : {"x", "y", "z"}) out << ",angular_momentum." << axis;
-  }
-  out << ",energy,energy_dissipated\n";
+  for (std::size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << header_cell(columns[c]);
+  out << '\n';
   for (const Sample& s : trajectory.samples) {
-    out << format_number(s.t);
-    for (int c = 0; c < n1; ++c)
-      out << ',' << format_number(s.y[L.q() + c]) << ',' << format_number(s.q_dot[c]) << ','
-          << format_number(s.y[L.p() + c]);
-    for (int c = n1; c < model.nq; ++c) out << ',' << format_number(s.y[L.q() + c]) << ',' << format_number(s.q_dot[c]);
-    for (int c = n1; c < model.nv; ++c) out << ',' << format_number(s.y[L.p() + c]);
-    for (std::size_t l = 0; l < scene.loops.size(); ++l)
-      out << ',' << format_number(s.closure[l].distance) << ',' << format_number(s.closure[l].angle);
-    for (int i : turning) {
-      const JointOrientation motion = joint_orientation(model, i, s.y.data() + L.q(), s.q_dot.data());
-      for (const Vec3* x : {&motion.rotation_vector, &motion.rate})
-        for (int a = 0; a < 3; ++a) out << ',' << format_number((*x)[a]);
-    }
-    if (bus)
-      for (const Vec3* x : {&s.momentum.linear, &s.momentum.angular})
-        for (int a = 0; a < 3; ++a) out << ',' << format_number((*x)[a]);
-    out << ',' << format_number(s.energy.total()) << ',' << format_number(s.energy.dissipated) << '\n';
+    for (std::size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << format_number(columns[c].value(s));
+    out << '\n';
   }
   file.commit();
 }
 
-void write_loads_csv(const Scene& scene, const Trajectory& trajectory, const std::string& path) {
-  const Model& model = scene.model;
-  const std::vector<LoadColumn>& columns = trajectory.load_columns;
-  // Each joint's element columns, then its reaction; the loops' forces;
-  // the columns of elements that are not on a joint.
-  std::vector<std::vector<int>> of_joint(model.size());
-  std::vector<int> apart;
-  for (std::size_t c = 0; c < columns.size(); ++c)
-    (columns[c].joint >= 0 ? of_joint[columns[c].joint] : apart).push_back(static_cast<int>(c));
-  OutputFile file(path);
-  std::ostream& out = file.stream();
-  out << "t";
-  for (int j = 0; j < model.size(); ++j) {
-    for (int c : of_joint[j]) out << ',' << columns[c].name;
-    for (int a = 0; a < 6; ++a) out << ",reaction." << model.joints[j].name << '.' << wrench_component_name(a);
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> cells;
+  std::stringstream ss(line);
+  for (std::string cell; std::getline(ss, cell, ',');) cells.push_back(cell);
+  return cells;
+}
+
+double parse(const std::string& text, const std::string& where) {
+  std::size_t used = 0;
+  double x = NAN;
+  try {
+    x = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
   }
-  for (const LoopComponent& c : trajectory.loop_components)
-    out << ",loop_force." << scene.loops[c.loop].name << '.' << wrench_component_name(c.axis);
-  for (int c : apart) out << ',' << columns[c].name;
-  out << '\n';
-  for (const Sample& s : trajectory.samples) {
-    out << format_number(s.t);
-    for (int j = 0; j < model.size(); ++j) {
-      for (int c : of_joint[j]) out << ',' << format_number(s.loads.element[c]);
-      for (int a = 0; a < 6; ++a) out << ',' << format_number(s.loads.reaction[j][a]);
+  if (used != text.size()) throw std::runtime_error(where + ": expected a number, got '" + text + "'");
+  return x;
+}
+
+// A CSV file's header: each column's name (units and frames set aside) to
+// its index.
+std::map<std::string, int> header_of(const std::string& line) {
+  std::map<std::string, int> index;
+  const std::vector<std::string> cells = split(line);
+  for (std::size_t c = 0; c < cells.size(); ++c) index[column_name(cells[c])] = static_cast<int>(c);
+  return index;
+}
+
+// Reads the values of `columns` from a file's rows into samples: the
+// samples already there (loads.csv beside a trajectory) or new ones.
+// Columns the file lacks are an error where `required`.
+void read_columns(const std::string& path, const std::vector<RunColumn>& columns, std::istream& in,
+                  const std::map<std::string, int>& header, const Sample& blank, std::vector<Sample>& samples,
+                  bool append) {
+  std::vector<std::pair<const RunColumn*, int>> read;
+  for (const RunColumn& c : columns) {
+    if (!c.set) continue;
+    const auto at = header.find(c.name);
+    if (at == header.end()) throw std::runtime_error(path + ":1: no column '" + c.name + "'");
+    read.emplace_back(&c, at->second);
+  }
+  std::string line;
+  for (std::size_t k = 0; std::getline(in, line); ++k) {
+    const std::string where = path + ":" + std::to_string(k + 2);
+    const std::vector<std::string> cells = split(line);
+    if (cells.size() != header.size())
+      throw std::runtime_error(where + ": expected " + std::to_string(header.size()) + " columns");
+    if (!append && k >= samples.size()) throw std::runtime_error(where + ": more rows than trajectory.csv");
+    Sample s = append ? blank : samples[k];
+    for (const auto& [column, at] : read) column->set(s, parse(cells[at], where));
+    if (append) {
+      if (!samples.empty() && !(s.t > samples.back().t)) throw std::runtime_error(where + ": times must increase");
+      samples.push_back(std::move(s));
+    } else {
+      if (std::abs(s.t - samples[k].t) > 1e-9 * std::max(1.0, std::abs(s.t)))
+        throw std::runtime_error(where + ": its time is not trajectory.csv's");
+      samples[k] = std::move(s);
     }
-    for (double f : s.loads.loop_force) out << ',' << format_number(f);
-    for (int c : apart) out << ',' << format_number(s.loads.element[c]);
-    out << '\n';
   }
-  file.commit();
+}
+
+void read_events(const Scene& scene, const std::string& path, Trajectory& tr) {
+  std::ifstream in(path);
+  if (!in) return;
+  std::string line;
+  std::getline(in, line);
+  const std::vector<const Latch*> latches = scene.latches();
+  for (int n = 2; std::getline(in, line); ++n) {
+    const auto cells = split(line);
+    if (cells.size() != 3) throw std::runtime_error(path + ":" + std::to_string(n) + ": expected t,event,joint");
+    int latch = -1;
+    for (std::size_t l = 0; l < latches.size(); ++l)
+      if (scene.model.joints[latches[l]->joint].name == cells[2]) latch = static_cast<int>(l);
+    if (latch < 0) throw std::runtime_error(path + ":" + std::to_string(n) + ": no latch on joint '" + cells[2] + "'");
+    tr.events.push_back({parse(cells[0], path + ":" + std::to_string(n)), latch, latches[latch]->joint});
+  }
+}
+
+// The active loop components a loads.csv was written with, from its
+// loop_force and loop_moment columns.
+std::vector<LoopComponent> loop_components_of(const Scene& scene, const std::map<std::string, int>& header,
+                                              const std::string& path) {
+  std::vector<std::pair<int, LoopComponent>> found;
+  for (const auto& [name, at] : header) {
+    const bool force = name.rfind("loop_force.", 0) == 0, moment = name.rfind("loop_moment.", 0) == 0;
+    if (!force && !moment) continue;
+    const std::string rest = name.substr(force ? 11 : 12);
+    const auto dot = rest.rfind('.');
+    int loop = -1, axis = -1;
+    for (std::size_t l = 0; l < scene.loops.size(); ++l)
+      if (dot != std::string::npos && scene.loops[l].name == rest.substr(0, dot)) loop = static_cast<int>(l);
+    for (int a = 0; a < 3; ++a)
+      if (dot != std::string::npos && rest.substr(dot + 1) == std::string(1, "xyz"[a])) axis = force ? a : a + 3;
+    if (loop < 0 || axis < 0) throw std::runtime_error(path + ":1: no loop component '" + name + "' in the scene");
+    found.push_back({at, {loop, axis}});
+  }
+  std::sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<LoopComponent> components;
+  for (const auto& f : found) components.push_back(f.second);
+  return components;
+}
+
+}  // namespace
+
+void write_trajectory_csv(const Scene& scene, const Trajectory& trajectory, const std::string& path) {
+  write_columns(trajectory_columns(scene, trajectory), trajectory, path);
+}
+
+void write_loads_csv(const Scene& scene, const Trajectory& trajectory, const std::string& path) {
+  write_columns(load_file_columns(scene, trajectory), trajectory, path);
+}
+
+Trajectory read_trajectory_csv(const Scene& scene, const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path + ": cannot open the trajectory");
+  std::string line;
+  if (!std::getline(in, line)) throw std::runtime_error(path + ": empty file");
+  const Model& model = scene.model;
+  Trajectory tr;
+  tr.layout.nq = model.nq;
+  tr.layout.nv = model.nv;
+  tr.load_columns = scene.load_columns();
+  const std::filesystem::path dir = std::filesystem::path(path).parent_path();
+  // loads.csv beside it, when there is one, says which loop components the
+  // run kept.
+  std::ifstream loads((dir / "loads.csv").string());
+  std::string loads_line;
+  const bool with_loads = loads && std::getline(loads, loads_line);
+  if (with_loads) tr.loop_components = loop_components_of(scene, header_of(loads_line), (dir / "loads.csv").string());
+  try {
+    read_columns(path, trajectory_columns(scene, tr), in, header_of(line), empty_sample(scene, tr), tr.samples, true);
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    if (what.find(": no column '") == std::string::npos) throw;
+    throw std::runtime_error(what + " (was it written for scene '" + scene.name + "'?)");
+  }
+  if (tr.samples.empty()) throw std::runtime_error(path + ": no samples");
+  read_events(scene, (dir / "events.csv").string(), tr);
+  if (with_loads)
+    read_columns((dir / "loads.csv").string(), load_file_columns(scene, tr), loads, header_of(loads_line),
+                 empty_sample(scene, tr), tr.samples, false);
+  return tr;
 }
 
 void write_events_csv(const Scene& scene, const Trajectory& trajectory, const std::string& path) {
@@ -101,6 +181,39 @@ void write_events_csv(const Scene& scene, const Trajectory& trajectory, const st
     file.stream() << format_number(e.t) << ",latch," << scene.model.joints[e.joint].name << '\n';
   file.commit();
 }
+
+namespace {
+
+// "units": the unit of every number above with one; per joint where
+// joints differ (a slider's force is in N where a hinge's torque is in N m).
+void write_summary_units(JsonWriter& json, const Scene& scene, const RunSummary& summary) {
+  const Model& m = scene.model;
+  json.begin_object("units");
+  for (const char* key : {"t_end", "sample", "dt", "t_reached", "wall_time", "min_step", "min_step_after_restart"})
+    json.value(key, "s");
+  json.value("latch_time", "s");
+  json.value("max_closure_gap", "m").value("max_closure_angle", "rad");
+  json.value("max_closure_gap_before_latch", "m").value("max_closure_angle_before_latch", "rad");
+  const auto per_joint = [&](const char* key, const std::vector<RunSummary::NamedPeak>& peaks, bool moment) {
+    json.begin_object(key);
+    for (const auto& [joint, peak] : peaks) {
+      const std::optional<int> j = m.find_joint(joint);
+      const bool slider = j && m.joints[*j].type == JointType::prismatic;
+      json.value(joint, moment && !slider ? "N m" : "N");
+    }
+    json.end_object();
+  };
+  per_joint("peak_latch_torque", summary.peak_latch_torque, true);
+  json.value("peak_hinge_force", "N").value("peak_hinge_moment", "N m");
+  json.value("energy_initial", "J").value("energy_final", "J").value("energy_dissipated", "J");
+  json.begin_object("final_q");
+  for (int c = 0; c < m.nq; ++c) json.value(m.position_name(c), m.position_unit(c));
+  json.end_object();
+  if (summary.free_bus) json.value("bus_peak_rate", "rad/s").value("bus_final_attitude_change", "rad");
+  json.end_object();
+}
+
+}  // namespace
 
 void write_summary_json(const Scene& scene, const RunResult& result, const RunSummary& summary,
                         const std::string& path) {
@@ -121,7 +234,7 @@ void write_summary_json(const Scene& scene, const RunResult& result, const RunSu
     json.end_object();
   }
   json.value("t_reached", summary.t_reached);
-  json.value("wall_time_s", result.wall_time_s);
+  json.value("wall_time", result.wall_time_s);
   json.value("steps", result.stats.steps).value("rhs_evals", result.rhs_calls);
   json.value("jacobian_product_evals", result.jacobian_product_evals);
   json.value("jacobian_evals", result.stats.jacobian_evals);
@@ -136,16 +249,16 @@ void write_summary_json(const Scene& scene, const RunResult& result, const RunSu
   json.value("grazes", result.stats.grazes);
   json.value("state_size", result.trajectory.layout.size());
   json.value("loop_components", result.trajectory.layout.m);
-  json.begin_object("latch_times");
+  json.begin_object("latch_time");
   for (const auto& [joint, t] : summary.latch_times) json.value(joint, t);
   json.end_object();
   json.begin_array("unlatched");
   for (const std::string& joint : summary.unlatched) json.value("", joint);
   json.end_array();
-  json.value("max_closure_m", summary.max_closure_m);
-  json.value("max_closure_rad", summary.max_closure_rad);
-  json.value("max_closure_m_before_latch", summary.max_closure_m_before_latch);
-  json.value("max_closure_rad_before_latch", summary.max_closure_rad_before_latch);
+  json.value("max_closure_gap", summary.max_closure_gap);
+  json.value("max_closure_angle", summary.max_closure_angle);
+  json.value("max_closure_gap_before_latch", summary.max_closure_gap_before_latch);
+  json.value("max_closure_angle_before_latch", summary.max_closure_angle_before_latch);
   auto peaks = [&](const char* key, const std::vector<RunSummary::NamedPeak>& list) {
     json.begin_object(key);
     for (const auto& [joint, peak] : list) {
@@ -154,9 +267,9 @@ void write_summary_json(const Scene& scene, const RunResult& result, const RunSu
     }
     json.end_object();
   };
-  peaks("latch_peak_torque", summary.latch_peak_torque);
-  peaks("hinge_peak_force", summary.hinge_peak_force);
-  peaks("hinge_peak_moment", summary.hinge_peak_moment);
+  peaks("peak_latch_torque", summary.peak_latch_torque);
+  peaks("peak_hinge_force", summary.peak_hinge_force);
+  peaks("peak_hinge_moment", summary.peak_hinge_moment);
   json.value("energy_initial", summary.energy_initial);
   json.value("energy_final", summary.energy_final);
   json.value("energy_dissipated", summary.energy_dissipated);
@@ -171,6 +284,7 @@ void write_summary_json(const Scene& scene, const RunResult& result, const RunSu
     json.value("angular", summary.free_bus->angular_momentum_drift);
     json.end_object();
   }
+  write_summary_units(json, scene, summary);
   json.end_object();
   file.commit();
 }

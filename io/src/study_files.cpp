@@ -111,7 +111,10 @@ std::string read_text_file(const std::string& path) {
 std::string cases_header(const CaseColumns& columns) {
   std::string h = "case,failure,status,reason";
   for (const std::string& c : columns.inputs) h += "," + csv_field(c);
-  for (const std::string& c : columns.outputs) h += "," + csv_field(c);
+  for (const std::string& c : columns.outputs) {
+    const std::string unit = output_unit(c);
+    h += "," + csv_field(unit.empty() ? c : c + " [" + unit + "]");
+  }
   return h;
 }
 
@@ -183,7 +186,7 @@ void write_study_summary_json(const StudyReport& report, const std::string& path
   json.value("cases", static_cast<long>(report.total_cases)).value("finished", st.cases);
   json.begin_object("status").value("deployed", st.deployed).value("not_deployed", st.not_deployed).value("failed", st.failed).end_object();
   json.value("fraction_deployed", st.cases ? static_cast<double>(st.deployed) / static_cast<double>(st.cases) : 0.0);
-  json.value("resumed", report.resumed).value("wall_time_s", report.wall_time_s).value("processes", report.processes).value("jobs", report.jobs);
+  json.value("resumed", report.resumed).value("wall_time", report.wall_time_s).value("processes", report.processes).value("jobs", report.jobs);
   json.begin_object("outputs");
   for (const OutputStatistics& o : st.outputs) {
     json.begin_object(o.output).value("n", o.n).value("min", o.min).value("max", o.max).value("mean", o.mean);
@@ -248,8 +251,8 @@ void write_study_markdown(const StudyReport& report, const std::vector<std::stri
     for (const CaseResult& r : report.results) {
       if (r.failure.empty() && r.status == CaseStatus::deployed) continue;
       md << "| " << r.id << " | " << (r.failure.empty() ? "-" : r.failure) << " | " << case_status_name(r.status) << " | "
-         << (r.reason.empty() ? "-" : cell(r.reason)) << " | " << fmt(output_value(report.columns, r, "deployment_time_s"))
-         << " | " << fmt(output_value(report.columns, r, "peak_latch_torque_Nm")) << " |\n";
+         << (r.reason.empty() ? "-" : cell(r.reason)) << " | " << fmt(output_value(report.columns, r, "deployment_time"))
+         << " | " << fmt(output_value(report.columns, r, "peak_latch_torque")) << " |\n";
     }
   }
   if (!pictures.empty()) {

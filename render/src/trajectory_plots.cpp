@@ -84,7 +84,7 @@ void add_curves(PlotSpec& spec, PlotKind kind, const Scene& scene, const Traject
         const int j = joints[k];
         const std::string& name = model.joints[j].name;
         const ImU32 color = palette(static_cast<int>(k));
-        const int latch = find_load_column(tr.load_columns, "tau_latch." + name);
+        const int latch = find_load_column(tr.load_columns, "latch_torque." + name);
         if (latch >= 0)
           added.push_back(series(tr, "latch " + name, color, [latch](const Sample& s) { return s.loads.element[latch]; }));
         added.push_back(series(tr, "|hinge moment| " + name, color, [j](const Sample& s) {

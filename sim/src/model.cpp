@@ -72,11 +72,48 @@ std::string Model::velocity_name(int c) const {
   return joints[i].name + "." + entry_name(joints[i].type, c - first_velocity[i].value, false);
 }
 
-int Model::find_body(const std::string& name) const {
+namespace {
+
+// Whether velocity entry k of a joint of this type is a translation.
+bool translational_rate(JointType type, int k) {
+  switch (type) {
+    case JointType::prismatic: return true;
+    case JointType::planar: return k < 2;
+    case JointType::free: return k < 3;
+    default: return false;
+  }
+}
+
+}  // namespace
+
+std::string Model::position_unit(int c) const {
+  const int i = joint_of_position[c], k = c - first_position[i].value;
+  const JointType type = joints[i].type;
+  if (joints[i].has_quaternion() && k >= joints[i].quaternion_offset()) return "";
+  return translational_rate(type, k) ? "m" : "rad";
+}
+
+std::string Model::velocity_unit(int c) const {
+  const int i = joint_of_velocity[c];
+  return translational_rate(joints[i].type, c - first_velocity[i].value) ? "m/s" : "rad/s";
+}
+
+std::string Model::momentum_unit(int c) const {
+  const int i = joint_of_velocity[c];
+  return translational_rate(joints[i].type, c - first_velocity[i].value) ? "N s" : "N m s";
+}
+
+std::optional<int> Model::find_body(const std::string& name) const {
   if (name == base_name) return kBase;
   for (int i = 0; i < size(); ++i)
     if (bodies[i].name == name) return i;
-  return -2;
+  return std::nullopt;
+}
+
+std::optional<int> Model::find_joint(const std::string& name) const {
+  for (int j = 0; j < size(); ++j)
+    if (joints[j].name == name) return j;
+  return std::nullopt;
 }
 
 }  // namespace unfurl

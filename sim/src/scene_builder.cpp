@@ -50,20 +50,19 @@ SceneBuilder& SceneBuilder::free_base(const Body& bus, Visual visual) {
 }
 
 bool SceneBuilder::has_body(const std::string& name) const {
-  return name == scene_.model.base_name || scene_.model.find_body(name) >= 0;
+  return scene_.model.find_body(name).has_value();
 }
 
 int SceneBuilder::body_index(const std::string& name, const std::string& field) const {
-  if (name == scene_.model.base_name) return kBase;
-  const int i = scene_.model.find_body(name);
-  if (i < 0) throw SceneInvalid(field, "unknown body '" + name + "'");
-  return i;
+  const std::optional<int> i = scene_.model.find_body(name);
+  if (!i) throw SceneInvalid(field, "unknown body '" + name + "'");
+  return *i;
 }
 
 int SceneBuilder::joint_index(const std::string& name, const std::string& field) const {
-  for (int j = 0; j < scene_.model.size(); ++j)
-    if (scene_.model.joints[j].name == name) return j;
-  throw SceneInvalid(field, "unknown joint '" + name + "'");
+  const std::optional<int> j = scene_.model.find_joint(name);
+  if (!j) throw SceneInvalid(field, "unknown joint '" + name + "'");
+  return *j;
 }
 
 SceneBuilder& SceneBuilder::body(const Body& body, const std::string& parent, Joint joint, Visual visual) {

@@ -17,15 +17,15 @@ RunSummary summarize(const Scene& scene, const RunResult& result) {
     if (!engaged) s.unlatched.push_back(model.joints[latches[l]->joint].name);
   }
   const RunPeaks& p = result.peaks;
-  s.max_closure_m = p.gap_m.value;
-  s.max_closure_rad = p.gap_rad.value;
-  s.max_closure_m_before_latch = p.gap_m_before_latch.value;
-  s.max_closure_rad_before_latch = p.gap_rad_before_latch.value;
+  s.max_closure_gap = p.gap_m.value;
+  s.max_closure_angle = p.gap_rad.value;
+  s.max_closure_gap_before_latch = p.gap_m_before_latch.value;
+  s.max_closure_angle_before_latch = p.gap_rad_before_latch.value;
   for (std::size_t l = 0; l < p.latch_torque.size(); ++l)
-    s.latch_peak_torque.push_back({model.joints[latches[l]->joint].name, p.latch_torque[l]});
+    s.peak_latch_torque.push_back({model.joints[latches[l]->joint].name, p.latch_torque[l]});
   for (std::size_t j = 0; j < p.hinge_force.size(); ++j) {
-    s.hinge_peak_force.push_back({model.joints[j].name, p.hinge_force[j]});
-    s.hinge_peak_moment.push_back({model.joints[j].name, p.hinge_moment[j]});
+    s.peak_hinge_force.push_back({model.joints[j].name, p.hinge_force[j]});
+    s.peak_hinge_moment.push_back({model.joints[j].name, p.hinge_moment[j]});
   }
   if (!tr.empty()) {
     s.energy_initial = tr.samples.front().energy.total();

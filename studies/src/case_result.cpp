@@ -55,22 +55,33 @@ const char* case_status_name(CaseStatus status) {
 }
 
 const std::vector<std::string>& CaseColumns::headline() {
-  static const std::vector<std::string> names{"deployment_time_s", "peak_latch_torque_Nm", "peak_hinge_force_N",
-                                              "peak_hinge_moment_Nm", "max_gap_m", "final_energy_J"};
+  static const std::vector<std::string> names{"deployment_time", "peak_latch_torque", "peak_hinge_force",
+                                              "peak_hinge_moment", "max_closure_gap", "final_energy"};
   return names;
+}
+
+std::string output_unit(const std::string& output) {
+  const std::string quantity = output.substr(0, output.find('.'));
+  static const std::vector<std::pair<std::string, std::string>> units{
+      {"deployment_time", "s"}, {"latch_time", "s"},         {"wall_time", "s"},
+      {"peak_latch_torque", "N m"}, {"peak_hinge_moment", "N m"}, {"peak_hinge_force", "N"},
+      {"max_closure_gap", "m"}, {"max_closure_angle", "rad"}, {"final_energy", "J"}};
+  for (const auto& [name, unit] : units)
+    if (quantity == name) return unit;
+  return "";
 }
 
 CaseColumns case_columns(const Study& study, const Scene& nominal) {
   CaseColumns c;
   for (const StudyVariable& v : study.variables) c.inputs.push_back(v.label());
   c.outputs = CaseColumns::headline();
-  c.outputs.push_back("max_gap_rad");
-  for (const std::string& j : latch_joints(nominal)) c.outputs.push_back("latch_time_s." + j);
-  for (const std::string& j : latch_joints(nominal)) c.outputs.push_back("latch_torque_Nm." + j);
-  for (const Joint& j : nominal.model.joints) c.outputs.push_back("hinge_force_N." + j.name);
-  for (const Joint& j : nominal.model.joints) c.outputs.push_back("hinge_moment_Nm." + j.name);
+  c.outputs.push_back("max_closure_angle");
+  for (const std::string& j : latch_joints(nominal)) c.outputs.push_back("latch_time." + j);
+  for (const std::string& j : latch_joints(nominal)) c.outputs.push_back("peak_latch_torque." + j);
+  for (const Joint& j : nominal.model.joints) c.outputs.push_back("peak_hinge_force." + j.name);
+  for (const Joint& j : nominal.model.joints) c.outputs.push_back("peak_hinge_moment." + j.name);
   c.outputs.push_back("steps");
-  c.outputs.push_back("wall_time_s");
+  c.outputs.push_back("wall_time");
   return c;
 }
 

@@ -83,7 +83,7 @@ RunTiming time_whole_run(const ScalingScene& s, IntegratorKind integrator, Linea
   t.rhs_calls = result.rhs_calls;
   t.jacobians = result.stats.jacobian_evals;
   t.linear_iterations = result.stats.linear_iterations;
-  t.max_closure_m = summarize(scene, result).max_closure_m;
+  t.max_closure_gap = summarize(scene, result).max_closure_gap;
   return t;
 }
 

@@ -28,8 +28,8 @@ StabilityResult run_stability_case(const StabilityCase& c) {
   r.loop_components = run.trajectory.layout.m;
   r.energy_initial = s.energy_initial;
   r.energy_final = s.energy_final;
-  r.max_closure_m = s.max_closure_m;
-  r.max_closure_rad = s.max_closure_rad;
+  r.max_closure_gap = s.max_closure_gap;
+  r.max_closure_angle = s.max_closure_angle;
   r.latches_engaged = static_cast<int>(s.latch_times.size());
   r.latches_total = static_cast<int>(scene.latches().size());
   if (c.conservative) {

@@ -18,7 +18,7 @@ void JointDamper::add_joint_stiffness(const ElementState& s, RatesOut, RatesOut 
   c[w_index(s.model)] += damping;
 }
 
-std::vector<LoadColumn> JointDamper::load_columns(const Model& model) const { return {column(model, "tau_damper")}; }
+std::vector<LoadColumn> JointDamper::load_columns(const Model& model) const { return {column(model, "damper_torque")}; }
 
 void JointDamper::load_values(const ElementState& s, double* values) const {
   values[0] = -damping * s.w[w_index(s.model)];

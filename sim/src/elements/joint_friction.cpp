@@ -17,7 +17,7 @@ void JointFriction::add_joint_stiffness(const ElementState& s, RatesOut, RatesOu
 }
 
 std::vector<LoadColumn> JointFriction::load_columns(const Model& model) const {
-  return {column(model, "tau_friction")};
+  return {column(model, "friction_torque")};
 }
 
 void JointFriction::load_values(const ElementState& s, double* values) const {

@@ -25,8 +25,8 @@ void JointSpring::add_joint_stiffness(const ElementState& s, RatesOut k, RatesOu
 }
 
 std::vector<LoadColumn> JointSpring::load_columns(const Model& model) const {
-  std::vector<LoadColumn> columns{column(model, "tau_spring")};
-  if (damping != 0) columns.push_back(column(model, "tau_damper"));
+  std::vector<LoadColumn> columns{column(model, "spring_torque")};
+  if (damping != 0) columns.push_back(column(model, "damper_torque"));
   return columns;
 }
 

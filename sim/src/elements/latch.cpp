@@ -28,7 +28,7 @@ void Latch::add_joint_stiffness(const ElementState& s, RatesOut k, RatesOut c) c
   c[w_index(s.model)] += damping;
 }
 
-std::vector<LoadColumn> Latch::load_columns(const Model& model) const { return {column(model, "tau_latch")}; }
+std::vector<LoadColumn> Latch::load_columns(const Model& model) const { return {column(model, "latch_torque")}; }
 
 void Latch::load_values(const ElementState& s, double* values) const {
   values[0] = s.engaged ? torque(s.q[q_index(s.model)], s.w[w_index(s.model)]) : 0.0;

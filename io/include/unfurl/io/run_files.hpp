@@ -1,5 +1,7 @@
 // The files `unfurl simulate` writes: trajectory.csv, loads.csv, events.csv
-// and summary.json (each complete or absent).
+// and summary.json (each complete or absent), and the reader of a run's
+// files, so `render` can draw a run without simulating it again. The CSV
+// columns are run_columns.hpp's, a header cell "name [unit; frame]".
 #pragma once
 
 #include <string>
@@ -11,13 +13,15 @@
 namespace unfurl::io {
 
 void write_trajectory_csv(const Scene& scene, const Trajectory& trajectory, const std::string& path);
-// loads.csv: t, then per joint tau_spring.J, tau_damper.J, tau_latch.J
-// (only where the joint has the element), reaction.J.fx .. .mz (the wrench
-// from the parent on the child about the hinge point, child frame), then
-// loop_force.L.C per active loop component (on the split body, its frame).
 void write_loads_csv(const Scene& scene, const Trajectory& trajectory, const std::string& path);
 void write_events_csv(const Scene& scene, const Trajectory& trajectory, const std::string& path);
 void write_summary_json(const Scene& scene, const RunResult& result, const RunSummary& summary,
                         const std::string& path);
+
+// A trajectory.csv for the scene it came from, with the events.csv and
+// loads.csv beside it where they are. Throws std::runtime_error naming the
+// file, line and column on a mismatch (a joint of the scene missing from
+// the file, a malformed number).
+Trajectory read_trajectory_csv(const Scene& scene, const std::string& path);
 
 }  // namespace unfurl::io

@@ -18,7 +18,7 @@ namespace unfurl {
 // column and their values add (two springs on one hinge give one spring
 // torque).
 struct LoadColumn {
-  std::string name;   // "tau_spring.j1"
+  std::string name;   // "spring_torque.j1"
   std::string unit;   // "N m"
   std::string frame;  // "" for a scalar (a torque about its joint's axis)
   int joint = -1;     // the joint it is listed with, or -1 (after the joints)

@@ -3,6 +3,7 @@
 // with a given motion.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -55,14 +56,22 @@ struct Model {
   // entries of a ball, planar or free joint.
   std::string position_name(int c) const;
   std::string velocity_name(int c) const;
+  // The SI units of q's entry c, of the rates' entry c and of the momentum
+  // conjugate to it: "rad", "rad/s", "N m s" on a hinge; "m", "m/s", "N s"
+  // on a slider; "" for a quaternion's entries.
+  std::string position_unit(int c) const;
+  std::string velocity_unit(int c) const;
+  std::string momentum_unit(int c) const;
   // The single coordinate of a one-coordinate joint j, in each space.
   PositionIndex position_of(int j) const { return first_position[j]; }
   VelocityIndex velocity_of(int j) const { return first_velocity[j]; }
   // Builds U_i and the coordinate map; throws std::invalid_argument when the
   // numbering is not regular (a parent after its child).
   void finalize();
-  // Index of the body (or joint) named `name`, kBase for the base, or -2.
-  int find_body(const std::string& name) const;
+  // The index of the body, or of the joint, called `name` (kBase for the
+  // base's name), or nothing.
+  std::optional<int> find_body(const std::string& name) const;
+  std::optional<int> find_joint(const std::string& name) const;
   bool base_rotates() const { return !base_velocity.tail<3>().isZero(0); }
   // Whether some joint has several coordinates (then nq may differ from nv).
   bool has_multi_dof_joints() const { return scalar_coordinates != nv; }

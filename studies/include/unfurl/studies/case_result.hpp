@@ -23,6 +23,8 @@ struct CaseColumns {
   // The outputs a study summarizes and ranks drivers for.
   static const std::vector<std::string>& headline();
 };
+// The unit of an output ("peak_hinge_force.j3": "N"; "steps": "").
+std::string output_unit(const std::string& output);
 CaseColumns case_columns(const Study& study, const Scene& nominal);
 
 struct CaseResult {

@@ -41,7 +41,7 @@ struct RunTiming {
   std::string failure;
   double t_reached = 0, wall_time_s = 0;
   long steps = 0, rhs_calls = 0, jacobians = 0, linear_iterations = 0;
-  double max_closure_m = 0;
+  double max_closure_gap = 0;
 };
 
 RunTiming time_whole_run(const ScalingScene& s, IntegratorKind integrator, LinearSolverKind linear_solver,

@@ -21,7 +21,7 @@ struct StabilityResult {
   int bodies = 0, loop_components = 0;
   double energy_initial = 0, energy_final = 0;
   double energy_drift = std::numeric_limits<double>::quiet_NaN();  // max |E - E0| / |E0| (conservative cases)
-  double max_closure_m = 0, max_closure_rad = 0;
+  double max_closure_gap = 0, max_closure_angle = 0;
   int latches_engaged = 0, latches_total = 0;
   bool energy_rose = false;        // a passive, non-conservative run that gained energy: not physical
   std::vector<std::string> notes;  // branches, closing time

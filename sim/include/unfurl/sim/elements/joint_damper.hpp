@@ -17,7 +17,7 @@ class JointDamper : public JointElement {
   double dissipated_power(const ElementState& s) const override;
   bool dissipative() const override { return damping > 0; }
   void add_joint_stiffness(const ElementState& s, RatesOut stiffness, RatesOut damping) const override;
-  std::vector<LoadColumn> load_columns(const Model& model) const override;  // tau_damper
+  std::vector<LoadColumn> load_columns(const Model& model) const override;  // damper_torque
   void load_values(const ElementState& s, double* values) const override;
   void validate(const Scene& scene, const std::string& field) const override;
   std::vector<ElementParameter> parameters() const override;

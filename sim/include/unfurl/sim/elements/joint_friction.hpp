@@ -34,7 +34,7 @@ class JointFriction : public JointElement {
   bool dissipative() const override { return true; }
   // Its slope at the state's rate as damping.
   void add_joint_stiffness(const ElementState& s, RatesOut stiffness, RatesOut damping) const override;
-  std::vector<LoadColumn> load_columns(const Model& model) const override;  // tau_friction
+  std::vector<LoadColumn> load_columns(const Model& model) const override;  // friction_torque
   void load_values(const ElementState& s, double* values) const override;
   void validate(const Scene& scene, const std::string& field) const override;
   std::vector<ElementParameter> parameters() const override;

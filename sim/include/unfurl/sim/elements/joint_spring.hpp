@@ -34,7 +34,7 @@ class JointSpring : public JointElement {
   double dissipated_power(const ElementState& s) const override;
   bool dissipative() const override { return damping > 0; }
   void add_joint_stiffness(const ElementState& s, RatesOut stiffness, RatesOut damping) const override;
-  // tau_spring (the elastic torque), and tau_damper where it damps.
+  // spring_torque (the elastic torque), and damper_torque where it damps.
   std::vector<LoadColumn> load_columns(const Model& model) const override;
   void load_values(const ElementState& s, double* values) const override;
   void validate(const Scene& scene, const std::string& field) const override;

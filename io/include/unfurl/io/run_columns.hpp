@@ -1,0 +1,42 @@
+// The columns of trajectory.csv and loads.csv, described once: each column's
+// name, unit and frame (its header cell reads "name [unit; frame]": no comma,
+// so any CSV reader splits the header as the rows), how a
+// sample gives its value and, for what is read back, how it takes it. The
+// writer and the reader (run_files.hpp) both go by this description, and
+// docs/OUTPUTS.md tables it.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "unfurl/sim/scene.hpp"
+#include "unfurl/sim/trajectory.hpp"
+
+namespace unfurl::io {
+
+struct RunColumn {
+  std::string name;   // "q.j1"
+  std::string unit;   // "rad"; "" for a pure number
+  std::string frame;  // "child body frame"; "" where none applies
+  std::function<double(const Sample&)> value;
+  // Sets the value on a sample being read back; empty for a column derived
+  // from the others (not read back).
+  std::function<void(Sample&, double)> set;
+};
+
+// "q.j1 [rad]", "hinge_force.j1.x [N; child body frame]", "t [s]".
+std::string header_cell(const RunColumn& column);
+// The name in a header cell (what precedes " [").
+std::string column_name(const std::string& header_cell);
+
+// The columns for a scene's run (the trajectory gives the layout, the loop
+// components and the load columns).
+std::vector<RunColumn> trajectory_columns(const Scene& scene, const Trajectory& trajectory);
+std::vector<RunColumn> load_file_columns(const Scene& scene, const Trajectory& trajectory);
+
+// A sample sized for the trajectory's columns (state, rates, gaps, loads),
+// to be filled by set().
+Sample empty_sample(const Scene& scene, const Trajectory& trajectory);
+
+}  // namespace unfurl::io
