@@ -30,7 +30,7 @@ const char* kUsage =
     "`unfurl COMMAND --help` shows a command's options.\n";
 
 int list_scenes() {
-  for (const std::string& name : unfurl::builtin_scene_names()) std::printf("%s\n", name.c_str());
+  for (const std::string& name : unfurl::sim::builtin_scene_names()) std::printf("%s\n", name.c_str());
   return 0;
 }
 

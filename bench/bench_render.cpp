@@ -15,16 +15,16 @@ namespace {
 
 struct Setup {
   explicit Setup(render::GlBackend backend) : context(render::make_offscreen_context(backend)) { place(); }
-  SceneFile file = read_builtin_scene("pantograph");
-  Scene& scene = file.scene;
+  sim::SceneFile file = sim::read_builtin_scene("pantograph");
+  sim::Scene& scene = file.scene;
   std::unique_ptr<render::GlContext> context;
   render::FrameRenderer renderer{scene, file.visuals, 1280, 720, {render::builtin_mesh_directory()}};
-  std::vector<Pose> poses;
+  std::vector<sim::Pose> poses;
   render::Camera camera;
   void place() {
     std::vector<double> q(scene.model.nq);
     for (int c = 0; c < scene.model.nq; ++c) q[c] = 0.5 * scene.q0[c];  // mid-deployment
-    body_poses(scene.model, q.data(), poses);
+    sim::body_poses(scene.model, q.data(), poses);
     camera = *render::camera_preset("iso", renderer.view().bounds(poses), 1280.0f / 720);
   }
 };

@@ -12,9 +12,9 @@
 namespace unfurl {
 namespace {
 
-void run_rhs(benchmark::State& state, const Scene& scene) {
-  Dynamics dynamics(scene);
-  const RhsTimingStates y = rhs_timing_states(dynamics);
+void run_rhs(benchmark::State& state, const sim::Scene& scene) {
+  sim::Dynamics dynamics(scene);
+  const studies::RhsTimingStates y = studies::rhs_timing_states(dynamics);
   std::vector<double> ydot(y.a.size());
   long call = 0;
   for (auto _ : state) {
@@ -27,35 +27,31 @@ void run_rhs(benchmark::State& state, const Scene& scene) {
                                                                        benchmark::Counter::kInvert);
 }
 
-void BM_RhsPantograph(benchmark::State& state) {
-  run_rhs(state, load_builtin_scene("pantograph"));
-}
+void BM_RhsPantograph(benchmark::State& state) { run_rhs(state, sim::load_builtin_scene("pantograph")); }
 BENCHMARK(BM_RhsPantograph)->Unit(benchmark::kMicrosecond);
 
 void BM_RhsPantographPaperGains(benchmark::State& state) {
-  run_rhs(state, load_builtin_scene("pantograph", {{"regulator.gains", "paper"}}));
+  run_rhs(state, sim::load_builtin_scene("pantograph", {{"regulator.gains", "paper"}}));
 }
 BENCHMARK(BM_RhsPantographPaperGains)->Unit(benchmark::kMicrosecond);
 
-void BM_RhsZfold(benchmark::State& state) {
-  run_rhs(state, load_builtin_scene("zfold"));
-}
+void BM_RhsZfold(benchmark::State& state) { run_rhs(state, sim::load_builtin_scene("zfold")); }
 BENCHMARK(BM_RhsZfold)->Unit(benchmark::kMicrosecond);
 
 void BM_RhsChain(benchmark::State& state) {
-  run_rhs(state, generate_chain(static_cast<int>(state.range(0))).scene);
+  run_rhs(state, studies::generate_chain(static_cast<int>(state.range(0))).scene);
 }
 BENCHMARK(BM_RhsChain)->Arg(10)->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 
 void BM_RhsZfoldPanels(benchmark::State& state) {
-  run_rhs(state, generate_zfold(static_cast<int>(state.range(0))).scene);
+  run_rhs(state, studies::generate_zfold(static_cast<int>(state.range(0))).scene);
 }
 BENCHMARK(BM_RhsZfoldPanels)->Arg(9)->Arg(99)->Arg(999)->Arg(9999)->Unit(benchmark::kMicrosecond);
 
 // Stages 3 .. 3333: 11 .. 10,001 bodies, 9 .. 9999 loop components (dense
 // gains up to 48 components, sparse beyond).
 void BM_RhsPantographStages(benchmark::State& state) {
-  run_rhs(state, generate_pantograph(static_cast<int>(state.range(0))).scene);
+  run_rhs(state, studies::generate_pantograph(static_cast<int>(state.range(0))).scene);
 }
 BENCHMARK(BM_RhsPantographStages)->Arg(3)->Arg(10)->Arg(33)->Arg(333)->Arg(3333)->Unit(benchmark::kMicrosecond);
 

@@ -12,21 +12,22 @@ namespace unfurl {
 namespace {
 
 void BM_PantographRun(benchmark::State& state) {
-  const auto kind = static_cast<IntegratorKind>(state.range(0));
-  const Scene scene = load_builtin_scene("pantograph");
-  RunSettings settings = scene.run;
+  const auto kind = static_cast<sim::IntegratorKind>(state.range(0));
+  const sim::Scene scene = sim::load_builtin_scene("pantograph");
+  sim::RunSettings settings = scene.run;
   settings.integrator = kind;
   settings.rtol = 1e-8;
   settings.atol = 1e-10;
   settings.dt = 2e-4;
-  RunResult result;
-  for (auto _ : state) result = simulate(scene, settings);
-  state.SetLabel(std::string(integrator_name(kind)) + (result.status == RunStatus::finished ? "" : " FAILED"));
+  sim::RunResult result;
+  for (auto _ : state) result = sim::simulate(scene, settings);
+  state.SetLabel(std::string(sim::integrator_name(kind)) +
+                 (result.status == sim::RunStatus::finished ? "" : " FAILED"));
   state.counters["steps"] = static_cast<double>(result.stats.steps);
   state.counters["rhs_calls"] = static_cast<double>(result.rhs_calls);
   state.counters["jacobians"] = static_cast<double>(result.stats.jacobian_evals);
   state.counters["latched"] = static_cast<double>(result.trajectory.events.size());
-  state.counters["closure_m"] = summarize(scene, result).max_closure_gap;
+  state.counters["closure_m"] = sim::summarize(scene, result).max_closure_gap;
 }
 BENCHMARK(BM_PantographRun)
     ->DenseRange(0, 4)
@@ -37,15 +38,15 @@ BENCHMARK(BM_PantographRun)
 // The first second of large pantographs by CVODE BDF with GMRES and the
 // sweep preconditioner (sparse gains): whole-run cost against size.
 void BM_LargePantographFirstSecond(benchmark::State& state) {
-  const Scene scene =
-      apply_overrides(generate_pantograph(static_cast<int>(state.range(0))), {{"run.t_end", "1"}}).scene;
-  RunSettings settings = scene.run;
+  const sim::Scene scene =
+      sim::apply_overrides(studies::generate_pantograph(static_cast<int>(state.range(0))), {{"run.t_end", "1"}}).scene;
+  sim::RunSettings settings = scene.run;
   settings.rtol = 1e-8;
   settings.atol = 1e-10;
-  settings.linear_solver = LinearSolverKind::krylov;
-  RunResult result;
-  for (auto _ : state) result = simulate(scene, settings);
-  state.SetLabel(result.status == RunStatus::finished ? "" : "FAILED");
+  settings.linear_solver = sim::LinearSolverKind::krylov;
+  sim::RunResult result;
+  for (auto _ : state) result = sim::simulate(scene, settings);
+  state.SetLabel(result.status == sim::RunStatus::finished ? "" : "FAILED");
   state.counters["bodies"] = scene.model.size();
   state.counters["steps"] = static_cast<double>(result.stats.steps);
   state.counters["rhs_calls"] = static_cast<double>(result.rhs_calls);

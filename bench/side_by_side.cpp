@@ -41,7 +41,7 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 struct Case {
   std::string name, description;
-  Scene scene;
+  sim::Scene scene;
   bool reduction = false;  // the pantograph's own reference
 };
 
@@ -51,11 +51,11 @@ struct Angles {
   std::map<std::string, std::vector<double>> q;
 };
 
-Angles unfurl_angles(const Scene& scene, const RunResult& run) {
+Angles unfurl_angles(const sim::Scene& scene, const sim::RunResult& run) {
   Angles a;
   const double first_latch = run.trajectory.events.empty() ? kInfinity : run.trajectory.events.front().t;
-  const Model& model = scene.model;
-  for (const Sample& s : run.trajectory.samples) {
+  const sim::Model& model = scene.model;
+  for (const sim::Sample& s : run.trajectory.samples) {
     if (s.t >= first_latch) break;
     a.t.push_back(s.t);
     for (int c = 0; c < model.nq; ++c)
@@ -88,12 +88,12 @@ double angle_error(const Angles& run, const Angles& reference) {
 Angles reduction_angles(double t_end) {
   std::vector<double> times;
   for (int k = 0; k * kSample <= t_end + 1e-12; ++k) times.push_back(k * kSample);
-  const ReductionPath path = integrate_reduction(times);
+  const studies::ReductionPath path = studies::integrate_reduction(times);
   Angles a;
   a.t = path.t;
   for (int j = 0; j < 8; ++j) {
     std::vector<double>& q = a.q["j" + std::to_string(j + 1)];
-    for (double value : path.a) q.push_back(PantographReduction::c[j] * value);
+    for (double value : path.a) q.push_back(studies::PantographReduction::c[j] * value);
   }
   return a;
 }
@@ -119,18 +119,18 @@ std::vector<Case> cases(const std::vector<std::string>& names) {
     Case c;
     c.name = name;
     if (name == "pantograph") {
-      c.scene = load_builtin_scene("pantograph");
+      c.scene = sim::load_builtin_scene("pantograph");
       c.reduction = true;
       c.description = "built-in pantograph, 20 s, against its one-degree-of-freedom reduction";
     } else if (name == "zfold") {
-      c.scene = load_builtin_scene("zfold");
+      c.scene = sim::load_builtin_scene("zfold");
       c.description = "built-in z-fold (a tree), against unfurl at rtol 1e-12";
     } else if (name == "pantograph10") {
-      c.scene = generate_pantograph(10).scene;
+      c.scene = studies::generate_pantograph(10).scene;
       c.description = "generated 10-stage pantograph, 20 s, against unfurl at rtol 1e-12";
     } else if (name == "pantograph30") {
       // Its 20 s take a minute a run at present: the first 2 s, before any latch.
-      c.scene = apply_overrides(generate_pantograph(30), {{"run.t_end", "2"}}).scene;
+      c.scene = sim::apply_overrides(studies::generate_pantograph(30), {{"run.t_end", "2"}}).scene;
       c.description = "generated 30-stage pantograph, first 2 s, against unfurl at rtol 1e-12";
     } else {
       throw std::runtime_error("unknown scene '" + name + "'");
@@ -141,27 +141,27 @@ std::vector<Case> cases(const std::vector<std::string>& names) {
   return out;
 }
 
-RunResult run_unfurl(const Scene& scene, double rtol) {
-  RunSettings settings = scene.run;
-  settings.integrator = IntegratorKind::cvode_bdf;
+sim::RunResult run_unfurl(const sim::Scene& scene, double rtol) {
+  sim::RunSettings settings = scene.run;
+  settings.integrator = sim::IntegratorKind::cvode_bdf;
   settings.rtol = rtol;
   settings.atol = rtol / 100;
-  return simulate(scene, settings);
+  return sim::simulate(scene, settings);
 }
 
 std::vector<Row> compare(const Case& c, double target, std::string& summary) {
-  const Scene& scene = c.scene;
+  const sim::Scene& scene = c.scene;
   const double t_end = scene.run.t_end;
   const Angles reference = c.reduction ? reduction_angles(t_end) : unfurl_angles(scene, run_unfurl(scene, 1e-12));
   std::vector<Row> rows;
   // unfurl: every tolerance; the cheapest within the target is chosen.
   for (double rtol = 1e-5; rtol >= 1e-11 * 0.99; rtol /= 10) {
-    const RunResult first = run_unfurl(scene, rtol);
+    const sim::RunResult first = run_unfurl(scene, rtol);
     char setting[64];
     std::snprintf(setting, sizeof setting, "CVODE BDF, rtol %.0e", rtol);
     Row row{"unfurl", setting, angle_error(unfurl_angles(scene, first), reference), first.wall_time_s,
             first.stats.steps};
-    if (first.status != RunStatus::finished) row.error = kInfinity;
+    if (first.status != sim::RunStatus::finished) row.error = kInfinity;
     if (row.error <= target)
       row.wall_s = best_time(first.wall_time_s, [&] { return run_unfurl(scene, rtol).wall_time_s; });
     rows.push_back(row);

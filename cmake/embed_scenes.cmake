@@ -12,13 +12,13 @@ file(WRITE "${OUTPUT}.tmp"
 #include <map>
 #include <string>
 
-namespace unfurl {
+namespace unfurl::sim {
 const std::map<std::string, std::string>& builtin_scene_texts() {
   static const std::map<std::string, std::string> texts{
 ${body}  };
   return texts;
 }
-}  // namespace unfurl
+}  // namespace unfurl::sim
 ")
 file(COPY_FILE "${OUTPUT}.tmp" "${OUTPUT}" ONLY_IF_DIFFERENT)
 file(REMOVE "${OUTPUT}.tmp")

@@ -12,13 +12,13 @@
 namespace unfurl::test {
 
 // R^-1 b = (W + delta I)^-1 b by a closure solver at q, and densely.
-inline void expect_closure_solve_matches_dense(const Scene& scene, ClosureSolverKind kind, const VectorXd& q,
-                                        double delta) {
-  Dynamics dynamics(scene);
-  const std::vector<LoopComponent>& components = dynamics.regulator()->components();
+inline void expect_closure_solve_matches_dense(const sim::Scene& scene, sim::ClosureSolverKind kind, const VectorXd& q,
+                                               double delta) {
+  sim::Dynamics dynamics(scene);
+  const std::vector<sim::LoopComponent>& components = dynamics.regulator()->components();
   const int m = static_cast<int>(components.size());
-  const auto solver = make_closure_solver(kind, scene.model, scene.loops, components);
-  Sweep sweep(scene.model);
+  const auto solver = sim::make_closure_solver(kind, scene.model, scene.loops, components);
+  sim::Sweep sweep(scene.model);
   sweep.set_configuration(q.data());
   ASSERT_TRUE(solver->factorize(sweep, delta));
   // Two right-hand sides at once, as the regulator solves them.

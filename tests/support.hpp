@@ -16,14 +16,14 @@ inline std::string asset(const std::string& relative) {
   return std::string(UNFURL_SOURCE_DIR) + "/assets/" + relative;
 }
 
-inline Scene scene_file(const std::string& name, const std::vector<Override>& overrides = {}) {
-  return load_scene_file(asset("scenes/" + name + ".yaml"), overrides);
+inline sim::Scene scene_file(const std::string& name, const std::vector<sim::Override>& overrides = {}) {
+  return sim::load_scene_file(asset("scenes/" + name + ".yaml"), overrides);
 }
 
 // What reading a scene's text says is wrong with it, or "no error".
 inline std::string scene_error(const std::string& text) {
   try {
-    load_scene_text(text, "bad");
+    sim::load_scene_text(text, "bad");
   } catch (const input::InputError& e) {
     return e.what();
   }
@@ -71,7 +71,7 @@ inline InterruptedOutcome interrupt_after(const std::string& command, double sec
 
 // The entry of q named `name` (Model::position_name: a joint's name, or
 // "bus.qw" for an entry of a free or ball joint) in a sample.
-inline double q_of(const Scene& scene, const Sample& s, const std::string& name) {
+inline double q_of(const sim::Scene& scene, const sim::Sample& s, const std::string& name) {
   for (int c = 0; c < scene.model.nq; ++c)
     if (scene.model.position_name(c) == name) return s.y[c];
   throw std::runtime_error("no coordinate " + name);
@@ -79,15 +79,15 @@ inline double q_of(const Scene& scene, const Sample& s, const std::string& name)
 
 // The load column `name` ("latch_torque.j1") of a run's samples, by the
 // run's column description.
-inline double load_of(const std::vector<LoadColumn>& columns, const Loads& loads, const std::string& name) {
-  const int c = find_load_column(columns, name);
+inline double load_of(const std::vector<sim::LoadColumn>& columns, const sim::Loads& loads, const std::string& name) {
+  const int c = sim::find_load_column(columns, name);
   if (c < 0) throw std::runtime_error("no load column " + name);
   return loads.element[c];
 }
 
 // The sum of the element torques on joint j: what its hinge's reaction
 // carries about the axis.
-inline double joint_element_torque(const std::vector<LoadColumn>& columns, const Loads& loads, int j) {
+inline double joint_element_torque(const std::vector<sim::LoadColumn>& columns, const sim::Loads& loads, int j) {
   double sum = 0;
   for (std::size_t c = 0; c < columns.size(); ++c)
     if (columns[c].joint == j) sum += loads.element[c];

@@ -88,7 +88,8 @@ TEST(OutputFiles, HeadersParseWithPythonsCsvModule) {
       "    rows = list(csv.reader(open(name, newline='')))\n"
       "    header = rows[0]\n"
       "    assert len(header) == len(set(header)), name + ': repeated column'\n"
-      "    assert all(re.fullmatch(r'[A-Za-z0-9_.-]+( \\[[A-Za-z0-9/^ ;]+\\])?', h) for h in header), name + ': odd column name'\n"
+      "    assert all(re.fullmatch(r'[A-Za-z0-9_.-]+( \\[[A-Za-z0-9/^ ;]+\\])?', h) for h in header), name + ': odd "
+      "column name'\n"
       "    assert all(len(r) == len(header) for r in rows), name + ': ragged rows'\n"
       "    assert len(header) == open(name).readline().count(',') + 1, name + ': quoted header'\n"
       "print('ok')\n";

@@ -150,7 +150,7 @@ TEST(Cli, GenerateWritesASceneThatSimulates) {
   const fs::path dir = temp_dir();
   const fs::path file = dir / "pantograph_5.yaml";
   ASSERT_EQ(run("generate pantograph --stages 5 -o " + file.string()).code, 0);
-  const Scene scene = load_scene_file(file.string());
+  const sim::Scene scene = sim::load_scene_file(file.string());
   EXPECT_EQ(scene.loops.size(), 5u);
   EXPECT_EQ(scene.model.size(), 17);
   const Outcome sim = run("simulate " + file.string() + " --t-end 0.2 --quiet --out " + (dir / "p5").string());

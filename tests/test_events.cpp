@@ -29,20 +29,21 @@ struct Oscillator {
   double stiffness, q0, latch_at;
 };
 
-Scene oscillators(const std::vector<Oscillator>& list, const std::string& run) {
+sim::Scene oscillators(const std::vector<Oscillator>& list, const std::string& run) {
   std::string text = "name: oscillators\nbodies:\n";
   for (const Oscillator& o : list) text += oscillator_body(o.name);
   text += "springs:\n";
   for (const Oscillator& o : list)
-    text += "  - {joint: " + o.name + ", stiffness: " + format_number(o.stiffness) + ", free_position: 0}\n";
+    text += "  - {joint: " + o.name + ", stiffness: " + sim::format_number(o.stiffness) + ", free_position: 0}\n";
   text += "latches:\n";
   for (const Oscillator& o : list)
-    text += "  - {joint: " + o.name + ", position: " + format_number(o.latch_at) + ", stiffness: 1000, damping: 10}\n";
+    text +=
+        "  - {joint: " + o.name + ", position: " + sim::format_number(o.latch_at) + ", stiffness: 1000, damping: 10}\n";
   text += "initial:\n  q: {";
   for (std::size_t k = 0; k < list.size(); ++k)
-    text += (k ? ", " : "") + list[k].name + ": " + format_number(list[k].q0);
+    text += (k ? ", " : "") + list[k].name + ": " + sim::format_number(list[k].q0);
   text += "}\nrun: " + run + "\n";
-  return load_scene_text(text, "oscillators");
+  return sim::load_scene_text(text, "oscillators");
 }
 
 double crossing_time(double stiffness) { return M_PI / 2 * std::sqrt(0.5 / stiffness); }
@@ -52,45 +53,47 @@ TEST(Events, NearlySimultaneousLatchesTakeOneRestartEachAtItsOwnRoot) {
   // default 1e-6 s window.
   const double k1 = 2.0, k2 = 2.0 * (1 + 2e-7);
   for (const char* integrator : {"cvode-bdf", "arkode-erk", "arkode-dirk", "rk4"}) {
-    const Scene scene = oscillators({{"a", k1, 1.0, 0.0}, {"b", k2, 1.0, 0.0}},
-                                    std::string("{t_end: 1.5, rtol: 1.0e-11, atol: 1.0e-13, dt: 1.0e-4, integrator: ") +
-                                        integrator + "}");
-    const RunResult run = simulate(scene, scene.run);
-    ASSERT_EQ(run.status, RunStatus::finished) << integrator << ": " << describe(run.failure);
+    const sim::Scene scene = oscillators(
+        {{"a", k1, 1.0, 0.0}, {"b", k2, 1.0, 0.0}},
+        std::string("{t_end: 1.5, rtol: 1.0e-11, atol: 1.0e-13, dt: 1.0e-4, integrator: ") + integrator + "}");
+    const sim::RunResult run = sim::simulate(scene, scene.run);
+    ASSERT_EQ(run.status, sim::RunStatus::finished) << integrator << ": " << sim::describe(run.failure);
     ASSERT_EQ(run.trajectory.events.size(), 2u) << integrator;
     EXPECT_EQ(run.stats.restarts, 1) << integrator;
     const double tolerance = std::string(integrator) == "rk4" ? 1e-9 : 1e-10;
-    for (const LatchEvent& e : run.trajectory.events)
+    for (const sim::LatchEvent& e : run.trajectory.events)
       EXPECT_NEAR(e.t, crossing_time(e.latch == 0 ? k1 : k2), tolerance) << integrator << " latch " << e.latch;
     EXPECT_LT(run.trajectory.events[0].t, run.trajectory.events[1].t) << "in the order they happened";
   }
 }
 
 TEST(Events, PantographsEightLatchesTakeOneRestart) {
-  const Scene scene = test::scene_file("pantograph");
-  const RunResult run = simulate(scene, scene.run);
-  ASSERT_EQ(run.status, RunStatus::finished) << describe(run.failure);
+  const sim::Scene scene = test::scene_file("pantograph");
+  const sim::RunResult run = sim::simulate(scene, scene.run);
+  ASSERT_EQ(run.status, sim::RunStatus::finished) << sim::describe(run.failure);
   EXPECT_EQ(run.trajectory.events.size(), 8u);
   EXPECT_EQ(run.stats.restarts, 1);
 }
 
 TEST(Events, LatchesFartherApartThanTheWindowTakeARestartEach) {
   const double k1 = 2.0, k2 = 2.0 * (1 + 1e-4);  // 7.9e-5 s apart
-  const Scene scene = oscillators({{"a", k1, 1.0, 0.0}, {"b", k2, 1.0, 0.0}}, "{t_end: 1.5, rtol: 1.0e-11, atol: 1.0e-13}");
-  const RunResult run = simulate(scene, scene.run);
+  const sim::Scene scene =
+      oscillators({{"a", k1, 1.0, 0.0}, {"b", k2, 1.0, 0.0}}, "{t_end: 1.5, rtol: 1.0e-11, atol: 1.0e-13}");
+  const sim::RunResult run = sim::simulate(scene, scene.run);
   ASSERT_EQ(run.trajectory.events.size(), 2u);
   EXPECT_EQ(run.stats.restarts, 2);
-  for (const LatchEvent& e : run.trajectory.events) EXPECT_NEAR(e.t, crossing_time(e.latch == 0 ? k1 : k2), 1e-10);
+  for (const sim::LatchEvent& e : run.trajectory.events) EXPECT_NEAR(e.t, crossing_time(e.latch == 0 ? k1 : k2), 1e-10);
 }
 
 TEST(Events, RootJustBeforeTheEndIsFoundAndTheRunEndsCleanly) {
   const double t_cross = crossing_time(2.0);
   for (const char* integrator : {"cvode-bdf", "arkode-erk", "rk4"}) {
-    const Scene scene = oscillators({{"a", 2.0, 1.0, 0.0}}, "{t_end: " + format_number(t_cross + 1e-12) +
-                                                                ", rtol: 1.0e-11, atol: 1.0e-13, dt: 1.0e-3, "
-                                                                "sample: 0.01, integrator: " + integrator + "}");
-    const RunResult run = simulate(scene, scene.run);
-    ASSERT_EQ(run.status, RunStatus::finished) << integrator << ": " << describe(run.failure);
+    const sim::Scene scene = oscillators({{"a", 2.0, 1.0, 0.0}}, "{t_end: " + sim::format_number(t_cross + 1e-12) +
+                                                                     ", rtol: 1.0e-11, atol: 1.0e-13, dt: 1.0e-3, "
+                                                                     "sample: 0.01, integrator: " +
+                                                                     integrator + "}");
+    const sim::RunResult run = sim::simulate(scene, scene.run);
+    ASSERT_EQ(run.status, sim::RunStatus::finished) << integrator << ": " << sim::describe(run.failure);
     ASSERT_EQ(run.trajectory.events.size(), 1u) << integrator;
     EXPECT_NEAR(run.trajectory.events[0].t, t_cross, 1e-9) << integrator;
     EXPECT_EQ(run.trajectory.samples.back().t, scene.run.t_end) << integrator;
@@ -105,13 +108,14 @@ TEST(Events, RootExactlyAtTheEndEndsTheRunCleanly) {
   // latch it engages is engaged at t_end.
   const double t_cross = crossing_time(2.0);
   for (const char* integrator : {"cvode-bdf", "arkode-erk", "rk4"}) {
-    const Scene scene = oscillators({{"a", 2.0, 1.0, 0.0}}, "{t_end: " + format_number(t_cross) +
-                                                                ", rtol: 1.0e-11, atol: 1.0e-13, dt: 1.0e-3, "
-                                                                "integrator: " + integrator + "}");
-    const RunResult run = simulate(scene, scene.run);
-    ASSERT_EQ(run.status, RunStatus::finished) << integrator << ": " << describe(run.failure);
+    const sim::Scene scene = oscillators({{"a", 2.0, 1.0, 0.0}}, "{t_end: " + sim::format_number(t_cross) +
+                                                                     ", rtol: 1.0e-11, atol: 1.0e-13, dt: 1.0e-3, "
+                                                                     "integrator: " +
+                                                                     integrator + "}");
+    const sim::RunResult run = sim::simulate(scene, scene.run);
+    ASSERT_EQ(run.status, sim::RunStatus::finished) << integrator << ": " << sim::describe(run.failure);
     EXPECT_LE(run.trajectory.events.size(), 1u);
-    for (const LatchEvent& e : run.trajectory.events) EXPECT_NEAR(e.t, t_cross, 1e-9) << integrator;
+    for (const sim::LatchEvent& e : run.trajectory.events) EXPECT_NEAR(e.t, t_cross, 1e-9) << integrator;
     EXPECT_EQ(run.trajectory.samples.back().t, scene.run.t_end);
     EXPECT_LT(std::abs(run.trajectory.samples.back().y[0]), 1e-8) << integrator << ": at the crossing";
   }
@@ -120,12 +124,12 @@ TEST(Events, RootExactlyAtTheEndEndsTheRunCleanly) {
 TEST(Events, LatchAtTheStartIsEngagedFromTheStartAndHolds) {
   // The joint starts at its latch position with the spring pulling it away
   // (free position 1): caught at t = 0, it sits at the static deflection.
-  Scene scene = oscillators({{"a", 2.0, 0.0, 0.0}}, "{t_end: 5, rtol: 1.0e-10, atol: 1.0e-12}");
-  auto spring = std::make_shared<JointSpring>(*scene.elements_of<JointSpring>()[0]);
+  sim::Scene scene = oscillators({{"a", 2.0, 0.0, 0.0}}, "{t_end: 5, rtol: 1.0e-10, atol: 1.0e-12}");
+  auto spring = std::make_shared<sim::JointSpring>(*scene.elements_of<sim::JointSpring>()[0]);
   spring->free_position = 1.0;
   scene.elements[0] = spring;  // the scene's first element is its spring
-  const RunResult run = simulate(scene, scene.run);
-  ASSERT_EQ(run.status, RunStatus::finished) << describe(run.failure);
+  const sim::RunResult run = sim::simulate(scene, scene.run);
+  ASSERT_EQ(run.status, sim::RunStatus::finished) << sim::describe(run.failure);
   ASSERT_EQ(run.trajectory.events.size(), 1u);
   EXPECT_EQ(run.trajectory.events[0].t, 0.0);
   EXPECT_EQ(run.stats.restarts, 0);
@@ -142,11 +146,11 @@ TEST(Events, GrazeInsideOneStepIsNotMissed) {
   const double q_latch = -0.9999;
   const double t_graze = (M_PI - std::acos(-q_latch)) / std::sqrt(2.0 / 0.5);
   for (const char* integrator : {"cvode-bdf", "arkode-erk", "rk4"}) {
-    const Scene scene = oscillators({{"a", 2.0, 1.0, q_latch}},
-                                    std::string("{t_end: 2, rtol: 1.0e-5, atol: 1.0e-7, dt: 0.05, integrator: ") +
-                                        integrator + "}");
-    const RunResult run = simulate(scene, scene.run);
-    ASSERT_EQ(run.status, RunStatus::finished) << integrator << ": " << describe(run.failure);
+    const sim::Scene scene =
+        oscillators({{"a", 2.0, 1.0, q_latch}},
+                    std::string("{t_end: 2, rtol: 1.0e-5, atol: 1.0e-7, dt: 0.05, integrator: ") + integrator + "}");
+    const sim::RunResult run = sim::simulate(scene, scene.run);
+    ASSERT_EQ(run.status, sim::RunStatus::finished) << integrator << ": " << sim::describe(run.failure);
     ASSERT_EQ(run.trajectory.events.size(), 1u) << integrator << ": the graze was missed";
     EXPECT_EQ(run.stats.grazes, 1) << integrator << ": found by the graze check, not the root finding";
     EXPECT_NEAR(run.trajectory.events[0].t, t_graze, 2e-3) << integrator;
@@ -156,8 +160,8 @@ TEST(Events, GrazeInsideOneStepIsNotMissed) {
 TEST(Events, MinimumStepIsTakenAwayFromRestarts) {
   // After every restart the step grows from a tiny first one: those are
   // counted apart, so min_step says what the dynamics needed.
-  const Scene scene = test::scene_file("zfold");
-  const RunResult run = simulate(scene, scene.run);
+  const sim::Scene scene = test::scene_file("zfold");
+  const sim::RunResult run = sim::simulate(scene, scene.run);
   ASSERT_EQ(run.stats.restarts, 4);
   EXPECT_GT(run.stats.min_step, 10 * run.stats.min_step_after_restart);
   EXPECT_GT(run.stats.min_step, 1e-8);

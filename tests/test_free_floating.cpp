@@ -17,24 +17,24 @@ namespace unfurl {
 namespace {
 
 struct FreeRun {
-  Scene scene;
-  RunResult result;
-  RunSummary::FreeBus bus;
+  sim::Scene scene;
+  sim::RunResult result;
+  sim::RunSummary::FreeBus bus;
 };
 
-FreeRun run_free(const std::string& name, const std::vector<Override>& overrides = {}) {
-  FreeRun r{load_builtin_scene(name, overrides), {}, {}};
-  r.result = simulate(r.scene, r.scene.run);
-  EXPECT_EQ(r.result.status, RunStatus::finished) << describe(r.result.failure);
-  r.bus = summarize_free_bus(r.scene.model, r.result.trajectory);
+FreeRun run_free(const std::string& name, const std::vector<sim::Override>& overrides = {}) {
+  FreeRun r{sim::load_builtin_scene(name, overrides), {}, {}};
+  r.result = sim::simulate(r.scene, r.scene.run);
+  EXPECT_EQ(r.result.status, sim::RunStatus::finished) << sim::describe(r.result.failure);
+  r.bus = sim::summarize_free_bus(r.scene.model, r.result.trajectory);
   return r;
 }
 
 // The system's centre of mass at a sample.
-Vec3 centre_of_mass(const Model& model, const Sample& s) {
-  std::vector<Pose> poses;
-  body_poses(model, s.y.data(), poses);
-  Vec3 moment = Vec3::Zero();
+sim::Vec3 centre_of_mass(const sim::Model& model, const sim::Sample& s) {
+  std::vector<sim::Pose> poses;
+  sim::body_poses(model, s.y.data(), poses);
+  sim::Vec3 moment = sim::Vec3::Zero();
   double mass = 0;
   for (int i = 0; i < model.size(); ++i) {
     moment += model.bodies[i].mass * poses[i].to_base(model.bodies[i].com);
@@ -53,14 +53,14 @@ void expect_conserved(const FreeRun& r, double least_turn) {
   EXPECT_LT(r.bus.linear_momentum_drift, 20 * rtol);
   EXPECT_LT(r.bus.angular_momentum_drift, 20 * rtol);
   EXPECT_GT(r.bus.final_attitude_change, least_turn);
-  const Trajectory& tr = r.result.trajectory;
-  const Vec3 c0 = centre_of_mass(r.scene.model, tr.samples.front());
+  const sim::Trajectory& tr = r.result.trajectory;
+  const sim::Vec3 c0 = centre_of_mass(r.scene.model, tr.samples.front());
   double moved = 0;
-  for (const Sample& s : tr.samples) moved = std::max(moved, (centre_of_mass(r.scene.model, s) - c0).norm());
+  for (const sim::Sample& s : tr.samples) moved = std::max(moved, (centre_of_mass(r.scene.model, s) - c0).norm());
   EXPECT_LT(moved, 1e-8) << "the centre of mass moved";  // the positions' integration error: 2.4e-9 and 1.2e-9 m
   // The bus quaternion's norm: a first integral of q' = q (x) (0, w) / 2.
   const int c = r.scene.model.first_position[0].value + 3;
-  for (const Sample& s : tr.samples)
+  for (const sim::Sample& s : tr.samples)
     ASSERT_NEAR(Eigen::Vector4d(s.y[c], s.y[c + 1], s.y[c + 2], s.y[c + 3]).norm(), 1.0, 1e-6) << "t = " << s.t;
 }
 
@@ -74,7 +74,7 @@ TEST(FreeFloating, ASpinningBusKeepsItsMomentum) {
   // Released spinning and drifting: the momentum is not zero, and its
   // conservation is the integrator's doing, not a zero staying zero.
   const FreeRun r = run_free("zfold_free", {{"initial.dq.bus", "[0.01, 0.02, 0, 0.02, -0.03, 0.05]"}});
-  const Sample& first = r.result.trajectory.samples.front();
+  const sim::Sample& first = r.result.trajectory.samples.front();
   EXPECT_GT(first.momentum.angular.norm(), 1.0);
   std::printf("spinning zfold_free: |L| = %.4g N m s\n", first.momentum.angular.norm());
   EXPECT_LT(r.bus.linear_momentum_drift, r.scene.run.rtol);
@@ -82,12 +82,12 @@ TEST(FreeFloating, ASpinningBusKeepsItsMomentum) {
 }
 
 TEST(FreeFloating, AVeryHeavyBusHoldsStillAndTheWingDeploysAsOnAFixedBase) {
-  const std::vector<Override> heavy{{"base.mass", "1e9"}, {"base.inertia", "[1e9, 1e9, 1e9]"}};
+  const std::vector<sim::Override> heavy{{"base.mass", "1e9"}, {"base.inertia", "[1e9, 1e9, 1e9]"}};
   const FreeRun r = run_free("zfold_free", heavy);
-  const Scene fixed = load_builtin_scene("zfold");
-  const RunResult reference = simulate(fixed, fixed.run);
-  ASSERT_EQ(reference.status, RunStatus::finished);
-  const Trajectory &a = r.result.trajectory, &b = reference.trajectory;
+  const sim::Scene fixed = sim::load_builtin_scene("zfold");
+  const sim::RunResult reference = sim::simulate(fixed, fixed.run);
+  ASSERT_EQ(reference.status, sim::RunStatus::finished);
+  const sim::Trajectory &a = r.result.trajectory, &b = reference.trajectory;
   ASSERT_EQ(a.samples.size(), b.samples.size());
   double worst = 0;
   for (std::size_t k = 0; k < a.samples.size(); ++k)

@@ -17,8 +17,8 @@ using app::RunProgress;
 using app::SimulationWorker;
 
 // Polls like the UI's frame loop until the run of `generation` finished.
-RunProgress poll_until_done(SimulationWorker& worker, long generation, long& seen, Trajectory& copy,
-                            Trajectory& previous) {
+RunProgress poll_until_done(SimulationWorker& worker, long generation, long& seen, sim::Trajectory& copy,
+                            sim::Trajectory& previous) {
   for (int frame = 0; frame < 60 * 120; ++frame) {
     const RunProgress p = worker.sync(seen, copy, previous);
     for (std::size_t k = 1; k < copy.samples.size(); ++k) EXPECT_GT(copy.samples[k].t, copy.samples[k - 1].t);
@@ -31,17 +31,17 @@ RunProgress poll_until_done(SimulationWorker& worker, long generation, long& see
 
 TEST(Handover, SamplesStreamToTheReader) {
   SimulationWorker worker;
-  const Scene scene = test::scene_file("fourbar", {{"run.t_end", "1"}});
+  const sim::Scene scene = test::scene_file("fourbar", {{"run.t_end", "1"}});
   const long generation = worker.run(scene);
   long seen = -1;
-  Trajectory copy, previous;
+  sim::Trajectory copy, previous;
   const RunProgress p = poll_until_done(worker, generation, seen, copy, previous);
-  EXPECT_EQ(p.status, RunStatus::finished);
+  EXPECT_EQ(p.status, sim::RunStatus::finished);
   EXPECT_EQ(copy.samples.size(), 101u);
   EXPECT_DOUBLE_EQ(copy.t_end(), 1.0);
   EXPECT_GT(p.steps, 0);
   // The copy is the run: the same states as a direct simulation.
-  const RunResult direct = simulate(scene, scene.run);
+  const sim::RunResult direct = sim::simulate(scene, scene.run);
   ASSERT_EQ(direct.trajectory.samples.size(), copy.samples.size());
   EXPECT_EQ(direct.trajectory.samples.back().y, copy.samples.back().y);
 }
@@ -49,7 +49,7 @@ TEST(Handover, SamplesStreamToTheReader) {
 TEST(Handover, ANewRequestCancelsTheRunInProgress) {
   SimulationWorker worker;
   long seen = -1;
-  Trajectory copy, previous;
+  sim::Trajectory copy, previous;
   // A long run, superseded once it has produced something.
   const long first = worker.run(test::scene_file("pantograph", {{"run.t_end", "1000"}}));
   while (seen != first || copy.samples.size() < 20) {
@@ -62,7 +62,7 @@ TEST(Handover, ANewRequestCancelsTheRunInProgress) {
   const RunProgress p = poll_until_done(worker, second, seen, copy, previous);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - asked).count();
   EXPECT_LT(seconds, 30.0) << "the cancelled run did not stop";
-  EXPECT_EQ(p.status, RunStatus::finished);
+  EXPECT_EQ(p.status, sim::RunStatus::finished);
   EXPECT_EQ(copy.samples.size(), 51u);
   // The cancelled run's samples moved to `previous`, cut short.
   EXPECT_GE(previous.samples.size(), 20u);
@@ -72,7 +72,7 @@ TEST(Handover, ANewRequestCancelsTheRunInProgress) {
 TEST(Handover, RapidRequestsEndWithTheLastOne) {
   SimulationWorker worker;
   long seen = -1, last = 0;
-  Trajectory copy, previous;
+  sim::Trajectory copy, previous;
   for (int k = 0; k < 20; ++k) {
     last = worker.run(test::scene_file("zfold", {{"run.t_end", std::to_string(0.1 + 0.01 * k)}}));
     worker.sync(seen, copy, previous);

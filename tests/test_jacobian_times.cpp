@@ -17,7 +17,7 @@ struct Probe {
   std::vector<double> y, v;
 };
 
-Probe probe(Dynamics& dynamics, bool along_q = true) {
+Probe probe(sim::Dynamics& dynamics, bool along_q = true) {
   Probe p{dynamics.initial_state(), {}};
   p.v.resize(p.y.size());
   for (std::size_t k = 0; k < p.y.size(); ++k) {
@@ -29,8 +29,8 @@ Probe probe(Dynamics& dynamics, bool along_q = true) {
 }
 
 // ||J v - (f(y + h v) - f(y - h v)) / 2h|| / ||J v||.
-double relative_error(const Scene& scene, bool along_q) {
-  Dynamics dynamics(scene);
+double relative_error(const sim::Scene& scene, bool along_q) {
+  sim::Dynamics dynamics(scene);
   const Probe p = probe(dynamics, along_q);
   const std::size_t n = p.y.size();
   std::vector<double> Jv(n), plus(n), minus(n), y_plus(n), y_minus(n);
@@ -67,8 +67,8 @@ TEST(JacobianTimes, IsExactWithoutLoops) {
 TEST(JacobianTimes, RepeatsAtOneBaseAndLeavesTheRightHandSideExact) {
   // Several products at one base (as GMRES asks), then f itself: the held
   // gains and the unrefined solves end with the product.
-  const Scene scene = test::scene_file("pantograph", {{"regulator.solver", "sparse"}});
-  Dynamics dynamics(scene), fresh(scene);
+  const sim::Scene scene = test::scene_file("pantograph", {{"regulator.solver", "sparse"}});
+  sim::Dynamics dynamics(scene), fresh(scene);
   const Probe p = probe(dynamics);
   const std::size_t n = p.y.size();
   std::vector<double> first(n), again(n), f(n), f_fresh(n);

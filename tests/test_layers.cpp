@@ -69,14 +69,44 @@ TEST(Layers, StudiesIncludeNoRendererOrApplication) {
 TEST(Layers, RendererReadsTheSolversDescriptionsNeverItsDynamics) {
   // What the renderer may know of the solver: the mechanism's description,
   // poses and recorded runs.
-  const std::set<std::string> readable{"spatial",          "joint",   "model",  "kinematics", "loop",   "loads",
-                                       "forces",           "latch",   "scene",  "visuals",    "energy", "state_layout",
-                                       "regulator_settings", "run_settings", "trajectory", "number_text"};
+  const std::set<std::string> readable{"spatial",      "joint",      "model",       "kinematics", "loop",
+                                       "loads",        "scene",      "visuals",     "energy",     "state_layout",
+                                       "run_settings", "trajectory", "number_text", "momentum",   "regulator_settings",
+                                       "force_element", "elements/latch"};
   for (const Include& i : includes_under("render", false)) {
     EXPECT_FALSE(starts_with(i.target, "unfurl/studies/")) << i.file << " includes " << i.target;
     if (!starts_with(i.target, "unfurl/sim/")) continue;
     const std::string name = i.target.substr(11, i.target.size() - 11 - 4);
     EXPECT_TRUE(readable.count(name)) << i.file << " includes the solver's " << i.target;
+  }
+}
+
+TEST(Layers, FilesIncludeNoHigherLayer) {
+  // unfurl::io sits above the solver, the studies and the renderer, below
+  // the application; the renderer knows no files.
+  for (const Include& i : includes_under("io", false))
+    if (i.target.find('/') == std::string::npos && i.target.find(".hpp") != std::string::npos)
+      ADD_FAILURE() << i.file << " includes an application header " << i.target;
+  for (const Include& i : includes_under("render", false))
+    EXPECT_FALSE(starts_with(i.target, "unfurl/io/")) << i.file << " includes " << i.target;
+}
+
+// Each layer's code is in its own namespace: unfurl::sim, unfurl::studies,
+// unfurl::render, unfurl::io, unfurl::app (unfurl::input below them all).
+TEST(Layers, EachLayerHasItsNamespace) {
+  const std::regex opening(R"(^namespace (unfurl[a-z_:]*) \{)");
+  for (const std::string layer : {"input", "sim", "studies", "render", "io", "app"}) {
+    const fs::path root = fs::path(UNFURL_SOURCE_DIR) / layer;
+    for (const auto& entry : fs::recursive_directory_iterator(root)) {
+      const std::string ext = entry.path().extension().string();
+      if (ext != ".hpp" && ext != ".cpp") continue;
+      std::ifstream in(entry.path());
+      for (std::string line; std::getline(in, line);) {
+        std::smatch m;
+        if (!std::regex_search(line, m, opening)) continue;
+        EXPECT_TRUE(starts_with(m[1].str(), "unfurl::" + layer)) << entry.path() << " opens " << m[1];
+      }
+    }
   }
 }
 

@@ -19,31 +19,33 @@ using Eigen::VectorXd;
 
 // A rod of mass m hanging from a revolute joint about x at the base origin,
 // its centre of mass `arm` below the hinge along the body's -z.
-Scene rod(double gravity, double arm) {
-  return load_scene_text(R"(
+sim::Scene rod(double gravity, double arm) {
+  return sim::load_scene_text(R"(
 name: rod
-gravity: [0, 0, )" + std::to_string(gravity) + R"(]
+gravity: [0, 0, )" + std::to_string(gravity) +
+                                  R"(]
 bodies:
   - name: rod
     parent: base
     mass: 2.0
-    com: [0, 0, )" + std::to_string(-arm) + R"(]
+    com: [0, 0, )" + std::to_string(-arm) +
+                                  R"(]
     inertia: [0.1, 0.1, 0.02]
     joint: {name: hinge, type: revolute, axis: [1, 0, 0], parent_point: [0, 0, 0], child_point: [0, 0, 0]}
 )",
-                         "rod");
+                              "rod");
 }
 
-Loads loads_at(const Scene& scene, std::vector<double> y) {
-  Dynamics dynamics(scene);
-  Loads loads;
+sim::Loads loads_at(const sim::Scene& scene, std::vector<double> y) {
+  sim::Dynamics dynamics(scene);
+  sim::Loads loads;
   EXPECT_TRUE(dynamics.loads(0, y.data(), loads));
   return loads;
 }
 
 TEST(Loads, PendulumHangingAtRestCarriesItsWeight) {
-  const Scene scene = rod(-9.81, 0.5);
-  const Vec6 reaction = loads_at(scene, {0.0, 0.0}).reaction[0];
+  const sim::Scene scene = rod(-9.81, 0.5);
+  const sim::Vec6 reaction = loads_at(scene, {0.0, 0.0}).reaction[0];
   // The hinge pushes up with m g; the weight's moment about the hinge is zero.
   EXPECT_NEAR(reaction[0], 0, 1e-12);
   EXPECT_NEAR(reaction[1], 0, 1e-12);
@@ -55,8 +57,8 @@ TEST(Loads, PendulumHeldSidewaysCarriesWeightAndMoment) {
   // Turned by 90 degrees and at rest: the hinge carries the weight and, in
   // the same instant, the moment that is not yet angular acceleration. Its
   // axis component is the applied joint torque: zero.
-  const Scene scene = rod(-9.81, 0.5);
-  const Vec6 reaction = loads_at(scene, {M_PI / 2, 0.0}).reaction[0];
+  const sim::Scene scene = rod(-9.81, 0.5);
+  const sim::Vec6 reaction = loads_at(scene, {M_PI / 2, 0.0}).reaction[0];
   EXPECT_NEAR(reaction[3], 0, 1e-12);  // about the hinge axis
   // Free fall of the centre of mass: a = J_hinge^-1 m g l, the hinge force
   // is m g minus the mass times that acceleration.
@@ -68,9 +70,9 @@ TEST(Loads, PendulumHeldSidewaysCarriesWeightAndMoment) {
 TEST(Loads, SpinningBodyCarriesItsCentripetalLoad) {
   // No gravity, turning at w about the hinge: the hinge pulls the centre of
   // mass inward with m w^2 r and carries no moment.
-  const Scene scene = rod(0, 0.5);
+  const sim::Scene scene = rod(0, 0.5);
   const double w = 3.0, J = 0.1 + 2.0 * 0.25;
-  const Vec6 reaction = loads_at(scene, {0.3, J * w}).reaction[0];
+  const sim::Vec6 reaction = loads_at(scene, {0.3, J * w}).reaction[0];
   EXPECT_NEAR(reaction.head<3>().norm(), 2.0 * w * w * 0.5, 1e-10);
   // Pulling toward the hinge: along +z of the body (the com is at -z).
   EXPECT_NEAR(reaction[2], 2.0 * w * w * 0.5, 1e-10);
@@ -79,16 +81,16 @@ TEST(Loads, SpinningBodyCarriesItsCentripetalLoad) {
 
 TEST(Loads, AxisComponentOfTheReactionIsTheJointTorque) {
   // The z-fold at a generic moving state with its latches engaged.
-  const Scene scene = test::scene_file("zfold");
-  Dynamics dynamics(scene);
+  const sim::Scene scene = test::scene_file("zfold");
+  sim::Dynamics dynamics(scene);
   for (int l = 0; l < dynamics.latch_count(); ++l) dynamics.latch_state().engage(l);
   std::vector<double> y = dynamics.initial_state();
   for (std::size_t k = 0; k < y.size(); ++k) y[k] += 0.1 * std::sin(1.0 + k);
-  Loads loads;
+  sim::Loads loads;
   ASSERT_TRUE(dynamics.loads(0, y.data(), loads));
-  const std::vector<LoadColumn>& columns = dynamics.load_columns();
+  const std::vector<sim::LoadColumn>& columns = dynamics.load_columns();
   for (int j = 0; j < scene.model.size(); ++j) {
-    const Vec3& axis = scene.model.joints[j].axis;
+    const sim::Vec3& axis = scene.model.joints[j].axis;
     EXPECT_NEAR(axis.dot(loads.reaction[j].tail<3>()), test::joint_element_torque(columns, loads, j), 1e-10) << j;
     EXPECT_NE(test::load_of(columns, loads, "latch_torque." + scene.model.joints[j].name), 0.0);
   }
@@ -102,15 +104,15 @@ TEST_P(RandomTreeLoads, ReactionsMatchADenseNewtonEulerComputation) {
   // f = T^T (M a + v x* M v - F) (S^T f is each body's net wrench from its
   // joints). Time derivatives by central differences along dq.
   std::mt19937 rng(100 + GetParam());
-  const Scene scene = test::random_tree(rng, 1 + GetParam() % 12, false);
+  const sim::Scene scene = test::random_tree(rng, 1 + GetParam() % 12, false);
   const int n = scene.model.nq, N = scene.model.size();
   if (n == 0) GTEST_SKIP() << "only fixed joints";
   std::uniform_real_distribution<double> U(-1, 1);
   std::vector<double> y(2 * n), ydot(2 * n);
   for (int k = 0; k < n; ++k) y[k] = scene.q0[k], y[n + k] = 3 * U(rng);
-  Dynamics dynamics(scene);
+  sim::Dynamics dynamics(scene);
   ASSERT_TRUE(dynamics.rhs(0, y.data(), ydot.data()));
-  Loads loads;
+  sim::Loads loads;
   dynamics.loads(0, y.data(), loads);
 
   const VectorXd q = Eigen::Map<VectorXd>(y.data(), n), dq = Eigen::Map<VectorXd>(ydot.data(), n);
@@ -124,15 +126,16 @@ TEST_P(RandomTreeLoads, ReactionsMatchADenseNewtonEulerComputation) {
   const VectorXd a = TA * ddq + (plus.ATTt - minus.ATTt).transpose() / (2 * h) * dq;
   VectorXd net(6 * N);
   for (int i = 0; i < N; ++i) {
-    const Body& b = scene.model.bodies[i];
-    Mat6 M = Mat6::Zero();
-    const Mat3 J = b.inertia_com + b.mass * (b.com.squaredNorm() * Mat3::Identity() - b.com * b.com.transpose());
-    M.topLeftCorner<3, 3>() = b.mass * Mat3::Identity();
-    M.topRightCorner<3, 3>() = -b.mass * skew(b.com);
-    M.bottomLeftCorner<3, 3>() = b.mass * skew(b.com);
+    const sim::Body& b = scene.model.bodies[i];
+    sim::Mat6 M = sim::Mat6::Zero();
+    const sim::Mat3 J =
+        b.inertia_com + b.mass * (b.com.squaredNorm() * sim::Mat3::Identity() - b.com * b.com.transpose());
+    M.topLeftCorner<3, 3>() = b.mass * sim::Mat3::Identity();
+    M.topRightCorner<3, 3>() = -b.mass * sim::skew(b.com);
+    M.bottomLeftCorner<3, 3>() = b.mass * sim::skew(b.com);
     M.bottomRightCorner<3, 3>() = J;
-    const Vec6 vi = v.segment<6>(6 * i), h_i = M * vi;
-    Vec6 gyro;
+    const sim::Vec6 vi = v.segment<6>(6 * i), h_i = M * vi;
+    sim::Vec6 gyro;
     gyro.head<3>() = vi.tail<3>().cross(h_i.head<3>());
     gyro.tail<3>() = vi.head<3>().cross(h_i.head<3>()) + vi.tail<3>().cross(h_i.tail<3>());
     net.segment<6>(6 * i) = M * a.segment<6>(6 * i) + gyro;
@@ -141,7 +144,7 @@ TEST_P(RandomTreeLoads, ReactionsMatchADenseNewtonEulerComputation) {
   double scale = 1;
   for (int i = 0; i < N; ++i) scale = std::max(scale, f.segment<6>(6 * i).norm());
   for (int i = 0; i < N; ++i) {
-    Vec6 expected = f.segment<6>(6 * i);
+    sim::Vec6 expected = f.segment<6>(6 * i);
     expected.tail<3>() -= scene.model.joints[i].child_point.cross(expected.head<3>());
     EXPECT_LT((loads.reaction[i] - expected).norm(), 1e-6 * scale) << "joint " << i << " of " << N;
   }
@@ -152,10 +155,10 @@ INSTANTIATE_TEST_SUITE_P(UpTo12Bodies, RandomTreeLoads, ::testing::Range(0, 20))
 TEST(Loads, PeaksDoNotDependOnTheSampling) {
   // The peaks follow the integrator's steps, which do not depend on the
   // sampling interval: the same to the last bit.
-  const Scene coarse = test::scene_file("zfold", {{"run.sample", "0.5"}});
-  const Scene fine = test::scene_file("zfold", {{"run.sample", "0.001"}});
-  const RunSummary a = summarize(coarse, simulate(coarse, coarse.run));
-  const RunSummary b = summarize(fine, simulate(fine, fine.run));
+  const sim::Scene coarse = test::scene_file("zfold", {{"run.sample", "0.5"}});
+  const sim::Scene fine = test::scene_file("zfold", {{"run.sample", "0.001"}});
+  const sim::RunSummary a = sim::summarize(coarse, sim::simulate(coarse, coarse.run));
+  const sim::RunSummary b = sim::summarize(fine, sim::simulate(fine, fine.run));
   ASSERT_EQ(a.peak_latch_torque.size(), 4u);
   for (std::size_t l = 0; l < a.peak_latch_torque.size(); ++l) {
     EXPECT_EQ(a.peak_latch_torque[l].peak.value, b.peak_latch_torque[l].peak.value);
@@ -167,14 +170,15 @@ TEST(Loads, PeaksDoNotDependOnTheSampling) {
 
 TEST(Loads, LatchPeakIsAboveEverySampledValue) {
   // The coarse samples miss the shock's peak; the steps do not.
-  const Scene scene = test::scene_file("zfold", {{"run.sample", "0.1"}});
-  const RunResult run = simulate(scene, scene.run);
-  const RunSummary s = summarize(scene, run);
+  const sim::Scene scene = test::scene_file("zfold", {{"run.sample", "0.1"}});
+  const sim::RunResult run = sim::simulate(scene, scene.run);
+  const sim::RunSummary s = sim::summarize(scene, run);
   for (std::size_t l = 0; l < scene.latches().size(); ++l) {
     double sampled = 0;
-    for (const Sample& x : run.trajectory.samples)
-      sampled = std::max(sampled, std::abs(test::load_of(run.trajectory.load_columns, x.loads,
-                                                         "latch_torque." + scene.model.joints[scene.latches()[l]->joint].name)));
+    for (const sim::Sample& x : run.trajectory.samples)
+      sampled = std::max(sampled,
+                         std::abs(test::load_of(run.trajectory.load_columns, x.loads,
+                                                "latch_torque." + scene.model.joints[scene.latches()[l]->joint].name)));
     EXPECT_GE(s.peak_latch_torque[l].peak.value, sampled);
     EXPECT_GT(s.peak_latch_torque[l].peak.value, 1.0);  // N m: a real shock
   }
@@ -184,10 +188,10 @@ TEST(Loads, LoopForcesHoldThePantographTogether) {
   // At the start the springs pull the chains apart at the cross pivots; the
   // loop forces are what keeps the split bodies on their images, so they
   // are not zero, and the regulator state has not wound up.
-  const Scene scene = test::scene_file("pantograph");
-  Dynamics dynamics(scene);
+  const sim::Scene scene = test::scene_file("pantograph");
+  sim::Dynamics dynamics(scene);
   std::vector<double> y = dynamics.initial_state();
-  Loads loads;
+  sim::Loads loads;
   dynamics.loads(0, y.data(), loads);
   ASSERT_EQ(static_cast<int>(loads.loop_force.size()), dynamics.layout().m);
   double largest = 0;

@@ -16,30 +16,30 @@ namespace {
 class Pantograph : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    scene_ = new Scene(test::scene_file("pantograph"));
-    run_ = new RunResult(simulate(*scene_, scene_->run));
+    scene_ = new sim::Scene(test::scene_file("pantograph"));
+    run_ = new sim::RunResult(sim::simulate(*scene_, scene_->run));
   }
   static void TearDownTestSuite() {
     delete run_;
     delete scene_;
   }
-  static const Scene& scene() { return *scene_; }
-  static const RunResult& run() { return *run_; }
+  static const sim::Scene& scene() { return *scene_; }
+  static const sim::RunResult& run() { return *run_; }
   static double first_latch() {
     double t = INFINITY;
-    for (const LatchEvent& e : run().trajectory.events) t = std::min(t, e.t);
+    for (const sim::LatchEvent& e : run().trajectory.events) t = std::min(t, e.t);
     return t;
   }
 
  private:
-  static Scene* scene_;
-  static RunResult* run_;
+  static sim::Scene* scene_;
+  static sim::RunResult* run_;
 };
-Scene* Pantograph::scene_ = nullptr;
-RunResult* Pantograph::run_ = nullptr;
+sim::Scene* Pantograph::scene_ = nullptr;
+sim::RunResult* Pantograph::run_ = nullptr;
 
 TEST_F(Pantograph, RunsToTheEnd) {
-  ASSERT_EQ(run().status, RunStatus::finished) << describe(run().failure);
+  ASSERT_EQ(run().status, sim::RunStatus::finished) << sim::describe(run().failure);
   EXPECT_DOUBLE_EQ(run().trajectory.t_end(), 20.0);
 }
 
@@ -47,7 +47,7 @@ TEST_F(Pantograph, AllEightLatchesEngageAtTheSameInstant) {
   const auto& events = run().trajectory.events;
   ASSERT_EQ(events.size(), 8u);
   double lo = INFINITY, hi = -INFINITY;
-  for (const LatchEvent& e : events) {
+  for (const sim::LatchEvent& e : events) {
     lo = std::min(lo, e.t);
     hi = std::max(hi, e.t);
   }
@@ -57,7 +57,7 @@ TEST_F(Pantograph, AllEightLatchesEngageAtTheSameInstant) {
 TEST_F(Pantograph, ChainsStayMirrorImagesUntilTheLatches) {
   // Chain B's joints are the negatives of chain A's: q5..q8 = -q1..-q4.
   double worst = 0;
-  for (const Sample& s : run().trajectory.samples)
+  for (const sim::Sample& s : run().trajectory.samples)
     if (s.t < first_latch())
       for (int j = 0; j < 4; ++j) worst = std::max(worst, std::abs(s.y[j] + s.y[4 + j]));
   EXPECT_LT(worst, 1e-6);
@@ -68,12 +68,12 @@ TEST_F(Pantograph, LatchesHoldEveryJointAtTheDeployedAngle) {
   // where the chains need not stay mirror images (METHOD.md); each joint is
   // held within the static deflection of its latch under the spring
   // preload, k (pi/2) / k_L = 1.6e-4 rad, give or take the loop forces.
-  const Sample& last = run().trajectory.samples.back();
+  const sim::Sample& last = run().trajectory.samples.back();
   for (int j = 0; j < 8; ++j) EXPECT_LT(std::abs(last.y[j]), 5e-4) << "joint " << j + 1;
 }
 
 TEST_F(Pantograph, LoopsStayClosedOverTheWholeRun) {
-  const RunSummary s = summarize(scene(), run());
+  const sim::RunSummary s = sim::summarize(scene(), run());
   EXPECT_LT(s.max_closure_gap, 1e-7);
   EXPECT_LT(s.max_closure_angle, 1e-6);
 }
@@ -82,22 +82,22 @@ TEST_F(Pantograph, LoopsStayClosedOverTheWholeRun) {
 // within the accuracy asked of them against the reduction (1e-5 s; GMRES's
 // inexact Newton steps move them by 2e-6 s, the sparse solver by 1e-9 s),
 // and the loops as closed.
-void expect_same_deployment(const RunResult& a, const RunResult& b, const Scene& scene) {
-  ASSERT_EQ(b.status, RunStatus::finished) << describe(b.failure);
+void expect_same_deployment(const sim::RunResult& a, const sim::RunResult& b, const sim::Scene& scene) {
+  ASSERT_EQ(b.status, sim::RunStatus::finished) << sim::describe(b.failure);
   ASSERT_EQ(a.trajectory.events.size(), b.trajectory.events.size());
   for (std::size_t k = 0; k < a.trajectory.events.size(); ++k)
     EXPECT_NEAR(a.trajectory.events[k].t, b.trajectory.events[k].t, 1e-5);
-  EXPECT_LT(summarize(scene, b).max_closure_gap, 1e-7);
+  EXPECT_LT(sim::summarize(scene, b).max_closure_gap, 1e-7);
 }
 
 TEST_F(Pantograph, SparseGainSolverGivesTheSameDeployment) {
-  const Scene sparse = test::scene_file("pantograph", {{"regulator.solver", "sparse"}});
-  expect_same_deployment(run(), simulate(sparse, sparse.run), sparse);
+  const sim::Scene sparse = test::scene_file("pantograph", {{"regulator.solver", "sparse"}});
+  expect_same_deployment(run(), sim::simulate(sparse, sparse.run), sparse);
 }
 
 TEST_F(Pantograph, KrylovNewtonSolverGivesTheSameDeployment) {
-  const Scene krylov = test::scene_file("pantograph", {{"run.linear_solver", "krylov"}});
-  expect_same_deployment(run(), simulate(krylov, krylov.run), krylov);
+  const sim::Scene krylov = test::scene_file("pantograph", {{"run.linear_solver", "krylov"}});
+  expect_same_deployment(run(), sim::simulate(krylov, krylov.run), krylov);
 }
 
 // One spring 20 % stiffer: j1 latches 50 ms before the rest, and the
@@ -107,18 +107,18 @@ TEST_F(Pantograph, KrylovNewtonSolverGivesTheSameDeployment) {
 // convergence failures and 53,324 steps; the held gains' matrix 7 and
 // 20,869.
 TEST(PantographOffNominal, LatchedRingDownConvergesWithoutNewtonFailures) {
-  const Scene scene = test::scene_file("pantograph", {{"springs.0.stiffness", "0.12"}});
-  const RunResult run = simulate(scene, scene.run);
-  ASSERT_EQ(run.status, RunStatus::finished) << describe(run.failure);
+  const sim::Scene scene = test::scene_file("pantograph", {{"springs.0.stiffness", "0.12"}});
+  const sim::RunResult run = sim::simulate(scene, scene.run);
+  ASSERT_EQ(run.status, sim::RunStatus::finished) << sim::describe(run.failure);
   EXPECT_EQ(run.trajectory.events.size(), scene.latches().size());
   EXPECT_LT(run.stats.nonlinear_failures, 100);
-  EXPECT_LT(summarize(scene, run).max_closure_gap, 1e-6);
+  EXPECT_LT(sim::summarize(scene, run).max_closure_gap, 1e-6);
 }
 
 TEST(PantographReduction, MatchesTheMethodsFigures) {
-  const PantographReduction r;
+  const studies::PantographReduction r;
   double I, dI;
-  const double a0 = PantographReduction::a0;
+  const double a0 = studies::PantographReduction::a0;
   r.inertia(a0, I, dI);
   EXPECT_NEAR(I, 164.45, 0.01);
   r.inertia(0, I, dI);
@@ -129,10 +129,10 @@ TEST(PantographReduction, MatchesTheMethodsFigures) {
 TEST_F(Pantograph, AgreesWithTheOneDegreeOfFreedomReduction) {
   // The reduction at every sample before the first latch, and its latch
   // time (pantograph_reduction.hpp).
-  const ReductionError error = reduction_error(run().trajectory);
+  const studies::ReductionError error = studies::reduction_error(run().trajectory);
   ASSERT_FALSE(std::isnan(error.latch_time));
   EXPECT_LT(error.angle, 3e-7) << "largest joint-angle difference " << error.angle << " rad at t = " << error.at;
-  for (const LatchEvent& e : run().trajectory.events)
+  for (const sim::LatchEvent& e : run().trajectory.events)
     EXPECT_NEAR(e.t, error.latch_time, 1e-5) << scene().model.joints[e.joint].name;
   std::printf("reduction latch time %.9f s; largest angle difference before it %.3g rad at t = %.3f s\n",
               error.latch_time, error.angle, error.at);

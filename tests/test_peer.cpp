@@ -64,12 +64,13 @@ struct Peer {
 };
 
 // The scene exported and run by MuJoCo with RK4 at dt.
-Peer run_mujoco(const std::string& scene, const std::vector<Override>& overrides, double t_end, double dt,
+Peer run_mujoco(const std::string& scene, const std::vector<sim::Override>& overrides, double t_end, double dt,
                 double sample) {
   const fs::path dir = work_dir();
   const fs::path xml = dir / (scene + ".xml"), prefix = dir / scene;
   std::string command = std::string(UNFURL_BINARY) + " export mjcf " + scene + " -o " + xml.string();
-  for (const Override& o : overrides) command += " --set '" + o.path + "=" + o.value + "'";  // values may hold spaces
+  for (const sim::Override& o : overrides)
+    command += " --set '" + o.path + "=" + o.value + "'";  // values may hold spaces
   const Outcome exported = run(command);
   EXPECT_EQ(exported.code, 0) << exported.output;
   char args[256];
@@ -88,7 +89,8 @@ Peer run_mujoco(const std::string& scene, const std::vector<Override>& overrides
   return p;
 }
 
-RunResult run_unfurl(const std::string& scene_name, std::vector<Override> overrides, double t_end, double sample) {
+sim::RunResult run_unfurl(const std::string& scene_name, std::vector<sim::Override> overrides, double t_end,
+                          double sample) {
   overrides.push_back({"run.t_end", std::to_string(t_end)});
   overrides.push_back({"run.sample", std::to_string(sample)});
   // ERK at a tight tolerance: more accurate than BDF on these smooth runs
@@ -96,8 +98,8 @@ RunResult run_unfurl(const std::string& scene_name, std::vector<Override> overri
   overrides.push_back({"run.integrator", "arkode-erk"});
   overrides.push_back({"run.rtol", "1e-12"});
   overrides.push_back({"run.atol", "1e-12"});
-  const Scene scene = load_builtin_scene(scene_name, overrides);
-  return simulate(scene, scene.run);
+  const sim::Scene scene = sim::load_builtin_scene(scene_name, overrides);
+  return sim::simulate(scene, scene.run);
 }
 
 // The largest angle difference over the samples with t <= until, and where
@@ -107,12 +109,13 @@ struct Comparison {
   std::string first_parting;  // empty if they never part by more than the bound
 };
 
-Comparison compare_angles(const Scene& scene, const RunResult& ours, const Peer& peer, double until, double bound) {
+Comparison compare_angles(const sim::Scene& scene, const sim::RunResult& ours, const Peer& peer, double until,
+                          double bound) {
   Comparison c;
   const Table& theirs = peer.angles;
   const std::size_t n = std::min(ours.trajectory.samples.size(), theirs.rows.size());
   for (std::size_t k = 0; k < n; ++k) {
-    const Sample& s = ours.trajectory.samples[k];
+    const sim::Sample& s = ours.trajectory.samples[k];
     if (s.t > until + 1e-9) break;
     EXPECT_NEAR(theirs.rows[k][0], s.t, 1e-9) << "sample times differ";
     for (std::size_t col = 1; col + 1 < theirs.columns.size(); ++col) {
@@ -131,9 +134,9 @@ Comparison compare_angles(const Scene& scene, const RunResult& ours, const Peer&
   return c;
 }
 
-double latch_time_difference(const Scene& scene, const RunResult& ours, const Peer& peer) {
+double latch_time_difference(const sim::Scene& scene, const sim::RunResult& ours, const Peer& peer) {
   double worst = 0;
-  for (const LatchEvent& e : ours.trajectory.events) {
+  for (const sim::LatchEvent& e : ours.trajectory.events) {
     const std::string& joint = scene.model.joints[e.joint].name;
     const auto theirs = peer.latch.find(joint);
     if (theirs == peer.latch.end()) {
@@ -146,9 +149,9 @@ double latch_time_difference(const Scene& scene, const RunResult& ours, const Pe
   return worst;
 }
 
-double first_latch(const RunResult& run) {
+double first_latch(const sim::RunResult& run) {
   double t = INFINITY;
-  for (const LatchEvent& e : run.trajectory.events) t = std::min(t, e.t);
+  for (const sim::LatchEvent& e : run.trajectory.events) t = std::min(t, e.t);
   return t;
 }
 
@@ -158,12 +161,12 @@ struct Bounds {
   double until_first_latch = 0, whole_run = 0, latch_time = 0;
 };
 
-void expect_agreement(const std::string& name, const std::vector<Override>& overrides, double t_end, double dt,
+void expect_agreement(const std::string& name, const std::vector<sim::Override>& overrides, double t_end, double dt,
                       const Bounds& bounds) {
   const Peer peer = run_mujoco(name, overrides, t_end, dt, 0.01);
-  const Scene scene = load_builtin_scene(name, overrides);
-  const RunResult ours = run_unfurl(name, overrides, t_end, 0.01);
-  ASSERT_EQ(ours.status, RunStatus::finished) << describe(ours.failure);
+  const sim::Scene scene = sim::load_builtin_scene(name, overrides);
+  const sim::RunResult ours = run_unfurl(name, overrides, t_end, 0.01);
+  ASSERT_EQ(ours.status, sim::RunStatus::finished) << sim::describe(ours.failure);
   ASSERT_EQ(peer.angles.rows.size(), ours.trajectory.samples.size());
   const double first = std::min(first_latch(ours), t_end);
   const Comparison before = compare_angles(scene, ours, peer, first, bounds.until_first_latch);
@@ -222,7 +225,7 @@ TEST(Peer, PantographAgreesToMujocosOwnConstraintError) {
 }
 
 TEST(Export, EveryBuiltInSceneLoadsAndRunsInMujocoWithoutWarnings) {
-  for (const std::string& name : builtin_scene_names()) {
+  for (const std::string& name : sim::builtin_scene_names()) {
     const Peer peer = run_mujoco(name, {}, 0.05, 1e-4, 0.01);
     EXPECT_EQ(peer.angles.rows.size(), 6u) << name;
   }
@@ -260,7 +263,7 @@ TEST(Export, ListsWhatMjcfCannotSay) {
 TEST(Peer, ZfoldEnergyOfBothEnginesOnOnePlot) {
   // Written where UNFURL_PEER_OUT says (scripts/reports: docs/peer).
   const Peer peer = run_mujoco("zfold", {}, 20, 1e-4, 0.01);
-  const RunResult ours = run_unfurl("zfold", {}, 20, 0.01);
+  const sim::RunResult ours = run_unfurl("zfold", {}, 20, 0.01);
   render::PlotSpec spec;
   spec.title = "zfold: energy, unfurl and MuJoCo";
   spec.y_label = "kinetic + springs + latches, J";
@@ -276,7 +279,7 @@ TEST(Peer, ZfoldEnergyOfBothEnginesOnOnePlot) {
   ASSERT_GE(energy, 0);
   ASSERT_EQ(peer.angles.rows.size(), ours.trajectory.samples.size());
   for (std::size_t k = 0; k < ours.trajectory.samples.size(); ++k) {
-    const Sample& s = ours.trajectory.samples[k];
+    const sim::Sample& s = ours.trajectory.samples[k];
     a.x.push_back(s.t);
     a.y.push_back(s.energy.total());
     b.x.push_back(peer.angles.rows[k][0]);
@@ -284,7 +287,7 @@ TEST(Peer, ZfoldEnergyOfBothEnginesOnOnePlot) {
     largest = std::max(largest, std::abs(a.y.back() - b.y.back()));
   }
   spec.series = {b, a};
-  for (const LatchEvent& e : ours.trajectory.events) spec.events.push_back(e.t);
+  for (const sim::LatchEvent& e : ours.trajectory.events) spec.events.push_back(e.t);
   EXPECT_LT(largest, 1e-6) << "the two engines' energies differ";
   const char* out = std::getenv("UNFURL_PEER_OUT");
   const fs::path dir = out ? fs::path(out) : work_dir();

@@ -18,12 +18,12 @@ namespace {
 TEST(LoopRegulator, ResidualOfAnOpenStartDecays) {
   // Start the four-bar about 1 mm / 1 mrad open: the restoring loop force
   // must pull it shut within a few regulator time constants (1/v_max).
-  Scene scene = test::scene_file("fourbar", {{"closure_tolerance", "0.01"},
-                                             {"initial.q.crank_pivot", "1.5717963267948966"},
-                                             {"run.t_end", "0.05"},
-                                             {"run.sample", "0.001"}});
-  const RunResult run = simulate(scene, scene.run);
-  ASSERT_EQ(run.status, RunStatus::finished);
+  sim::Scene scene = test::scene_file("fourbar", {{"closure_tolerance", "0.01"},
+                                                  {"initial.q.crank_pivot", "1.5717963267948966"},
+                                                  {"run.t_end", "0.05"},
+                                                  {"run.sample", "0.001"}});
+  const sim::RunResult run = sim::simulate(scene, scene.run);
+  ASSERT_EQ(run.status, sim::RunStatus::finished);
   const auto& samples = run.trajectory.samples;
   EXPECT_GT(samples.front().closure[0].distance, 1e-4);
   // The regulator acts on the geometric gap itself: it closes to round-off
@@ -36,9 +36,9 @@ TEST(LoopRegulator, MaxClosureFailsARunOnTheGeometricGap) {
   // The pantograph's gap, held at the integrator's tolerance, reaches about
   // 1e-11 m: a limit below that stops the run where it is first exceeded,
   // at a step's end, with what was computed kept.
-  const Scene scene = test::scene_file("pantograph", {{"run.max_closure", "5e-12"}});
-  const RunResult run = simulate(scene, scene.run);
-  ASSERT_EQ(run.status, RunStatus::failed);
+  const sim::Scene scene = test::scene_file("pantograph", {{"run.max_closure", "5e-12"}});
+  const sim::RunResult run = sim::simulate(scene, scene.run);
+  ASSERT_EQ(run.status, sim::RunStatus::failed);
   EXPECT_EQ(run.failure.check, "closure");
   EXPECT_GT(run.failure.t, 0.0);
   EXPECT_GT(run.peaks.gap_m.value, 5e-12);
@@ -46,9 +46,9 @@ TEST(LoopRegulator, MaxClosureFailsARunOnTheGeometricGap) {
   EXPECT_LE(run.trajectory.t_end(), run.failure.t);
 }
 
-double largest_gap(const RunResult& run, double from, double to) {
+double largest_gap(const sim::RunResult& run, double from, double to) {
   double gap = 0;
-  for (const Sample& s : run.trajectory.samples)
+  for (const sim::Sample& s : run.trajectory.samples)
     if (s.t >= from && s.t <= to) gap = std::max(gap, s.closure[0].distance);
   return gap;
 }
@@ -57,9 +57,10 @@ TEST(LoopRegulator, FourbarsGapStaysBelowANanometreAndDoesNotGrow) {
   // Without damping nothing dissipates an integration error: the feedback
   // on the geometric gap must hold it at the tolerance's level for good.
   // (Over 1e4 s the same run stays below 6.5e-10 m; see the README.)
-  const Scene scene = test::scene_file("fourbar", {{"run.t_end", "200"}, {"run.rtol", "1e-8"}, {"run.sample", "0.5"}});
-  const RunResult run = simulate(scene, scene.run);
-  ASSERT_EQ(run.status, RunStatus::finished) << describe(run.failure);
+  const sim::Scene scene =
+      test::scene_file("fourbar", {{"run.t_end", "200"}, {"run.rtol", "1e-8"}, {"run.sample", "0.5"}});
+  const sim::RunResult run = sim::simulate(scene, scene.run);
+  ASSERT_EQ(run.status, sim::RunStatus::finished) << sim::describe(run.failure);
   const double early = largest_gap(run, 10, 100), late = largest_gap(run, 100, 200);
   EXPECT_LT(largest_gap(run, 0, 200), 1e-9);
   EXPECT_GT(early, 0.0);
@@ -70,47 +71,48 @@ TEST(LoopRegulator, StiffLatchesEndAtRestWithTheSpringsEnergyAndNoStuckResidual)
   // Latches at 1e8 N m/rad ring at about 1e4 rad/s, close to the
   // regulator's own rate: the run must still settle with the loops shut and
   // the energy the springs leave (pi^2 / 10 J), not a wound-up residual.
-  std::vector<Override> overrides = {{"run.rtol", "1e-8"}};
+  std::vector<sim::Override> overrides = {{"run.rtol", "1e-8"}};
   for (int l = 0; l < 8; ++l) overrides.push_back({"latches." + std::to_string(l) + ".stiffness", "1e8"});
-  const Scene scene = test::scene_file("pantograph", overrides);
-  const RunResult run = simulate(scene, scene.run);
-  ASSERT_EQ(run.status, RunStatus::finished) << describe(run.failure);
-  const RunSummary summary = summarize(scene, run);
+  const sim::Scene scene = test::scene_file("pantograph", overrides);
+  const sim::RunResult run = sim::simulate(scene, scene.run);
+  ASSERT_EQ(run.status, sim::RunStatus::finished) << sim::describe(run.failure);
+  const sim::RunSummary summary = sim::summarize(scene, run);
   const double springs_energy = 0.9869604401089358;
   EXPECT_NEAR(summary.energy_final, springs_energy, 0.01 * springs_energy);
   EXPECT_LT(run.peaks.gap_m.value, 1e-7);
-  const Sample& last = run.trajectory.samples.back();
+  const sim::Sample& last = run.trajectory.samples.back();
   for (double rate : last.q_dot) EXPECT_LT(std::abs(rate), 1e-3);
 }
 
 TEST(LeaveOut, TreeSceneCarriesNoRegulatorState) {
-  const Scene scene = test::scene_file("zfold");
-  Dynamics dynamics(scene);
+  const sim::Scene scene = test::scene_file("zfold");
+  sim::Dynamics dynamics(scene);
   EXPECT_EQ(dynamics.layout().m, 0);
   EXPECT_EQ(dynamics.size(), 2 * scene.model.nq);
   EXPECT_EQ(dynamics.regulator(), nullptr);
 }
 
 TEST(LeaveOut, PlanarLoopCarriesThreeComponents) {
-  const Scene scene = test::scene_file("fourbar");
-  Dynamics dynamics(scene);
+  const sim::Scene scene = test::scene_file("fourbar");
+  sim::Dynamics dynamics(scene);
   ASSERT_NE(dynamics.regulator(), nullptr);
   EXPECT_EQ(dynamics.layout().m, 3);  // v_y, v_z, w_x: the in-plane ones
-  for (const LoopComponent& c : dynamics.regulator()->components()) EXPECT_TRUE(c.axis == 1 || c.axis == 2 || c.axis == 3);
+  for (const sim::LoopComponent& c : dynamics.regulator()->components())
+    EXPECT_TRUE(c.axis == 1 || c.axis == 2 || c.axis == 3);
   EXPECT_EQ(dynamics.size(), 2 * scene.model.nq + 3);  // (q, p, u)
 }
 
 TEST(LeaveOut, PantographCarriesNineComponents) {
-  Dynamics dynamics(test::scene_file("pantograph"));
+  sim::Dynamics dynamics(test::scene_file("pantograph"));
   EXPECT_EQ(dynamics.layout().m, 9);
   EXPECT_EQ(dynamics.size(), 31);  // (q, p, u): 11 + 11 + 9
 }
 
 TEST(LeaveOut, SceneWithoutLatchesHasNoEvents) {
-  const Scene scene = test::scene_file("double_pendulum");
-  Dynamics dynamics(scene);
+  const sim::Scene scene = test::scene_file("double_pendulum");
+  sim::Dynamics dynamics(scene);
   EXPECT_EQ(dynamics.latch_count(), 0);
-  const RunResult run = simulate(scene, scene.run);
+  const sim::RunResult run = sim::simulate(scene, scene.run);
   EXPECT_TRUE(run.trajectory.events.empty());
 }
 

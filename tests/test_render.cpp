@@ -41,19 +41,19 @@ std::pair<int, int> project(const render::Camera& camera, const Eigen::Vector3f&
   return {static_cast<int>((x + 1) / 2 * w), static_cast<int>((1 - y) / 2 * h)};
 }
 
-std::vector<Pose> deployed_poses(const Scene& scene) {
+std::vector<sim::Pose> deployed_poses(const sim::Scene& scene) {
   std::vector<double> q(scene.model.nq, 0.0);
-  std::vector<Pose> poses;
-  body_poses(scene.model, q.data(), poses);
+  std::vector<sim::Pose> poses;
+  sim::body_poses(scene.model, q.data(), poses);
   return poses;
 }
 
 TEST_F(Render, DeployedPantographFromAbove) {
-  const SceneFile file = read_scene_file(test::asset("scenes/pantograph.yaml"));
-  const Scene& scene = file.scene;
+  const sim::SceneFile file = sim::read_scene_file(test::asset("scenes/pantograph.yaml"));
+  const sim::Scene& scene = file.scene;
   const int w = 320, h = 180;
   render::FrameRenderer renderer(scene, file.visuals, w, h, {render::builtin_mesh_directory()});
-  const std::vector<Pose> poses = deployed_poses(scene);
+  const std::vector<sim::Pose> poses = deployed_poses(scene);
   const render::Camera camera = *render::camera_preset("top", renderer.view().bounds(poses), float(w) / h);
   Image image;
   renderer.frame(poses, 0, camera, image);
@@ -69,7 +69,7 @@ TEST_F(Render, DeployedPantographFromAbove) {
   // The panel colour (the blue cells) at panel B2's centre, on its front
   // face (+z, towards the camera).
   const int b2 = *scene.model.find_body("panel_B2");
-  const Eigen::Vector3f centre = poses[b2].to_base(Vec3(0.1, 0.1, 0.0125)).cast<float>();
+  const Eigen::Vector3f centre = poses[b2].to_base(sim::Vec3(0.1, 0.1, 0.0125)).cast<float>();
   const auto [px, py] = project(camera, centre, w, h);
   const std::uint8_t* c = image.pixel(px, py);
   EXPECT_GT(c[2], c[0] + 40) << "at " << px << "," << py << ": " << int(c[0]) << " " << int(c[1]) << " " << int(c[2]);
@@ -84,12 +84,12 @@ TEST_F(Render, DeployedPantographFromAbove) {
 }
 
 TEST_F(Render, SameFrameTwiceGivesIdenticalPixels) {
-  const SceneFile file = read_scene_file(test::asset("scenes/zfold.yaml"));
-  const Scene& scene = file.scene;
+  const sim::SceneFile file = sim::read_scene_file(test::asset("scenes/zfold.yaml"));
+  const sim::Scene& scene = file.scene;
   render::FrameRenderer renderer(scene, file.visuals, 200, 120, {render::builtin_mesh_directory()});
   std::vector<double> q = scene.q0;
-  std::vector<Pose> poses;
-  body_poses(scene.model, q.data(), poses);
+  std::vector<sim::Pose> poses;
+  sim::body_poses(scene.model, q.data(), poses);
   const render::Camera camera = *render::camera_preset("iso", renderer.view().bounds(poses), 200.0f / 120);
   Image a, b;
   renderer.frame(poses, 1.5, camera, a);
@@ -122,8 +122,8 @@ TEST_F(Render, AnglePlotOfARunKeepsItsCurvesInsideTheAxes) {
   // The z-fold's joint-angle plot (the paper's figure 6) as `render --plots`
   // draws it. j4's curve (palette colour 3) is drawn last, on top of the
   // others where they meet at the deployed 0, so it shows along the whole run.
-  const Scene scene = test::scene_file("zfold", {{"run.t_end", "10"}});
-  const RunResult run = simulate(scene, scene.run);
+  const sim::Scene scene = test::scene_file("zfold", {{"run.t_end", "10"}});
+  const sim::RunResult run = sim::simulate(scene, scene.run);
   const render::PlotSpec spec = render::trajectory_plot(render::PlotKind::angles, scene, run.trajectory);
   render::PlotRenderer plotter(640, 360);
   Image image;
@@ -205,11 +205,11 @@ TEST(GlBackends, EglAndOsmesaDrawTheSameFrame) {
   const std::vector<render::GlBackend> backends = render::available_gl_backends();
   ASSERT_FALSE(backends.empty());
   if (backends.size() < 2) GTEST_SKIP() << "this build has one offscreen backend";
-  const SceneFile file = read_scene_file(test::asset("scenes/pantograph.yaml"));
+  const sim::SceneFile file = sim::read_scene_file(test::asset("scenes/pantograph.yaml"));
   std::vector<double> q(file.scene.model.nq);
   for (int c = 0; c < file.scene.model.nq; ++c) q[c] = 0.5 * file.scene.q0[c];
-  std::vector<Pose> poses;
-  body_poses(file.scene.model, q.data(), poses);
+  std::vector<sim::Pose> poses;
+  sim::body_poses(file.scene.model, q.data(), poses);
   Image frames[2];
   for (int k = 0; k < 2; ++k) {
     auto context = render::make_offscreen_context(backends[k]);
@@ -293,22 +293,22 @@ TEST(RenderCommand, WritesFramesPlotsAndAVideoWithTheExpectedFrameCount) {
 // every body where it is relative to the bus; the inertial frame is the
 // solver's.
 TEST(CameraFrame, RidingWithTheBusHoldsItStillAndKeepsTheArrayOnIt) {
-  const Scene scene = load_builtin_scene("zfold_free", {{"run.t_end", "6"}});
-  const RunResult run = simulate(scene, scene.run);
-  ASSERT_EQ(run.status, RunStatus::finished);
+  const sim::Scene scene = sim::load_builtin_scene("zfold_free", {{"run.t_end", "6"}});
+  const sim::RunResult run = sim::simulate(scene, scene.run);
+  ASSERT_EQ(run.status, sim::RunStatus::finished);
   const std::vector<double> q(run.trajectory.samples.back().y.begin(),
                               run.trajectory.samples.back().y.begin() + scene.model.nq);
-  std::vector<Pose> riding, inertial, solver;
+  std::vector<sim::Pose> riding, inertial, solver;
   render::poses_in_camera_frame(render::CameraFrame::bus, scene.model, q.data(), riding);
   render::poses_in_camera_frame(render::CameraFrame::inertial, scene.model, q.data(), inertial);
-  body_poses(scene.model, q.data(), solver);
+  sim::body_poses(scene.model, q.data(), solver);
   EXPECT_LT(riding[0].position.norm(), 1e-15);
-  EXPECT_LT((riding[0].rotation - Mat3::Identity()).norm(), 1e-15);
+  EXPECT_LT((riding[0].rotation - sim::Mat3::Identity()).norm(), 1e-15);
   EXPECT_GT(Eigen::AngleAxisd(inertial[0].rotation).angle(), 0.05) << "the bus has turned by t = 6 s";
   for (int i = 0; i < scene.model.size(); ++i) {
     EXPECT_EQ(inertial[i].position, solver[i].position);
     // Body i seen from the bus: the same either way.
-    const Vec3 seen = inertial[0].rotation * (inertial[i].position - inertial[0].position);
+    const sim::Vec3 seen = inertial[0].rotation * (inertial[i].position - inertial[0].position);
     EXPECT_LT((riding[i].position - seen).norm(), 1e-12);
     EXPECT_LT((riding[i].rotation - inertial[i].rotation * inertial[0].rotation.transpose()).norm(), 1e-12);
   }

@@ -43,8 +43,8 @@ int posix_memalign(void** out, size_t alignment, size_t n) {
 namespace unfurl {
 namespace {
 
-long allocations_in_rhs(const Scene& scene, bool engage_latches) {
-  Dynamics dynamics(scene);
+long allocations_in_rhs(const sim::Scene& scene, bool engage_latches) {
+  sim::Dynamics dynamics(scene);
   std::vector<double> y = dynamics.initial_state(), ydot(y.size());
   for (double& x : y) x += 1e-3;  // a generic state: moving, loops slightly open
   if (engage_latches)
@@ -57,8 +57,8 @@ long allocations_in_rhs(const Scene& scene, bool engage_latches) {
 
 // The Krylov solvers' J v at one base (as GMRES asks): with the gains
 // held, the sparse solver does not factor (the one step that allocates).
-long allocations_in_jacobian_times(const Scene& scene) {
-  Dynamics dynamics(scene);
+long allocations_in_jacobian_times(const sim::Scene& scene) {
+  sim::Dynamics dynamics(scene);
   std::vector<double> y = dynamics.initial_state(), v(y.size(), 1.0), Jv(y.size());
   for (double& x : y) x += 1e-3;
   dynamics.rhs(0, y.data(), Jv.data());

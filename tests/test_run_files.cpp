@@ -17,8 +17,8 @@ TEST(LoadsFile, HasTheColumnsTheSceneHasAndReadsBack) {
   // The pantograph: springs and latches on j1..j8 only, reactions on every
   // joint, nine loop-force components.
   namespace fs = std::filesystem;
-  const Scene scene = test::scene_file("pantograph", {{"run.t_end", "0.2"}, {"run.sample", "0.05"}});
-  const RunResult run = simulate(scene, scene.run);
+  const sim::Scene scene = test::scene_file("pantograph", {{"run.t_end", "0.2"}, {"run.sample", "0.05"}});
+  const sim::RunResult run = sim::simulate(scene, scene.run);
   const fs::path dir = fs::temp_directory_path() / ("unfurl_loads_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   io::write_trajectory_csv(scene, run.trajectory, (dir / "trajectory.csv").string());
@@ -36,14 +36,14 @@ TEST(LoadsFile, HasTheColumnsTheSceneHasAndReadsBack) {
                         "loop_moment.A1.x [N m; split body frame],"),
             std::string::npos)
       << header;
-  const Trajectory back = io::read_trajectory_csv(scene, (dir / "trajectory.csv").string());
+  const sim::Trajectory back = io::read_trajectory_csv(scene, (dir / "trajectory.csv").string());
   ASSERT_EQ(back.samples.size(), run.trajectory.samples.size());
   EXPECT_EQ(back.loop_components.size(), 9u);
   for (std::size_t k = 0; k < back.samples.size(); ++k)
     for (int j = 0; j < scene.model.size(); ++j) {
       EXPECT_EQ(back.samples[k].loads.reaction[j], run.trajectory.samples[k].loads.reaction[j]);
       const std::string spring = "spring_torque." + scene.model.joints[j].name;
-      if (find_load_column(run.trajectory.load_columns, spring) < 0) continue;
+      if (sim::find_load_column(run.trajectory.load_columns, spring) < 0) continue;
       EXPECT_EQ(test::load_of(back.load_columns, back.samples[k].loads, spring),
                 test::load_of(run.trajectory.load_columns, run.trajectory.samples[k].loads, spring));
     }

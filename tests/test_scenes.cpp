@@ -9,11 +9,11 @@ namespace unfurl {
 namespace {
 
 TEST(PantographStowed, RunsToTheEndAndReportsWhichJointsLatched) {
-  const Scene scene = test::scene_file("pantograph_stowed");
-  const RunResult run = simulate(scene, scene.run);
-  ASSERT_EQ(run.status, RunStatus::finished) << describe(run.failure);
+  const sim::Scene scene = test::scene_file("pantograph_stowed");
+  const sim::RunResult run = sim::simulate(scene, scene.run);
+  ASSERT_EQ(run.status, sim::RunStatus::finished) << sim::describe(run.failure);
   EXPECT_DOUBLE_EQ(run.trajectory.t_end(), 20.0);
-  const RunSummary s = summarize(scene, run);
+  const sim::RunSummary s = sim::summarize(scene, run);
   // Every latch is accounted for: latched with a time, or listed unlatched.
   EXPECT_EQ(s.latch_times.size() + s.unlatched.size(), scene.latches().size());
   EXPECT_LT(s.max_closure_gap, 1e-5);
@@ -23,9 +23,9 @@ TEST(PantographStowed, RunsToTheEndAndReportsWhichJointsLatched) {
 }
 
 TEST(Zfold, DeploysAndLatches) {
-  const Scene scene = test::scene_file("zfold");
-  const RunResult run = simulate(scene, scene.run);
-  ASSERT_EQ(run.status, RunStatus::finished) << describe(run.failure);
+  const sim::Scene scene = test::scene_file("zfold");
+  const sim::RunResult run = sim::simulate(scene, scene.run);
+  ASSERT_EQ(run.status, sim::RunStatus::finished) << sim::describe(run.failure);
   EXPECT_EQ(run.trajectory.events.size(), 4u);
   // Deployed: every joint ends near q = 0, held by its latch.
   for (double q : std::vector<double>(run.trajectory.samples.back().y.begin(),
@@ -36,17 +36,17 @@ TEST(Zfold, DeploysAndLatches) {
 }
 
 TEST(Zfold, EveryIntegratorDeploysIt) {
-  const Scene scene = test::scene_file("zfold");
-  const RunResult reference = simulate(scene, scene.run);
-  for (IntegratorKind kind : all_integrators()) {
-    RunSettings settings = scene.run;
+  const sim::Scene scene = test::scene_file("zfold");
+  const sim::RunResult reference = sim::simulate(scene, scene.run);
+  for (sim::IntegratorKind kind : sim::all_integrators()) {
+    sim::RunSettings settings = scene.run;
     settings.integrator = kind;
     settings.dt = 1e-4;
-    const RunResult run = simulate(scene, settings);
-    ASSERT_EQ(run.status, RunStatus::finished) << integrator_name(kind) << ": " << describe(run.failure);
-    ASSERT_EQ(run.trajectory.events.size(), 4u) << integrator_name(kind);
+    const sim::RunResult run = sim::simulate(scene, settings);
+    ASSERT_EQ(run.status, sim::RunStatus::finished) << sim::integrator_name(kind) << ": " << sim::describe(run.failure);
+    ASSERT_EQ(run.trajectory.events.size(), 4u) << sim::integrator_name(kind);
     for (std::size_t e = 0; e < 4; ++e)
-      EXPECT_NEAR(run.trajectory.events[e].t, reference.trajectory.events[e].t, 1e-4) << integrator_name(kind);
+      EXPECT_NEAR(run.trajectory.events[e].t, reference.trajectory.events[e].t, 1e-4) << sim::integrator_name(kind);
   }
 }
 

@@ -18,7 +18,7 @@ namespace {
 TEST(SpringCurve, PassesThroughItsPointsWithoutOvershoot) {
   // A torque that falls steeply, then flattens: a spline through these
   // would dip below the flat part; the monotone cubic does not.
-  const SpringCurve curve({0, 0.5, 1.0, 1.5, 2.0}, {1.0, 0.9, 0.2, 0.1, 0.1});
+  const sim::SpringCurve curve({0, 0.5, 1.0, 1.5, 2.0}, {1.0, 0.9, 0.2, 0.1, 0.1});
   for (std::size_t k = 0; k < curve.angles().size(); ++k)
     EXPECT_DOUBLE_EQ(curve.torque(curve.angles()[k]), curve.torques()[k]);
   double previous = curve.torque(0);
@@ -31,7 +31,7 @@ TEST(SpringCurve, PassesThroughItsPointsWithoutOvershoot) {
 }
 
 TEST(SpringCurve, SlopeAndEnergyAreItsDerivativeAndIntegral) {
-  const SpringCurve curve({-1.0, -0.2, 0.4, 1.3}, {0.8, 0.5, 0.1, -0.3});
+  const sim::SpringCurve curve({-1.0, -0.2, 0.4, 1.3}, {0.8, 0.5, 0.1, -0.3});
   for (double q = -1.5; q <= 1.8; q += 0.0137) {
     const double h = 1e-6;
     EXPECT_NEAR(curve.slope(q), (curve.torque(q + h) - curve.torque(q - h)) / (2 * h), 1e-6) << q;
@@ -60,11 +60,12 @@ run: {t_end: 6, sample: 0.002, rtol: 1.0e-10, atol: 1.0e-12}
 TEST(SpringCurve, ALinearTableIsTheLinearSpring) {
   // Two points of tau = -0.3 (q - 0.4): the same run as stiffness 0.3 and
   // free position 0.4, to the integrator's tolerance.
-  const Scene table = load_scene_text(disc("{joint: hinge, table: [[-2, 0.72], [2, -0.48]], damping: 0.01}", ""), "t");
-  const Scene linear =
-      load_scene_text(disc("{joint: hinge, stiffness: 0.3, free_position: 0.4, damping: 0.01}", ""), "l");
-  const RunResult a = simulate(table, table.run), b = simulate(linear, linear.run);
-  ASSERT_EQ(a.status, RunStatus::finished);
+  const sim::Scene table =
+      sim::load_scene_text(disc("{joint: hinge, table: [[-2, 0.72], [2, -0.48]], damping: 0.01}", ""), "t");
+  const sim::Scene linear =
+      sim::load_scene_text(disc("{joint: hinge, stiffness: 0.3, free_position: 0.4, damping: 0.01}", ""), "l");
+  const sim::RunResult a = sim::simulate(table, table.run), b = sim::simulate(linear, linear.run);
+  ASSERT_EQ(a.status, sim::RunStatus::finished);
   ASSERT_EQ(a.trajectory.samples.size(), b.trajectory.samples.size());
   for (std::size_t k = 0; k < a.trajectory.samples.size(); ++k) {
     EXPECT_NEAR(a.trajectory.samples[k].y[0], b.trajectory.samples[k].y[0], 1e-8);
@@ -76,37 +77,35 @@ TEST(SpringCurve, ALinearTableIsTheLinearSpring) {
 }
 
 TEST(SpringCurve, MeasuredCurveConservesEnergy) {
-  const Scene scene =
-      load_scene_text(disc("{joint: hinge, table: [[-1.6, 0.35], [-0.8, 0.26], [0, 0.2], [0.8, 0.05], [1.6, -0.3]]}",
-                           ""),
-                      "curve");
-  const RunResult run = simulate(scene, scene.run);
-  ASSERT_EQ(run.status, RunStatus::finished);
+  const sim::Scene scene = sim::load_scene_text(
+      disc("{joint: hinge, table: [[-1.6, 0.35], [-0.8, 0.26], [0, 0.2], [0.8, 0.05], [1.6, -0.3]]}", ""), "curve");
+  const sim::RunResult run = sim::simulate(scene, scene.run);
+  ASSERT_EQ(run.status, sim::RunStatus::finished);
   const double E0 = run.trajectory.samples.front().energy.total();
   double worst = 0;
-  for (const Sample& s : run.trajectory.samples) worst = std::max(worst, std::abs(s.energy.total() - E0));
+  for (const sim::Sample& s : run.trajectory.samples) worst = std::max(worst, std::abs(s.energy.total() - E0));
   EXPECT_LT(worst, 1e-8);
 }
 
 // The disc driven by a spring through a latch at q = 0, with and without
 // free play.
-RunResult latch_run(double free_play) {
-  const Scene scene = load_scene_text(
-      disc("{joint: hinge, stiffness: 0.2, free_position: 1.5}",
-           "latches:\n  - {joint: hinge, position: 0, stiffness: 500, damping: 2, free_play: " +
-               std::to_string(free_play) + "}"),
-      "latch");
-  return simulate(scene, scene.run);
+sim::RunResult latch_run(double free_play) {
+  const sim::Scene scene =
+      sim::load_scene_text(disc("{joint: hinge, stiffness: 0.2, free_position: 1.5}",
+                                "latches:\n  - {joint: hinge, position: 0, stiffness: 500, damping: 2, free_play: " +
+                                    std::to_string(free_play) + "}"),
+                           "latch");
+  return sim::simulate(scene, scene.run);
 }
 
 TEST(LatchFreePlay, TheJointRattlesFreelyThenBitesHarder) {
-  const RunResult tight = latch_run(0), loose = latch_run(0.1);
-  ASSERT_EQ(tight.status, RunStatus::finished);
-  ASSERT_EQ(loose.status, RunStatus::finished);
+  const sim::RunResult tight = latch_run(0), loose = latch_run(0.1);
+  ASSERT_EQ(tight.status, sim::RunStatus::finished);
+  ASSERT_EQ(loose.status, sim::RunStatus::finished);
   ASSERT_EQ(loose.trajectory.events.size(), 1u);
   // Inside the free play the latch carries nothing.
   int inside = 0;
-  for (const Sample& s : loose.trajectory.samples) {
+  for (const sim::Sample& s : loose.trajectory.samples) {
     if (s.t <= loose.trajectory.events[0].t || std::abs(s.y[0]) >= 0.05) continue;
     ++inside;
     EXPECT_EQ(test::load_of(loose.trajectory.load_columns, s.loads, "latch_torque.hinge"), 0.0) << s.t;
@@ -121,7 +120,7 @@ TEST(LatchFreePlay, TheJointRattlesFreelyThenBitesHarder) {
   // (measured 3.9e-6 J of 0.9 J at rtol 1e-10).
   const double E0 = loose.trajectory.samples.front().energy.total();
   double worst = 0;
-  for (const Sample& s : loose.trajectory.samples) worst = std::max(worst, std::abs(s.energy.balance() - E0));
+  for (const sim::Sample& s : loose.trajectory.samples) worst = std::max(worst, std::abs(s.energy.balance() - E0));
   EXPECT_GT(loose.trajectory.samples.back().energy.dissipated, 0.1 * E0);
   EXPECT_LT(worst, 1e-5 * E0);
 }

@@ -12,7 +12,7 @@
 namespace unfurl {
 namespace {
 
-Study study_from(const std::string& text) { return read_study_text(text, "study.yaml", ""); }
+studies::Study study_from(const std::string& text) { return studies::read_study_text(text, "study.yaml", ""); }
 
 std::string error_of(const std::string& text) {
   try {
@@ -26,19 +26,19 @@ std::string error_of(const std::string& text) {
 TEST(StudyStatistics, PercentilesInterpolateBetweenRanks) {
   std::vector<double> x(101);
   std::iota(x.begin(), x.end(), 0.0);
-  EXPECT_DOUBLE_EQ(percentile(x, 1), 1);
-  EXPECT_DOUBLE_EQ(percentile(x, 50), 50);
-  EXPECT_DOUBLE_EQ(percentile(x, 99), 99);
-  EXPECT_DOUBLE_EQ(percentile({1, 2}, 50), 1.5);
+  EXPECT_DOUBLE_EQ(studies::percentile(x, 1), 1);
+  EXPECT_DOUBLE_EQ(studies::percentile(x, 50), 50);
+  EXPECT_DOUBLE_EQ(studies::percentile(x, 99), 99);
+  EXPECT_DOUBLE_EQ(studies::percentile({1, 2}, 50), 1.5);
 }
 
 TEST(StudyStatistics, SpearmanSeesMonotoneRelationsAndTies) {
   const std::vector<double> x{1, 2, 3, 4, 5};
-  EXPECT_DOUBLE_EQ(spearman(x, {1, 8, 27, 64, 125}), 1.0);   // any increasing function
-  EXPECT_DOUBLE_EQ(spearman(x, {5, 4, 3, 2, 1}), -1.0);
+  EXPECT_DOUBLE_EQ(studies::spearman(x, {1, 8, 27, 64, 125}), 1.0);  // any increasing function
+  EXPECT_DOUBLE_EQ(studies::spearman(x, {5, 4, 3, 2, 1}), -1.0);
   // Ties share their rank: ranks (1, 2.5, 2.5, 4) against (1, 2, 3, 4).
-  EXPECT_NEAR(spearman({1, 2, 3, 4}, {1, 2, 2, 3}), 4.5 / std::sqrt(5.0 * 4.5), 1e-15);
-  EXPECT_TRUE(std::isnan(spearman(x, {2, 2, 2, 2, 2})));
+  EXPECT_NEAR(studies::spearman({1, 2, 3, 4}, {1, 2, 2, 3}), 4.5 / std::sqrt(5.0 * 4.5), 1e-15);
+  EXPECT_TRUE(std::isnan(studies::spearman(x, {2, 2, 2, 2, 2})));
 }
 
 TEST(StudyFile, ErrorsNameTheFileLineColumnAndField) {
@@ -70,13 +70,13 @@ TEST(StudyCases, ProductAndZipOfLists) {
   const std::string vary =
       "vary:\n  - {path: springs.j1.stiffness, values: [0.09, 0.11]}\n"
       "  - {path: springs.j2.stiffness, grid: {from: 0.08, to: 0.12, steps: 2}}\n";
-  const auto product = study_cases(study_from("scene: pantograph\n" + vary));
+  const auto product = studies::study_cases(study_from("scene: pantograph\n" + vary));
   ASSERT_EQ(product.size(), 5u);  // nominal + 2 x 2
   EXPECT_EQ(product[0].id, "nominal");
   EXPECT_EQ(product[0].inputs, (std::vector<double>{0.1, 0.1}));
   EXPECT_EQ(product[2].inputs, (std::vector<double>{0.09, 0.12}));  // the last variable turns fastest
   EXPECT_EQ(product[3].inputs, (std::vector<double>{0.11, 0.08}));
-  const auto zip = study_cases(study_from("scene: pantograph\ncombine: zip\n" + vary));
+  const auto zip = studies::study_cases(study_from("scene: pantograph\ncombine: zip\n" + vary));
   ASSERT_EQ(zip.size(), 3u);
   EXPECT_EQ(zip[2].inputs, (std::vector<double>{0.11, 0.12}));
 }
@@ -87,9 +87,9 @@ TEST(StudyCases, RandomDrawsAreReproducibleAndTruncated) {
   const std::string vary =
       "vary:\n  - {path: springs.*.stiffness, scale: true, normal: {mean: 1, sigma: 0.05, min: 0.9, max: 1.1}}\n"
       "  - {path: bodies.panel_B1.mass, lognormal: {mu: 1.386, sigma: 0.1}}\n";
-  const auto small = study_cases(study_from("scene: pantograph\nseed: 4\nruns: 5\n" + vary));
-  const auto large = study_cases(study_from("scene: pantograph\nseed: 4\nruns: 400\n" + vary));
-  const auto other = study_cases(study_from("scene: pantograph\nseed: 5\nruns: 5\n" + vary));
+  const auto small = studies::study_cases(study_from("scene: pantograph\nseed: 4\nruns: 5\n" + vary));
+  const auto large = studies::study_cases(study_from("scene: pantograph\nseed: 4\nruns: 400\n" + vary));
+  const auto other = studies::study_cases(study_from("scene: pantograph\nseed: 5\nruns: 5\n" + vary));
   ASSERT_EQ(small.size(), 6u);
   ASSERT_EQ(small[1].inputs.size(), 9u);  // 8 springs, 1 mass
   for (std::size_t k = 0; k < small.size(); ++k) EXPECT_EQ(small[k].inputs, large[k].inputs);
@@ -109,30 +109,30 @@ TEST(StudyCases, RandomDrawsAreReproducibleAndTruncated) {
 // The failures change the scene as they say: a latch gone, a spring without
 // stiffness, half the preload, a hinge held where it starts.
 TEST(StudyCases, FailuresChangeTheSceneAsNamed) {
-  const Study study = study_from(
+  const studies::Study study = study_from(
       "scene: pantograph\nfailures:\n  - {latch_fails: j3}\n  - {spring_breaks: j1}\n"
       "  - {preload_loss: j2, fraction: 0.5}\n  - {stuck: \"*\"}\n"
       "  - {extra_friction: j4, coulomb: 0.05, viscous: 0.01}\n");
-  const auto cases = study_cases(study);
+  const auto cases = studies::study_cases(study);
   ASSERT_EQ(cases.size(), 1u + 3 + 11 + 1);
   EXPECT_EQ(cases[1].id, "fail-latch-j3-fails");
-  const Scene nominal = nominal_scene(study).scene;
-  const Scene no_latch = case_scene(study, cases[1]);
+  const sim::Scene nominal = studies::nominal_scene(study).scene;
+  const sim::Scene no_latch = studies::case_scene(study, cases[1]);
   EXPECT_EQ(no_latch.latches().size(), 7u);
-  for (const Latch* l : no_latch.latches()) EXPECT_NE(nominal.model.joints[l->joint].name, "j3");
-  EXPECT_EQ(case_scene(study, cases[2]).elements_of<JointSpring>()[0]->stiffness, 0.0);
-  const Scene half = case_scene(study, cases[3]);
+  for (const sim::Latch* l : no_latch.latches()) EXPECT_NE(nominal.model.joints[l->joint].name, "j3");
+  EXPECT_EQ(studies::case_scene(study, cases[2]).elements_of<sim::JointSpring>()[0]->stiffness, 0.0);
+  const sim::Scene half = studies::case_scene(study, cases[3]);
   const double q0 = nominal.q0[nominal.model.position_of(1).value];
-  EXPECT_DOUBLE_EQ(half.elements_of<JointSpring>()[1]->free_position - q0,
-                   0.5 * (nominal.elements_of<JointSpring>()[1]->free_position - q0));
-  const Scene stuck = case_scene(study, cases[4]);  // j1
+  EXPECT_DOUBLE_EQ(half.elements_of<sim::JointSpring>()[1]->free_position - q0,
+                   0.5 * (nominal.elements_of<sim::JointSpring>()[1]->free_position - q0));
+  const sim::Scene stuck = studies::case_scene(study, cases[4]);  // j1
   ASSERT_EQ(stuck.latches().size(), 9u);
   EXPECT_EQ(stuck.latches().back()->joint, 0);
   EXPECT_EQ(stuck.latches().back()->position, nominal.q0[0]);
   EXPECT_EQ(cases.back().id, "fail-hinge-j4-friction-0.05Nm-0.01Nms");
-  const Scene cold = case_scene(study, cases.back());
-  const std::vector<const JointFriction*> friction = cold.elements_of<JointFriction>();
-  ASSERT_EQ(friction.size(), nominal.elements_of<JointFriction>().size() + 1);
+  const sim::Scene cold = studies::case_scene(study, cases.back());
+  const std::vector<const sim::JointFriction*> friction = cold.elements_of<sim::JointFriction>();
+  ASSERT_EQ(friction.size(), nominal.elements_of<sim::JointFriction>().size() + 1);
   EXPECT_EQ(nominal.model.joints[friction.back()->joint].name, "j4");
   EXPECT_EQ(friction.back()->coulomb, 0.05);
   EXPECT_EQ(friction.back()->viscous, 0.01);
@@ -141,63 +141,68 @@ TEST(StudyCases, FailuresChangeTheSceneAsNamed) {
 // The workbench's edits of a case go over the case's own values, its
 // preload factor included: a free position typed is the one used.
 TEST(StudyCases, EditsOfACaseGoOverItsValues) {
-  const Study study = study_from("scene: pantograph\nvary:\n  - {path: springs.j2.preload, values: [0.8]}\n");
-  const auto cases = study_cases(study);
+  const studies::Study study = study_from("scene: pantograph\nvary:\n  - {path: springs.j2.preload, values: [0.8]}\n");
+  const auto cases = studies::study_cases(study);
   ASSERT_EQ(cases.size(), 2u);
-  const Scene scaled = case_scene(study, cases[1]);
-  const Scene other_edit = case_scene_file(study, cases[1], {{"springs.j1.stiffness", "0.2"}}).scene;
-  EXPECT_EQ(other_edit.elements_of<JointSpring>()[1]->free_position,
-            scaled.elements_of<JointSpring>()[1]->free_position);  // the same double
-  EXPECT_EQ(other_edit.elements_of<JointSpring>()[0]->stiffness, 0.2);
-  const Scene typed = case_scene_file(study, cases[1], {{"springs.j2.free_position", "1.0"}}).scene;
-  EXPECT_EQ(typed.elements_of<JointSpring>()[1]->free_position, 1.0);
+  const sim::Scene scaled = studies::case_scene(study, cases[1]);
+  const sim::Scene other_edit = studies::case_scene_file(study, cases[1], {{"springs.j1.stiffness", "0.2"}}).scene;
+  EXPECT_EQ(other_edit.elements_of<sim::JointSpring>()[1]->free_position,
+            scaled.elements_of<sim::JointSpring>()[1]->free_position);  // the same double
+  EXPECT_EQ(other_edit.elements_of<sim::JointSpring>()[0]->stiffness, 0.2);
+  const sim::Scene typed = studies::case_scene_file(study, cases[1], {{"springs.j2.free_position", "1.0"}}).scene;
+  EXPECT_EQ(typed.elements_of<sim::JointSpring>()[1]->free_position, 1.0);
 }
 
 // The runs of injected failures: the array deploys without one spring; a
 // stuck root hinge holds the whole (one-degree-of-freedom) array stowed; a
 // failed latch leaves its joint unlatched and the case not deployed.
 TEST(StudyCases, FailedCasesReportWhatHappened) {
-  const Study study = study_from(
+  const studies::Study study = study_from(
       "scene: pantograph\nset: {run.rtol: 1.0e-6, run.atol: 1.0e-9, run.t_end: 9}\n"
       "failures:\n  - {latch_fails: j3}\n  - {stuck: j1}\n  - {extra_friction: j1, coulomb: 0.05}\n");
-  const Scene nominal = nominal_scene(study).scene;
-  const CaseColumns columns = case_columns(study, nominal);
-  const auto cases = study_cases(study);
-  const CaseResult ok = case_result(study, nominal, cases[0], simulate_case(study, cases[0]));
-  EXPECT_EQ(ok.status, CaseStatus::deployed);
-  EXPECT_NEAR(output_value(columns, ok, "deployment_time"), 7.3921759, 1e-5);
-  const CaseResult latch = case_result(study, nominal, cases[1], simulate_case(study, cases[1]));
-  EXPECT_EQ(latch.status, CaseStatus::not_deployed);
+  const sim::Scene nominal = studies::nominal_scene(study).scene;
+  const studies::CaseColumns columns = studies::case_columns(study, nominal);
+  const auto cases = studies::study_cases(study);
+  const studies::CaseResult ok =
+      studies::case_result(study, nominal, cases[0], studies::simulate_case(study, cases[0]));
+  EXPECT_EQ(ok.status, studies::CaseStatus::deployed);
+  EXPECT_NEAR(studies::output_value(columns, ok, "deployment_time"), 7.3921759, 1e-5);
+  const studies::CaseResult latch =
+      studies::case_result(study, nominal, cases[1], studies::simulate_case(study, cases[1]));
+  EXPECT_EQ(latch.status, studies::CaseStatus::not_deployed);
   EXPECT_EQ(latch.reason, "never latched: j3");
-  EXPECT_TRUE(std::isnan(output_value(columns, latch, "latch_time.j3")));
-  EXPECT_FALSE(std::isnan(output_value(columns, latch, "latch_time.j2")));
-  const CaseResult stuck = case_result(study, nominal, cases[2], simulate_case(study, cases[2]));
-  EXPECT_EQ(stuck.status, CaseStatus::not_deployed);
+  EXPECT_TRUE(std::isnan(studies::output_value(columns, latch, "latch_time.j3")));
+  EXPECT_FALSE(std::isnan(studies::output_value(columns, latch, "latch_time.j2")));
+  const studies::CaseResult stuck =
+      studies::case_result(study, nominal, cases[2], studies::simulate_case(study, cases[2]));
+  EXPECT_EQ(stuck.status, studies::CaseStatus::not_deployed);
   // j1 (the overlay joint) stays stowed: its stop, as stiff as a latch
   // (1000 N m/rad), yields 0.01 rad to the other seven springs, against the
   // 1.56 rad it travels when free.
   EXPECT_LT(std::abs(stuck.angle.back() - stuck.angle.front()), 0.02);
   // Friction on the root hinge slows the whole array: it still latches, later
   // (8.05 s against 7.39 s).
-  const CaseResult cold = case_result(study, nominal, cases[3], simulate_case(study, cases[3]));
-  EXPECT_EQ(cold.status, CaseStatus::deployed) << cold.reason;
-  EXPECT_GT(output_value(columns, cold, "deployment_time"), 7.3921759 + 0.1);
+  const studies::CaseResult cold =
+      studies::case_result(study, nominal, cases[3], studies::simulate_case(study, cases[3]));
+  EXPECT_EQ(cold.status, studies::CaseStatus::deployed) << cold.reason;
+  EXPECT_GT(studies::output_value(columns, cold, "deployment_time"), 7.3921759 + 0.1);
 }
 
 TEST(StudyStatistics, CountsAndDriversOverDeployedCasesWithoutInjectedFailures) {
-  const Study study = study_from("scene: pantograph\nvary:\n  - {path: springs.j1.stiffness, values: [1, 2, 3, 4]}\n");
-  const CaseColumns columns = case_columns(study, nominal_scene(study).scene);
-  std::vector<CaseResult> rows;
+  const studies::Study study =
+      study_from("scene: pantograph\nvary:\n  - {path: springs.j1.stiffness, values: [1, 2, 3, 4]}\n");
+  const studies::CaseColumns columns = studies::case_columns(study, studies::nominal_scene(study).scene);
+  std::vector<studies::CaseResult> rows;
   for (int k = 0; k < 6; ++k) {
-    CaseResult r;
+    studies::CaseResult r;
     r.inputs = {static_cast<double>(k)};
     r.outputs.assign(columns.outputs.size(), 1.0);
     r.outputs[0] = 10.0 - k * k;  // deployment time falls as the input grows
-    r.status = k == 5 ? CaseStatus::failed : CaseStatus::deployed;
+    r.status = k == 5 ? studies::CaseStatus::failed : studies::CaseStatus::deployed;
     if (k == 4) r.failure = "spring j1 broken";
     rows.push_back(r);
   }
-  const StudyStatistics st = study_statistics(columns, rows);
+  const studies::StudyStatistics st = studies::study_statistics(columns, rows);
   EXPECT_EQ(st.cases, 6);
   EXPECT_EQ(st.deployed, 5);
   EXPECT_EQ(st.failed, 1);

@@ -61,8 +61,8 @@ TEST(SweepCommand, WritesTheTablesTheReportAndThePlots) {
   const std::string report = text_of(out / "STUDY.md");
   EXPECT_NE(report.find("is driven most by `springs."), std::string::npos) << report;
 #ifdef UNFURL_WITH_RENDER
-  for (const char* png : {"hist_deployment_time.png", "hist_peak_latch_torque.png", "overlay_angles.png",
-                          "scatter_deployment_time.png"})
+  for (const char* png :
+       {"hist_deployment_time.png", "hist_peak_latch_torque.png", "overlay_angles.png", "scatter_deployment_time.png"})
     EXPECT_TRUE(fs::is_regular_file(out / png)) << png;
 #endif
 }

@@ -24,11 +24,11 @@ class RandomTrees : public ::testing::TestWithParam<int> {};
 TEST_P(RandomTrees, SweepMatchesTheDenseHamiltonianFormulation) {
   std::mt19937 rng(GetParam());
   const int N = 1 + GetParam() % 30;
-  const Scene scene = random_tree(rng, N, GetParam() % 3 == 0);
+  const sim::Scene scene = random_tree(rng, N, GetParam() % 3 == 0);
   const int n = scene.model.nq;
   if (n == 0) GTEST_SKIP() << "only fixed joints";
   ASSERT_EQ(n, scene.model.nv);
-  Dynamics dynamics(scene);
+  sim::Dynamics dynamics(scene);
   std::uniform_real_distribution<double> U(-1, 1);
   VectorXd y(2 * n);
   for (int k = 0; k < n; ++k) {
@@ -73,12 +73,12 @@ class RandomMultiDofTrees : public ::testing::TestWithParam<int> {};
 TEST_P(RandomMultiDofTrees, SweepMatchesTheDenseFormulation) {
   std::mt19937 rng(1000 + GetParam());
   const int N = 1 + GetParam() % 20;
-  const Scene scene = random_tree(rng, N, GetParam() % 3 == 0, true);
-  const Model& model = scene.model;
+  const sim::Scene scene = random_tree(rng, N, GetParam() % 3 == 0, true);
+  const sim::Model& model = scene.model;
   const int nq = model.nq, nv = model.nv;
   if (nv == 0) GTEST_SKIP() << "only fixed joints";
   if (!model.has_multi_dof_joints()) GTEST_SKIP() << "no joint of several coordinates drawn";
-  Dynamics dynamics(scene);
+  sim::Dynamics dynamics(scene);
   std::uniform_real_distribution<double> U(-1, 1);
   VectorXd y(nq + nv);
   for (int k = 0; k < nq; ++k) y[k] = scene.q0[k];
@@ -91,18 +91,18 @@ TEST_P(RandomMultiDofTrees, SweepMatchesTheDenseFormulation) {
   const VectorXd w = d.Mt.ldlt().solve(p - d.b);
   VectorXd dq_expected(nq);
   for (int i = 0; i < model.size(); ++i) {
-    const Joint& j = model.joints[i];
+    const sim::Joint& j = model.joints[i];
     const int c = model.first_position[i].value, v = model.first_velocity[i].value;
     if (c < 0) continue;
     const auto quaternion_rate = [&](int at, int rate) {
       const Eigen::Vector4d r = 0.5 * quaternion_product(q.segment<4>(at), Eigen::Vector4d(0, w[rate], w[rate + 1], w[rate + 2]));
       dq_expected.segment<4>(at) = r;
     };
-    if (j.is_scalar() || j.type == JointType::universal) {
+    if (j.is_scalar() || j.type == sim::JointType::universal) {
       for (int k = 0; k < j.dof(); ++k) dq_expected[c + k] = w[v + k];
-    } else if (j.type == JointType::spherical) {
+    } else if (j.type == sim::JointType::spherical) {
       quaternion_rate(c, v);
-    } else if (j.type == JointType::free) {
+    } else if (j.type == sim::JointType::free) {
       dq_expected.segment<3>(c) = quaternion_matrix(&q[c + 3]) * w.segment<3>(v);
       quaternion_rate(c + 3, v + 3);
     } else {  // planar: x' = R (u1 e1 + u2 e2) in the plane's coordinates
@@ -117,7 +117,7 @@ TEST_P(RandomMultiDofTrees, SweepMatchesTheDenseFormulation) {
   // (position index, velocity index) of every coordinate conjugate to its p.
   std::vector<std::pair<int, int>> conjugate;
   for (int i = 0; i < model.size(); ++i)
-    if (model.joints[i].is_scalar() || model.joints[i].type == JointType::universal)
+    if (model.joints[i].is_scalar() || model.joints[i].type == sim::JointType::universal)
       for (int k = 0; k < model.joints[i].dof(); ++k)
         conjugate.emplace_back(model.first_position[i].value + k, model.first_velocity[i].value + k);
   const double h = 1e-4;
@@ -143,13 +143,13 @@ INSTANTIATE_TEST_SUITE_P(UpTo20Bodies, RandomMultiDofTrees, ::testing::Range(1, 
 TEST(Sweep, LoopMobilityFromExtraPassesEqualsDenseFormula) {
   // W = eps T A Mtilde^-1 (eps T A)^T on the active components, by the
   // regulator's m passes of the sweep and densely.
-  const Scene scene = test::scene_file("pantograph");
-  Dynamics dynamics(scene);
-  Regulator& regulator = *dynamics.regulator();
+  const sim::Scene scene = test::scene_file("pantograph");
+  sim::Dynamics dynamics(scene);
+  sim::Regulator& regulator = *dynamics.regulator();
   const int n = scene.model.nq, m = regulator.size();
   VectorXd q(n);
   for (int k = 0; k < n; ++k) q[k] = 0.7 * scene.q0[k];
-  Sweep sweep(scene.model);
+  sim::Sweep sweep(scene.model);
   sweep.set_configuration(q.data());
   const MatrixXd W = regulator.mobility(sweep);
 
@@ -160,19 +160,19 @@ TEST(Sweep, LoopMobilityFromExtraPassesEqualsDenseFormula) {
 
 TEST(Sweep, JointDiagonalSolvesWithMassMatrixPlusDiagonal) {
   // The preconditioner's passes: (Mtilde + diag k) dq = p.
-  const Scene scene = test::scene_file("pantograph");
+  const sim::Scene scene = test::scene_file("pantograph");
   const int n = scene.model.nq;
   VectorXd q(n), k(n), p = VectorXd::LinSpaced(n, -1, 2);
   for (int c = 0; c < n; ++c) {
     q[c] = 0.6 * scene.q0[c] + 0.05 * c;
     k[c] = 0.3 + 0.1 * c;
   }
-  Sweep sweep(scene.model);
+  sim::Sweep sweep(scene.model);
   sweep.set_configuration(q.data(), k.data());
-  std::vector<Vec6> phi(scene.model.size()), v(scene.model.size());
+  std::vector<sim::Vec6> phi(scene.model.size()), v(scene.model.size());
   VectorXd dq(n);
   sweep.bias(p.data(), phi);
-  sweep.velocities(p.data(), phi, Vec6::Zero(), dq.data(), v);
+  sweep.velocities(p.data(), phi, sim::Vec6::Zero(), dq.data(), v);
   MatrixXd K = dense_formulation(scene, q).Mt;
   K.diagonal() += k;
   EXPECT_LT(relative_error(dq, K.ldlt().solve(p)), 1e-12);

@@ -39,7 +39,7 @@ int command_export(const std::vector<std::string>& argv) {
   const auto& positionals = args.positionals();
   if (positionals.empty() || positionals[0] != "mjcf") throw UsageError("expected a format: mjcf");
   if (positionals.size() > 2) throw UsageError("export mjcf takes one SCENE (see --help)");
-  const Scene scene = load_scene(positionals.size() == 2 ? std::optional(positionals[1]) : std::nullopt, args);
+  const sim::Scene scene = load_scene(positionals.size() == 2 ? std::optional(positionals[1]) : std::nullopt, args);
   const io::MjcfModel model = io::export_mjcf(scene);
   for (const std::string& what : model.not_exported)
     std::fprintf(stderr, "unfurl export: not in the MJCF model: %s\n", what.c_str());

@@ -76,15 +76,17 @@ void remove_stale_frames(const std::string& dir, std::size_t written) {
 
 int command_render(const std::vector<std::string>& argv) {
   std::set<std::string> valued = scene_flags();
-  valued.insert({"--out", "--fps", "--size", "--from", "--to", "--video", "--camera", "--camera-frame", "--trajectory", "--gl"});
+  valued.insert(
+      {"--out", "--fps", "--size", "--from", "--to", "--video", "--camera", "--camera-frame", "--trajectory", "--gl"});
   const Args args(argv, valued, {"--help", "-h", "--plots", "--no-frames", "--quiet", "--orthographic"});
   if (args.has("--help") || args.has("-h")) {
     std::printf(kHelp, scene_flags_help());
     return 0;
   }
   if (args.positionals().size() > 1) throw UsageError("render takes one SCENE (see --help)");
-  const SceneFile file = read_scene(args.positionals().empty() ? std::nullopt : std::optional(args.positionals()[0]), args);
-  const Scene& scene = file.scene;
+  const sim::SceneFile file =
+      read_scene(args.positionals().empty() ? std::nullopt : std::optional(args.positionals()[0]), args);
+  const sim::Scene& scene = file.scene;
   const RenderOptions options = parse_render_options(args);
   const std::string dir = args.get("--out").value_or("out");
   io::make_directory(dir);
@@ -94,19 +96,19 @@ int command_render(const std::vector<std::string>& argv) {
   // Ctrl+C stops the simulation or the frames where they are; what was
   // computed is drawn and the video is finished with the frames so far.
   const InterruptScope interrupt;
-  Trajectory trajectory;
+  sim::Trajectory trajectory;
   if (const auto path = args.get("--trajectory")) {
     trajectory = io::read_trajectory_csv(scene, *path);
   } else {
     Progress progress("simulating " + scene.name, scene.run.t_end);
-    RunObserver observer;
+    sim::RunObserver observer;
     observer.cancel = &interrupt.flag();
-    if (!quiet) observer.on_progress = [&](const StepProgress& p) { progress.update(p.t); };
-    RunResult run = simulate(scene, scene.run, observer);
+    if (!quiet) observer.on_progress = [&](const sim::StepProgress& p) { progress.update(p.t); };
+    sim::RunResult run = sim::simulate(scene, scene.run, observer);
     progress.finish();
-    if (run.status == RunStatus::failed) {
+    if (run.status == sim::RunStatus::failed) {
       std::fprintf(stderr, "unfurl render: %s\n(drawing what was computed, up to t = %g s)\n",
-                   describe(run.failure).c_str(), run.trajectory.t_end());
+                   sim::describe(run.failure).c_str(), run.trajectory.t_end());
       exit_code = 1;
     }
     trajectory = std::move(run.trajectory);
@@ -115,8 +117,8 @@ int command_render(const std::vector<std::string>& argv) {
   const std::vector<double> times = frame_times(options, trajectory.t_begin(), trajectory.t_end());
   auto context = render::make_offscreen_context(options.gl);
   render::FrameRenderer renderer(scene, file.visuals, options.width, options.height, mesh_directories(scene));
-  const render::Camera camera = choose_camera(options, scene, trajectory, renderer.view(),
-                                              static_cast<float>(options.width) / options.height);
+  const render::Camera camera =
+      choose_camera(options, scene, trajectory, renderer.view(), static_cast<float>(options.width) / options.height);
 
   std::unique_ptr<io::VideoPipe> video;
   if (options.video) {
@@ -127,7 +129,7 @@ int command_render(const std::vector<std::string>& argv) {
   Progress progress("rendering " + std::to_string(times.size()) + " frames", static_cast<double>(times.size()));
   render::Image image;
   std::vector<double> q;
-  std::vector<Pose> poses;
+  std::vector<sim::Pose> poses;
   const auto start = std::chrono::steady_clock::now();
   std::size_t drawn = 0;
   for (std::size_t k = 0; k < times.size() && !interrupt.flag().load(); ++k, ++drawn) {
@@ -161,8 +163,8 @@ int command_render(const std::vector<std::string>& argv) {
     std::printf("scene        %s (%s)\n", scene.name.c_str(), scene.source.c_str());
     std::printf("context      %s\n", context->description().c_str());
     std::printf("frames       %zu at %g fps, t = %g .. %g s, %dx%d, %.1f frames/s%s\n", times.size(), options.fps,
-                times.empty() ? 0.0 : times.front(), times.empty() ? 0.0 : times.back(), options.width,
-                options.height, seconds > 0 ? times.size() / seconds : 0.0,
+                times.empty() ? 0.0 : times.front(), times.empty() ? 0.0 : times.back(), options.width, options.height,
+                seconds > 0 ? times.size() / seconds : 0.0,
                 write_frames ? (", " + dir + "/frame_*.png").c_str() : " (not written)");
     if (video) std::printf("video        %s\n", options.video->c_str());
     for (const std::string& p : plots) std::printf("plot         %s\n", p.c_str());

@@ -83,13 +83,14 @@ std::vector<double> number_list(const std::string& flag, const std::string& text
   return out;
 }
 
-std::vector<IntegratorKind> integrator_list(const std::string& text) {
-  std::vector<IntegratorKind> out;
+std::vector<sim::IntegratorKind> integrator_list(const std::string& text) {
+  std::vector<sim::IntegratorKind> out;
   std::stringstream s(text);
   std::string item;
   while (std::getline(s, item, ',')) {
-    const auto kind = parse_integrator(item);
-    if (!kind) throw UsageError("unknown integrator '" + item + "' (cvode-bdf, cvode-adams, arkode-erk, arkode-dirk, rk4)");
+    const auto kind = sim::parse_integrator(item);
+    if (!kind)
+      throw UsageError("unknown integrator '" + item + "' (cvode-bdf, cvode-adams, arkode-erk, arkode-dirk, rk4)");
     out.push_back(*kind);
   }
   if (out.empty()) throw UsageError("--integrators needs at least one integrator");
@@ -112,8 +113,8 @@ int work_precision_report(const std::vector<std::string>& argv, const Args& args
   if (args.positionals().size() > 1) throw UsageError("report takes one SCENE (see --help)");
   const std::optional<std::string> scene_arg =
       args.positionals().empty() ? std::nullopt : std::optional(args.positionals()[0]);
-  const Scene scene = load_scene(scene_arg, args);
-  WorkPrecisionSettings settings;
+  const sim::Scene scene = load_scene(scene_arg, args);
+  studies::WorkPrecisionSettings settings;
   if (const auto v = args.get("--integrators")) settings.integrators = integrator_list(*v);
   if (const auto v = args.get("--tolerances")) settings.tolerances = number_list("--tolerances", *v);
   if (const auto v = args.get("--steps")) settings.rk4_steps = number_list("--steps", *v);
@@ -126,10 +127,10 @@ int work_precision_report(const std::vector<std::string>& argv, const Args& args
   const bool quiet = args.has("--quiet");
 
   Progress progress("report " + scene.name, 1);
-  const ReportProgress on_progress = [&](const std::string& what, int done, int total) {
+  const studies::ReportProgress on_progress = [&](const std::string& what, int done, int total) {
     if (!quiet) progress.update(static_cast<double>(done) / total, what);
   };
-  const WorkPrecision report = measure_work_precision(scene, settings, on_progress);
+  const studies::WorkPrecision report = studies::measure_work_precision(scene, settings, on_progress);
   progress.finish();
 
   write_work_precision_csv(report, dir + "/work_precision.csv");
@@ -140,15 +141,15 @@ int work_precision_report(const std::vector<std::string>& argv, const Args& args
   std::printf("reference    %s\n", report.reference.c_str());
   std::printf("runs         %zu\n", report.points.size());
   std::printf("cheapest     angle error   integrator    setting        wall time\n");
-  for (const CheapestRun& c : cheapest_by_accuracy(report)) {
+  for (const studies::CheapestRun& c : studies::cheapest_by_accuracy(report)) {
     if (!c.point) continue;
     char setting[32];
-    if (c.point->integrator == IntegratorKind::rk4)
+    if (c.point->integrator == sim::IntegratorKind::rk4)
       std::snprintf(setting, sizeof setting, "dt %g", c.point->dt);
     else
       std::snprintf(setting, sizeof setting, "rtol %g", c.point->rtol);
-    std::printf("             <= %-10.0e %-13s %-14s %.4g s\n", c.accuracy, integrator_name(c.point->integrator), setting,
-                c.point->wall_time_s);
+    std::printf("             <= %-10.0e %-13s %-14s %.4g s\n", c.accuracy, sim::integrator_name(c.point->integrator),
+                setting, c.point->wall_time_s);
   }
   std::printf("files        %s/work_precision.csv, %s/WORK_PRECISION.md", dir.c_str(), dir.c_str());
   for (const std::string& p : pictures) std::printf(", %s/%s", dir.c_str(), p.c_str());
@@ -174,47 +175,52 @@ int scaling_report(const std::vector<std::string>& argv, const Args& args) {
   const std::string dir = args.get("--out").value_or("scaling");
   io::make_directory(dir);
 
-  std::vector<ScalingScene> rhs_scenes;
+  std::vector<studies::ScalingScene> rhs_scenes;
   for (const auto& [family, sizes] : rhs_sizes())
     for (int n : sizes)
       if (n <= largest) rhs_scenes.push_back({family, n, "", {}});
-  for (int n : {3, 5, 8, 12, 16}) rhs_scenes.push_back({"pantograph", n, "dense gains", {{"regulator.solver", "dense"}}});
+  for (int n : {3, 5, 8, 12, 16})
+    rhs_scenes.push_back({"pantograph", n, "dense gains", {{"regulator.solver", "dense"}}});
   struct RunPlan {
-    ScalingScene scene;
-    IntegratorKind integrator;
-    LinearSolverKind solver;
+    studies::ScalingScene scene;
+    sim::IntegratorKind integrator;
+    sim::LinearSolverKind solver;
   };
   std::vector<RunPlan> plans;
   const std::pair<const char*, std::vector<int>> run_sizes[] = {{"pantograph", {3, 10, 30, 100, 300, 1000}},
                                                                 {"zfold", {3, 10, 100, 1000, 3000}}};
   for (const auto& [family, sizes] : run_sizes)
     for (const auto& [integrator, solver] :
-         {std::pair{IntegratorKind::cvode_bdf, LinearSolverKind::dense}, std::pair{IntegratorKind::cvode_bdf, LinearSolverKind::krylov},
-          std::pair{IntegratorKind::arkode_erk, LinearSolverKind::automatic}})
+         {std::pair{sim::IntegratorKind::cvode_bdf, sim::LinearSolverKind::dense},
+          std::pair{sim::IntegratorKind::cvode_bdf, sim::LinearSolverKind::krylov},
+          std::pair{sim::IntegratorKind::arkode_erk, sim::LinearSolverKind::automatic}})
       for (int n : sizes)
         if (n <= (quick ? 10 : largest)) plans.push_back({{family, n, "", {}}, integrator, solver});
 
   Progress progress("scaling suite", static_cast<double>(rhs_scenes.size() + plans.size()));
   double done = 0;
-  for (const ScalingScene& s : rhs_scenes) {
+  for (const studies::ScalingScene& s : rhs_scenes) {
     if (!quiet) progress.update(done++, "rhs " + s.family + " " + std::to_string(s.size));
-    report.rhs.push_back(time_right_hand_side(s, quick ? 0.2 : 1.0));
+    report.rhs.push_back(studies::time_right_hand_side(s, quick ? 0.2 : 1.0));
   }
   std::string gave_up;  // family and method that ran out of budget: larger sizes are skipped
   for (const RunPlan& p : plans) {
     if (!quiet) progress.update(done++, "run " + p.scene.family + " " + std::to_string(p.scene.size));
-    const std::string key = p.scene.family + integrator_name(p.integrator) + std::to_string(static_cast<int>(p.solver));
+    const std::string key =
+        p.scene.family + sim::integrator_name(p.integrator) + std::to_string(static_cast<int>(p.solver));
     if (key == gave_up) continue;
-    report.runs.push_back(time_whole_run(p.scene, p.integrator, p.solver, report.run_t_end, report.budget_s));
-    if (report.runs.back().status != RunStatus::finished) gave_up = key;
+    report.runs.push_back(studies::time_whole_run(p.scene, p.integrator, p.solver, report.run_t_end, report.budget_s));
+    if (report.runs.back().status != sim::RunStatus::finished) gave_up = key;
   }
   progress.finish();
   write_scaling_csv(report, dir);
   const std::vector<std::string> pictures = write_scaling_plots(report, dir);
   write_scaling_markdown(report, pictures, dir + "/SCALING.md");
   if (!quiet)
-    std::printf("scaling      %zu right-hand sides, %zu runs\nfiles        %s/SCALING.md, %s/rhs_scaling.csv, %s/run_scaling.csv and %zu plots\n",
-                report.rhs.size(), report.runs.size(), dir.c_str(), dir.c_str(), dir.c_str(), pictures.size());
+    std::printf(
+        "scaling      %zu right-hand sides, %zu runs\nfiles        %s/SCALING.md, %s/rhs_scaling.csv, "
+        "%s/run_scaling.csv and %zu plots\n",
+        report.rhs.size(), report.runs.size(), dir.c_str(), dir.c_str(), dir.c_str(), pictures.size());
   return 0;
 }
 
@@ -228,17 +234,18 @@ int stability_report(const std::vector<std::string>& argv, const Args& args) {
   const bool quick = args.has("--quick"), quiet = args.has("--quiet");
   const std::string dir = args.get("--out").value_or("stability");
   io::make_directory(dir);
-  std::vector<StabilityCase> cases = stability_cases(report.budget_s);
-  if (quick) cases.erase(std::remove_if(cases.begin(), cases.end(), [](const StabilityCase& c) { return !c.small; }),
-                         cases.end());
+  std::vector<studies::StabilityCase> cases = studies::stability_cases(report.budget_s);
+  if (quick)
+    cases.erase(std::remove_if(cases.begin(), cases.end(), [](const studies::StabilityCase& c) { return !c.small; }),
+                cases.end());
   Progress progress("stability suite", static_cast<double>(cases.size() + 1));
   for (std::size_t k = 0; k < cases.size(); ++k) {
     if (!quiet) progress.update(static_cast<double>(k), cases[k].label);
-    report.results.push_back(run_stability_case(cases[k]));
+    report.results.push_back(studies::run_stability_case(cases[k]));
   }
   if (!quick) {
     if (!quiet) progress.update(static_cast<double>(cases.size()), "regulator tunings");
-    report.gains = compare_gain_tunings(report.budget_s);
+    report.gains = studies::compare_gain_tunings(report.budget_s);
     report.has_gains = true;
   }
   progress.finish();
@@ -246,15 +253,16 @@ int stability_report(const std::vector<std::string>& argv, const Args& args) {
   const std::vector<std::string> pictures = write_stability_plots(report, dir);
   write_stability_markdown(report, pictures, dir + "/STABILITY.md");
   int unexpected = 0;
-  for (const StabilityResult& r : report.results) {
-    if (as_expected(r)) continue;
+  for (const studies::StabilityResult& r : report.results) {
+    if (studies::as_expected(r)) continue;
     ++unexpected;
     std::fprintf(stderr, "unfurl report: %s / %s did not end as expected: %s\n", r.spec.group.c_str(),
-                 r.spec.label.c_str(), r.status == RunStatus::finished ? "it finished" : r.failure.c_str());
+                 r.spec.label.c_str(), r.status == sim::RunStatus::finished ? "it finished" : r.failure.c_str());
   }
   if (!quiet)
-    std::printf("stability    %zu cases, %zu ended as expected\nfiles        %s/STABILITY.md, %s/stability.csv and %zu plots\n",
-                report.results.size(), report.results.size() - unexpected, dir.c_str(), dir.c_str(), pictures.size());
+    std::printf(
+        "stability    %zu cases, %zu ended as expected\nfiles        %s/STABILITY.md, %s/stability.csv and %zu plots\n",
+        report.results.size(), report.results.size() - unexpected, dir.c_str(), dir.c_str(), pictures.size());
   return unexpected == 0 ? 0 : 1;
 }
 

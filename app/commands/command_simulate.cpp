@@ -39,13 +39,14 @@ const char* kHelp =
     "Exit status: 0 done, 1 the solver failed (what it computed is written), 2 bad scene,\n"
     "64 bad usage.\n";
 
-void print_summary(const Scene& scene, const RunResult& result, const RunSummary& s, const std::string& dir) {
-  const RunSettings& run = result.settings;
+void print_summary(const sim::Scene& scene, const sim::RunResult& result, const sim::RunSummary& s,
+                   const std::string& dir) {
+  const sim::RunSettings& run = result.settings;
   std::printf("scene        %s (%s)\n", scene.name.c_str(), scene.source.c_str());
-  std::printf("integrator   %s, rtol %g, atol %g", integrator_name(run.integrator), run.rtol, run.atol);
-  if (run.integrator == IntegratorKind::rk4) std::printf(", dt %g", run.dt);
+  std::printf("integrator   %s, rtol %g, atol %g", sim::integrator_name(run.integrator), run.rtol, run.atol);
+  if (run.integrator == sim::IntegratorKind::rk4) std::printf(", dt %g", run.dt);
   std::printf("\nrun          0 .. %g s %s in %.3f s wall (%.1fx real time)\n", s.t_reached,
-              run_status_name(result.status), result.wall_time_s,
+              sim::run_status_name(result.status), result.wall_time_s,
               result.wall_time_s > 0 ? s.t_reached / result.wall_time_s : 0.0);
   std::printf("work         %ld steps, %ld right-hand sides, %ld Jacobians, min step %.3g s\n", result.stats.steps,
               result.rhs_calls, result.stats.jacobian_evals, result.stats.min_step);
@@ -61,14 +62,14 @@ void print_summary(const Scene& scene, const RunResult& result, const RunSummary
     std::printf("loop gap     max %.3g m, %.3g rad (%.3g m, %.3g rad before the first latch)\n", s.max_closure_gap,
                 s.max_closure_angle, s.max_closure_gap_before_latch, s.max_closure_angle_before_latch);
   }
-  const RunSummary::NamedPeak* latch = nullptr;
+  const sim::RunSummary::NamedPeak* latch = nullptr;
   for (const auto& p : s.peak_latch_torque)
     if (!std::isnan(p.peak.t) && (!latch || p.peak.value > latch->peak.value)) latch = &p;
   if (latch)
     std::printf("loads        peak latch torque %.4g N m at %s, t = %.6f s\n", latch->peak.value, latch->joint.c_str(),
                 latch->peak.t);
-  std::printf("energy       %.9g J at t = 0, %.9g J at t = %g s, %.9g J dissipated\n", s.energy_initial,
-              s.energy_final, s.t_reached, s.energy_dissipated);
+  std::printf("energy       %.9g J at t = 0, %.9g J at t = %g s, %.9g J dissipated\n", s.energy_initial, s.energy_final,
+              s.t_reached, s.energy_dissipated);
   if (s.free_bus)
     std::printf("bus          turned %.4g rad, peak rate %.4g rad/s; momentum drift %.2g (linear), %.2g (angular)\n",
                 s.free_bus->final_attitude_change, s.free_bus->peak_rate, s.free_bus->linear_momentum_drift,
@@ -89,30 +90,30 @@ int command_simulate(const std::vector<std::string>& argv) {
   if (args.positionals().size() > 1) throw UsageError("simulate takes one SCENE (see --help)");
   const std::optional<std::string> scene_arg =
       args.positionals().empty() ? std::nullopt : std::optional(args.positionals()[0]);
-  const Scene scene = load_scene(scene_arg, args);
+  const sim::Scene scene = load_scene(scene_arg, args);
   const std::string dir = args.get("--out").value_or("out");
   io::make_directory(dir);
 
   Progress progress("simulating " + scene.name, scene.run.t_end);
   const InterruptScope interrupt;
-  RunObserver observer;
+  sim::RunObserver observer;
   observer.cancel = &interrupt.flag();
-  if (!args.has("--quiet")) observer.on_progress = [&](const StepProgress& p) { progress.update(p.t); };
-  const RunResult result = simulate(scene, scene.run, observer);
+  if (!args.has("--quiet")) observer.on_progress = [&](const sim::StepProgress& p) { progress.update(p.t); };
+  const sim::RunResult result = sim::simulate(scene, scene.run, observer);
   progress.finish();
-  const RunSummary summary = summarize(scene, result);
+  const sim::RunSummary summary = sim::summarize(scene, result);
 
   io::write_trajectory_csv(scene, result.trajectory, dir + "/trajectory.csv");
   io::write_loads_csv(scene, result.trajectory, dir + "/loads.csv");
   io::write_events_csv(scene, result.trajectory, dir + "/events.csv");
   io::write_summary_json(scene, result, summary, dir + "/summary.json");
   if (!args.has("--quiet")) print_summary(scene, result, summary, dir);
-  if (result.status == RunStatus::failed) {
+  if (result.status == sim::RunStatus::failed) {
     std::fprintf(stderr, "unfurl simulate: %s\n(the results up to t = %g s are written)\n",
-                 describe(result.failure).c_str(), summary.t_reached);
+                 sim::describe(result.failure).c_str(), summary.t_reached);
     return 1;
   }
-  if (result.status == RunStatus::cancelled) {
+  if (result.status == sim::RunStatus::cancelled) {
     std::fprintf(stderr, "unfurl simulate: interrupted by %s at t = %g s\n(the results up to there are written)\n",
                  interrupt.signal_name(), summary.t_reached);
     return interrupt.exit_status();

@@ -50,7 +50,8 @@ void claim_directory(const std::string& dir, const std::string& study_text) {
   std::error_code ec;
   if (std::filesystem::exists(copy, ec)) {
     if (io::read_text_file(copy) != study_text)
-      throw UsageError(dir + " holds the cases of another study (its study.yaml differs); use another --out or remove it");
+      throw UsageError(dir +
+                       " holds the cases of another study (its study.yaml differs); use another --out or remove it");
     return;
   }
   io::OutputFile out(copy);
@@ -76,10 +77,11 @@ int command_sweep(const std::vector<std::string>& argv) {
   if (!args.get("--out")) throw UsageError("sweep needs --out DIR");
   const bool mpi = launched_by_mpirun();
   const double jobs = args.number("--jobs", mpi ? 1.0 : std::max(1u, std::thread::hardware_concurrency()));
-  if (jobs < 1 || jobs > 1024 || jobs != static_cast<int>(jobs)) throw UsageError("--jobs: expected a whole number in 1..1024");
+  if (jobs < 1 || jobs > 1024 || jobs != static_cast<int>(jobs))
+    throw UsageError("--jobs: expected a whole number in 1..1024");
 
   const std::string path = args.positionals()[0];
-  const Study study = read_study_file(path);
+  const studies::Study study = studies::read_study_file(path);
   SweepOptions options{*args.get("--out"), static_cast<int>(jobs), args.has("--keep-runs"), args.has("--quiet")};
   claim_directory(options.dir, io::read_text_file(path));
 
@@ -94,27 +96,32 @@ int command_sweep(const std::vector<std::string>& argv) {
   }
   run.finish_progress();
 
-  std::vector<CaseResult> results;
+  std::vector<studies::CaseResult> results;
   for (const auto& r : run.results())
     if (r) results.push_back(*r);
-  io::StudyReport report{study, run.columns(), results, static_cast<long>(run.cases().size()),
-                     static_cast<long>(run.cases().size() - run.pending().size()),
-                     study_statistics(run.columns(), results),
-                     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
-                     processes, options.jobs, command_line(argv)};
+  io::StudyReport report{study,
+                         run.columns(),
+                         results,
+                         static_cast<long>(run.cases().size()),
+                         static_cast<long>(run.cases().size() - run.pending().size()),
+                         studies::study_statistics(run.columns(), results),
+                         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                         processes,
+                         options.jobs,
+                         command_line(argv)};
   io::write_cases_csv(report, options.dir + "/cases.csv");
   io::write_study_summary_json(report, options.dir + "/summary.json");
   const std::vector<std::string> plots = write_study_plots(report, options.dir);
   io::write_study_markdown(report, plots, options.dir + "/STUDY.md");
 
-  const StudyStatistics& st = report.statistics;
+  const studies::StudyStatistics& st = report.statistics;
   if (!options.quiet)
-    std::printf("study        %s: %ld of %ld cases in %.1f s (%d process%s, %d job%s)\n"
-                "status       %ld deployed, %ld not deployed, %ld failed\n"
-                "files        %s/{cases.csv,summary.json,STUDY.md}\n",
-                path.c_str(), st.cases, report.total_cases, report.wall_time_s, processes, processes == 1 ? "" : "es",
-                options.jobs, options.jobs == 1 ? "" : "s", st.deployed, st.not_deployed, st.failed,
-                options.dir.c_str());
+    std::printf(
+        "study        %s: %ld of %ld cases in %.1f s (%d process%s, %d job%s)\n"
+        "status       %ld deployed, %ld not deployed, %ld failed\n"
+        "files        %s/{cases.csv,summary.json,STUDY.md}\n",
+        path.c_str(), st.cases, report.total_cases, report.wall_time_s, processes, processes == 1 ? "" : "es",
+        options.jobs, options.jobs == 1 ? "" : "s", st.deployed, st.not_deployed, st.failed, options.dir.c_str());
   if (interrupt.signal()) {
     std::fprintf(stderr, "unfurl sweep: interrupted by %s: %ld of %ld cases are finished and kept; rerun to go on\n",
                  interrupt.signal_name(), st.cases, report.total_cases);

@@ -27,8 +27,8 @@ void Progress::update(double done, const std::string& detail) {
   std::string bar(filled, '#');
   bar.resize(width, '.');
   if (fraction > 0.001)
-    std::fprintf(stderr, "\r%s [%s] %5.1f%%  %.1f s, ETA %.1f s  %-28.28s", label_.c_str(), bar.c_str(),
-                 100 * fraction, elapsed, elapsed * (1 - fraction) / fraction, detail.c_str());
+    std::fprintf(stderr, "\r%s [%s] %5.1f%%  %.1f s, ETA %.1f s  %-28.28s", label_.c_str(), bar.c_str(), 100 * fraction,
+                 elapsed, elapsed * (1 - fraction) / fraction, detail.c_str());
   else
     std::fprintf(stderr, "\r%s [%s] %5.1f%%  %.1f s  %-28.28s", label_.c_str(), bar.c_str(), 100 * fraction, elapsed,
                  detail.c_str());

@@ -53,7 +53,7 @@ std::vector<double> frame_times(const RenderOptions& options, double t_begin, do
   return times;
 }
 
-std::vector<std::string> mesh_directories(const Scene& scene) {
+std::vector<std::string> mesh_directories(const sim::Scene& scene) {
   std::vector<std::string> dirs;
   std::error_code ec;
   if (std::filesystem::is_regular_file(scene.source, ec)) {
@@ -65,12 +65,12 @@ std::vector<std::string> mesh_directories(const Scene& scene) {
   return dirs;
 }
 
-render::Camera choose_camera(const RenderOptions& options, const Scene& scene, const Trajectory& trajectory,
+render::Camera choose_camera(const RenderOptions& options, const sim::Scene& scene, const sim::Trajectory& trajectory,
                              const render::SceneView& view, float aspect) {
   // Everything the mechanism sweeps through, from about 200 samples.
   Eigen::AlignedBox3f bounds;
   std::vector<double> q;
-  std::vector<Pose> poses;
+  std::vector<sim::Pose> poses;
   const std::size_t stride = std::max<std::size_t>(1, trajectory.samples.size() / 200);
   for (std::size_t k = 0; k < trajectory.samples.size(); k += stride) {
     trajectory.coordinates_at(trajectory.samples[k].t, q);

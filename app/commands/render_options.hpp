@@ -41,11 +41,11 @@ std::vector<double> frame_times(const RenderOptions& options, double t_begin, do
 
 // Where the scene's meshes are looked up: beside the scene file, in
 // ../meshes from it, then the built-in assets/meshes.
-std::vector<std::string> mesh_directories(const Scene& scene);
+std::vector<std::string> mesh_directories(const sim::Scene& scene);
 
 // The camera the options ask for, fitted to everything the run sweeps
 // through.
-render::Camera choose_camera(const RenderOptions& options, const Scene& scene, const Trajectory& trajectory,
+render::Camera choose_camera(const RenderOptions& options, const sim::Scene& scene, const sim::Trajectory& trajectory,
                              const render::SceneView& view, float aspect);
 
 }  // namespace unfurl::app

@@ -8,8 +8,8 @@
 namespace unfurl::app {
 
 const std::set<std::string>& scene_flags() {
-  static const std::set<std::string> flags{"--set", "--t-end", "--integrator", "--linear-solver", "--rtol",
-                                           "--atol", "--dt",    "--sample"};
+  static const std::set<std::string> flags{"--set",  "--t-end", "--integrator", "--linear-solver",
+                                           "--rtol", "--atol",  "--dt",         "--sample"};
   return flags;
 }
 
@@ -30,19 +30,25 @@ const char* scene_flags_help() {
          "  --sample DT           output interval in seconds (run.sample, default 0.01)\n";
 }
 
-SceneFile read_scene(const std::optional<std::string>& argument, const Args& args) {
+sim::SceneFile read_scene(const std::optional<std::string>& argument, const Args& args) {
   return read_scene_named(argument.value_or("pantograph"), overrides_from(args));
 }
 
-Scene load_scene(const std::optional<std::string>& argument, const Args& args) { return read_scene(argument, args).scene; }
+sim::Scene load_scene(const std::optional<std::string>& argument, const Args& args) {
+  return read_scene(argument, args).scene;
+}
 
-std::vector<Override> overrides_from(const Args& args) {
-  std::vector<Override> overrides;
-  for (const std::string& s : args.all("--set")) overrides.push_back(parse_override(s));
+std::vector<sim::Override> overrides_from(const Args& args) {
+  std::vector<sim::Override> overrides;
+  for (const std::string& s : args.all("--set")) overrides.push_back(sim::parse_override(s));
   // The run flags are overrides of the run section, validated like the file.
-  const std::pair<const char*, const char*> run_flags[] = {
-      {"--t-end", "t_end"}, {"--integrator", "integrator"}, {"--linear-solver", "linear_solver"}, {"--rtol", "rtol"},
-      {"--atol", "atol"},   {"--dt", "dt"},                 {"--sample", "sample"}};
+  const std::pair<const char*, const char*> run_flags[] = {{"--t-end", "t_end"},
+                                                           {"--integrator", "integrator"},
+                                                           {"--linear-solver", "linear_solver"},
+                                                           {"--rtol", "rtol"},
+                                                           {"--atol", "atol"},
+                                                           {"--dt", "dt"},
+                                                           {"--sample", "sample"}};
   for (const auto& [flag, key] : run_flags)
     if (const auto value = args.get(flag)) overrides.push_back({std::string("run.") + key, *value});
   return overrides;
@@ -51,15 +57,15 @@ std::vector<Override> overrides_from(const Args& args) {
 std::string scene_text_named(const std::string& name) {
   std::error_code ec;
   if (std::filesystem::is_regular_file(name, ec)) return io::read_text_file(name);
-  return builtin_scene_text(name);
+  return sim::builtin_scene_text(name);
 }
 
-SceneFile read_scene_named(const std::string& name, const std::vector<Override>& overrides) {
+sim::SceneFile read_scene_named(const std::string& name, const std::vector<sim::Override>& overrides) {
   std::error_code ec;
-  if (std::filesystem::is_regular_file(name, ec)) return read_scene_file(name, overrides);
-  const auto builtins = builtin_scene_names();
+  if (std::filesystem::is_regular_file(name, ec)) return sim::read_scene_file(name, overrides);
+  const auto builtins = sim::builtin_scene_names();
   if (std::find(builtins.begin(), builtins.end(), name) != builtins.end())
-    return read_builtin_scene(name, overrides);
+    return sim::read_builtin_scene(name, overrides);
   std::string known;
   for (const auto& n : builtins) known += (known.empty() ? "" : ", ") + n;
   throw input::InputError(name + ": no such scene file, and no built-in scene of that name (built in: " + known + ")");

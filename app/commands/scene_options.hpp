@@ -19,17 +19,17 @@ const std::set<std::string>& scene_flags();
 const char* scene_flags_help();
 
 // The overrides the flags ask for: every --set, then the run flags.
-std::vector<Override> overrides_from(const Args& args);
+std::vector<sim::Override> overrides_from(const Args& args);
 
 // Reads the scene named by `argument` (a path, or a built-in scene name)
 // with the --set overrides of `args`, then applies the run flags: the Scene
 // and its visuals. Throws input::InputError (exit 2) or UsageError.
-SceneFile read_scene(const std::optional<std::string>& argument, const Args& args);
+sim::SceneFile read_scene(const std::optional<std::string>& argument, const Args& args);
 // The Scene alone.
-Scene load_scene(const std::optional<std::string>& argument, const Args& args);
+sim::Scene load_scene(const std::optional<std::string>& argument, const Args& args);
 
 // The scene named `name` (a path, or a built-in scene) with overrides.
-SceneFile read_scene_named(const std::string& name, const std::vector<Override>& overrides);
+sim::SceneFile read_scene_named(const std::string& name, const std::vector<sim::Override>& overrides);
 // The YAML text of the same (a file's contents or a built-in scene's).
 std::string scene_text_named(const std::string& name);
 

@@ -8,9 +8,8 @@
 
 namespace unfurl::app {
 
-ExportJob::ExportJob(const ExportRequest& request, const Scene& scene, const SceneVisuals& visuals,
-                     const Trajectory& trajectory,
-                     const render::Camera& camera)
+ExportJob::ExportJob(const ExportRequest& request, const sim::Scene& scene, const sim::SceneVisuals& visuals,
+                     const sim::Trajectory& trajectory, const render::Camera& camera)
     : request_(request),
       scene_(scene),
       trajectory_(trajectory),
@@ -21,7 +20,7 @@ ExportJob::ExportJob(const ExportRequest& request, const Scene& scene, const Sce
   if (request_.frames) io::make_directory(request_.dir);
   if (request_.options.video)
     video_ = std::make_unique<io::VideoPipe>(*request_.options.video, request_.options.width, request_.options.height,
-                                         request_.options.fps);
+                                             request_.options.fps);
   encoder_ = std::thread([this] { encode(); });
 }
 
@@ -47,7 +46,7 @@ void ExportJob::cancel() {
 bool ExportJob::step(double budget_ms) {
   const auto start = std::chrono::steady_clock::now();
   std::vector<double> q;
-  std::vector<Pose> poses;
+  std::vector<sim::Pose> poses;
   while (drawn_ < times_.size()) {
     {
       // Do not run ahead of the encoder by more than a few frames.

@@ -20,8 +20,8 @@ namespace unfurl::app {
 class ExportJob {
  public:
   // Throws std::runtime_error when the renderer, directory or ffmpeg fail.
-  ExportJob(const ExportRequest& request, const Scene& scene, const SceneVisuals& visuals, const Trajectory& trajectory,
-            const render::Camera& camera);
+  ExportJob(const ExportRequest& request, const sim::Scene& scene, const sim::SceneVisuals& visuals,
+            const sim::Trajectory& trajectory, const render::Camera& camera);
   ~ExportJob();  // stops the encoder
   ExportJob(const ExportJob&) = delete;
   ExportJob& operator=(const ExportJob&) = delete;
@@ -41,8 +41,8 @@ class ExportJob {
   void encode();
 
   ExportRequest request_;
-  const Scene scene_;
-  const Trajectory trajectory_;
+  const sim::Scene scene_;
+  const sim::Trajectory trajectory_;
   render::Camera camera_;
   std::vector<double> times_;
   std::unique_ptr<render::FrameRenderer> renderer_;

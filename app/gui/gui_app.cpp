@@ -38,8 +38,9 @@ std::optional<std::filesystem::file_time_type> modification_time(const std::stri
 
 }  // namespace
 
-GuiApp::GuiApp(const std::string& scene_name, std::vector<Override> command_line_set, std::vector<ScriptCommand> script,
-               std::optional<StudyToOpen> study, int width, int height, float ui_scale)
+GuiApp::GuiApp(const std::string& scene_name, std::vector<sim::Override> command_line_set,
+               std::vector<ScriptCommand> script, std::optional<StudyToOpen> study, int width, int height,
+               float ui_scale)
     : window_(width, height, "unfurl"), script_(std::move(script)) {
   state_.command_line_set = std::move(command_line_set);
   IMGUI_CHECKVERSION();
@@ -98,7 +99,7 @@ void GuiApp::apply_ui_scale() {
 
 bool GuiApp::show_case(const std::string& id) {
   const std::string shown = state_.study->shown;
-  const std::vector<Override> edits = state_.edits;
+  const std::vector<sim::Override> edits = state_.edits;
   state_.study->shown = id;
   if (shown != id) state_.edits.clear();
   if (load_and_run(state_.study->study.scene)) {
@@ -115,7 +116,7 @@ namespace {
 // Whether a run of `a` can be drawn as the ghost of `b`: the same bodies,
 // coordinates, latches and loops (a study's failure cases add or remove
 // latches).
-bool same_structure(const Scene& a, const Scene& b) {
+bool same_structure(const sim::Scene& a, const sim::Scene& b) {
   return a.name == b.name && a.model.size() == b.model.size() && a.model.nq == b.model.nq &&
          a.latches().size() == b.latches().size() && a.loops.size() == b.loops.size();
 }
@@ -124,13 +125,13 @@ bool same_structure(const Scene& a, const Scene& b) {
 
 bool GuiApp::load_and_run(const std::string& name) {
   try {
-    std::vector<Override> overrides = state_.command_line_set;
+    std::vector<sim::Override> overrides = state_.command_line_set;
     overrides.insert(overrides.end(), state_.edits.begin(), state_.edits.end());
-    const StudyCase* shown_case =
+    const studies::StudyCase* shown_case =
         state_.study && !state_.study->shown.empty() ? state_.study->find_case(state_.study->shown) : nullptr;
-    SceneFile file = shown_case ? case_scene_file(state_.study->study, *shown_case, overrides)
-                                : read_scene_named(name, overrides);
-    Scene& scene = file.scene;
+    sim::SceneFile file = shown_case ? studies::case_scene_file(state_.study->study, *shown_case, overrides)
+                                     : read_scene_named(name, overrides);
+    sim::Scene& scene = file.scene;
     std::vector<std::string> injected;
     if (shown_case && shown_case->failure) injected = failure_elements(scene, *shown_case->failure);
     auto meshes = std::make_unique<render::MeshLibrary>(mesh_directories(scene));
@@ -151,8 +152,8 @@ bool GuiApp::load_and_run(const std::string& name) {
       state_.camera_fitted = false;
       state_.play_time = 0;
       state_.scene_first_generation = state_.requested_generation;
-      state_.trajectory = Trajectory{};
-      state_.ghost = Trajectory{};
+      state_.trajectory = sim::Trajectory{};
+      state_.ghost = sim::Trajectory{};
       keep_comparable_pins(previous_shape);
     }
     return true;
@@ -206,11 +207,11 @@ void GuiApp::sync_run() {
   state_.progress = worker_.sync(state_.generation, state_.trajectory, state_.ghost);
   if (state_.generation < state_.scene_first_generation) {
     // The previous scene's run, still winding down: not this scene's.
-    state_.trajectory = Trajectory{};
-    state_.ghost = Trajectory{};
+    state_.trajectory = sim::Trajectory{};
+    state_.ghost = sim::Trajectory{};
     return;
   }
-  if (state_.generation != before && state_.ghost.samples.size() < 2) state_.ghost = Trajectory{};
+  if (state_.generation != before && state_.ghost.samples.size() < 2) state_.ghost = sim::Trajectory{};
 }
 
 void GuiApp::advance_playback(double dt) {
@@ -253,7 +254,7 @@ void GuiApp::watch_scene_file() {
   }
 }
 
-void GuiApp::current_poses(std::vector<Pose>& poses) const {
+void GuiApp::current_poses(std::vector<sim::Pose>& poses) const {
   std::vector<double> q = state_.scene.q0;
   if (!state_.trajectory.empty()) state_.trajectory.coordinates_at(state_.play_time, q);
   render::poses_in_camera_frame(state_.camera_frame, state_.scene.model, q.data(), poses);
@@ -261,10 +262,10 @@ void GuiApp::current_poses(std::vector<Pose>& poses) const {
 
 Eigen::AlignedBox3f GuiApp::swept_bounds() const {
   Eigen::AlignedBox3f bounds;
-  std::vector<Pose> poses;
+  std::vector<sim::Pose> poses;
   render::poses_in_camera_frame(state_.camera_frame, state_.scene.model, state_.scene.q0.data(), poses);
   bounds.extend(view_->bounds(poses));
-  const Trajectory& tr = state_.trajectory;
+  const sim::Trajectory& tr = state_.trajectory;
   const std::size_t stride = std::max<std::size_t>(1, tr.samples.size() / 100);
   std::vector<double> q;
   for (std::size_t k = 0; k < tr.samples.size(); k += stride) {
@@ -295,7 +296,7 @@ void GuiApp::draw_viewport_texture() {
   // Redrawn only when what it shows changed: while a run computes, a
   // software renderer would otherwise spend a core redrawing a still view.
   const render::Camera& c = state_.camera;
-  const Trajectory& tr = state_.trajectory;
+  const sim::Trajectory& tr = state_.trajectory;
   const bool past_computed = tr.empty() || state_.play_time > tr.t_end();
   const ViewportKey key{view_.get(), w, h, state_.generation,
                         past_computed ? static_cast<long>(tr.samples.size()) : -1L, state_.play_time,
@@ -304,7 +305,7 @@ void GuiApp::draw_viewport_texture() {
   if (key == viewport_key_ && viewport_drawn_) return;
   viewport_key_ = key;
   viewport_drawn_ = true;
-  std::vector<Pose> poses;
+  std::vector<sim::Pose> poses;
   current_poses(poses);
   viewport_->bind();
   view_->draw(poses, state_.camera, w, h);
@@ -448,8 +449,8 @@ void GuiApp::layout_and_panels(Requests& requests) {
   file_dialog_panel(state_, requests);
 }
 
-bool GuiApp::set_edits(std::vector<Override> edits) {
-  std::vector<Override> before = std::move(state_.edits);
+bool GuiApp::set_edits(std::vector<sim::Override> edits) {
+  std::vector<sim::Override> before = std::move(state_.edits);
   state_.edits = std::move(edits);
   if (load_and_run(state_.scene_name)) return true;
   state_.edits = std::move(before);
@@ -459,16 +460,16 @@ bool GuiApp::set_edits(std::vector<Override> edits) {
 void GuiApp::apply(const Requests& r) {
   // An edit (or a reset) is undoable; undo and redo move whole sets of
   // edits between the two stacks. A set that does not load changes nothing.
-  auto edit_to = [&](std::vector<Override> edits) {
-    std::vector<Override> before = state_.edits;
+  auto edit_to = [&](std::vector<sim::Override> edits) {
+    std::vector<sim::Override> before = state_.edits;
     if (!set_edits(std::move(edits))) return;
     state_.edited_at = now_seconds();
     state_.undo.push_back(std::move(before));
     state_.redo.clear();
   };
-  auto travel = [&](std::vector<std::vector<Override>>& from, std::vector<std::vector<Override>>& to) {
+  auto travel = [&](std::vector<std::vector<sim::Override>>& from, std::vector<std::vector<sim::Override>>& to) {
     if (from.empty()) return;
-    std::vector<Override> before = state_.edits;
+    std::vector<sim::Override> before = state_.edits;
     if (!set_edits(from.back())) return;
     from.pop_back();
     to.push_back(std::move(before));
@@ -478,9 +479,10 @@ void GuiApp::apply(const Requests& r) {
                     "); the study file sets it";
   } else if (r.edit) {
     // The latest value for a path replaces an earlier one.
-    std::vector<Override> edits = state_.edits;
-    edits.erase(std::remove_if(edits.begin(), edits.end(), [&](const Override& o) { return o.path == r.edit->path; }),
-                edits.end());
+    std::vector<sim::Override> edits = state_.edits;
+    edits.erase(
+        std::remove_if(edits.begin(), edits.end(), [&](const sim::Override& o) { return o.path == r.edit->path; }),
+        edits.end());
     edits.push_back(*r.edit);
     edit_to(std::move(edits));
   }
@@ -512,8 +514,8 @@ void GuiApp::apply(const Requests& r) {
   if (r.save_trajectory) {
     try {
       io::make_directory(std::filesystem::path(*r.save_trajectory).parent_path().string().empty()
-                         ? "."
-                         : std::filesystem::path(*r.save_trajectory).parent_path().string());
+                             ? "."
+                             : std::filesystem::path(*r.save_trajectory).parent_path().string());
       io::write_trajectory_csv(state_.scene, state_.trajectory, *r.save_trajectory);
       state_.notice = "saved " + *r.save_trajectory;
     } catch (const std::exception& e) {
@@ -546,10 +548,10 @@ void GuiApp::save_scene(const std::string& path, bool overwrite) {
       state_.notice = path + " exists: replace it? (Parameters tab)";
       return;
     }
-    std::vector<Override> overrides = state_.command_line_set;
+    std::vector<sim::Override> overrides = state_.command_line_set;
     overrides.insert(overrides.end(), state_.edits.begin(), state_.edits.end());
-    const std::string text = scene_text_with(scene_text_named(state_.scene_name), state_.scene.source, overrides);
-    read_scene_text(text, path);  // it must read back
+    const std::string text = sim::scene_text_with(scene_text_named(state_.scene_name), state_.scene.source, overrides);
+    sim::read_scene_text(text, path);  // it must read back
     const std::string dir = std::filesystem::path(path).parent_path().string();
     if (!dir.empty()) io::make_directory(dir);
     io::OutputFile file(path);
@@ -569,7 +571,7 @@ void GuiApp::save_view_png(const std::string& path) {
     // play-head, drawn again off screen.
     const int w = std::clamp(state_.export_form.size[0], 16, 8192), h = std::clamp(state_.export_form.size[1], 16, 8192);
     render::FrameRenderer renderer(state_.scene, state_.visuals, w, h, mesh_directories(state_.scene));
-    std::vector<Pose> poses;
+    std::vector<sim::Pose> poses;
     current_poses(poses);
     render::Image image;
     renderer.frame(poses, state_.play_time, state_.camera, image);

@@ -31,9 +31,8 @@ struct StudyToOpen {
 
 class GuiApp : private ScriptTarget {
  public:
-  GuiApp(const std::string& scene_name, std::vector<Override> command_line_set,
-         std::vector<ScriptCommand> script, std::optional<StudyToOpen> study = std::nullopt, int width = 1280,
-         int height = 800, float ui_scale = 1);
+  GuiApp(const std::string& scene_name, std::vector<sim::Override> command_line_set, std::vector<ScriptCommand> script,
+         std::optional<StudyToOpen> study = std::nullopt, int width = 1280, int height = 800, float ui_scale = 1);
   ~GuiApp();
   GuiApp(const GuiApp&) = delete;
   GuiApp& operator=(const GuiApp&) = delete;
@@ -81,13 +80,13 @@ class GuiApp : private ScriptTarget {
   void follow_play_head();
   // Replaces the edits and re-runs; false (and the edits as they were) when
   // the scene does not load with them.
-  bool set_edits(std::vector<Override> edits);
+  bool set_edits(std::vector<sim::Override> edits);
   // The scene with the edits as YAML; asks first (confirm_overwrite) when
   // the file exists and overwrite is false.
   void save_scene(const std::string& path, bool overwrite);
   void keyboard_shortcuts(Requests& requests);
   Eigen::AlignedBox3f swept_bounds() const;
-  void current_poses(std::vector<Pose>& poses) const;
+  void current_poses(std::vector<sim::Pose>& poses) const;
   void save_view_png(const std::string& path);
 
   GlfwWindow window_;

@@ -27,7 +27,7 @@ void value_field(const char* label, const std::string& path, double value, doubl
   if (help && ImGui::IsItemHovered()) ImGui::SetTooltip("%s\n%s", help, path.c_str());
   const bool commit = ImGui::IsItemDeactivatedAfterEdit() || (stepped && !ImGui::IsItemActive());
   if (lo < hi) v = std::clamp(v, lo, hi);
-  if (commit && v != value) requests.edit = Override{path, format_number(v)};
+  if (commit && v != value) requests.edit = sim::Override{path, sim::format_number(v)};
 }
 
 double run_end(const GuiState& state) { return state.scene.run.t_end; }
@@ -64,7 +64,7 @@ class FailureLock {
 
 std::string toolbar_error(const GuiState& state) {
   std::string error = state.scene_error;
-  if (state.progress.status == RunStatus::failed && !state.progress.failure.empty())
+  if (state.progress.status == sim::RunStatus::failed && !state.progress.failure.empty())
     error += (error.empty() ? "" : "\n") + std::string("run failed: ") + state.progress.failure;
   return error;
 }
@@ -196,8 +196,8 @@ void timeline_panel(GuiState& state) {
   const bool hovered = ImGui::IsItemHovered();
   const float mouse_x = ImGui::GetIO().MousePos.x;
   std::string names;
-  auto marks = [&](const Trajectory& tr, float top, ImU32 colour, const char* which) {
-    for (const LatchEvent& e : tr.events) {
+  auto marks = [&](const sim::Trajectory& tr, float top, ImU32 colour, const char* which) {
+    for (const sim::LatchEvent& e : tr.events) {
       const float x = lo.x + static_cast<float>(e.t / t_end) * (hi.x - lo.x);
       draw->AddLine(ImVec2(x, top), ImVec2(x, hi.y), colour, 2);
       if (hovered && std::abs(mouse_x - x) <= 3 && e.joint < state.scene.model.size()) {
@@ -238,16 +238,16 @@ std::string list_title(std::string list) {
 // Every force element's parameters, a section per list of the scene file,
 // in the order the lists first appear.
 void elements_section(GuiState& state, Requests& requests) {
-  const Scene& scene = state.scene;
+  const sim::Scene& scene = state.scene;
   std::vector<std::string> lists;
   for (const auto& e : scene.elements)
     if (std::find(lists.begin(), lists.end(), e->list()) == lists.end()) lists.push_back(e->list());
   for (std::size_t n = 0; n < lists.size(); ++n) {
     if (!ImGui::CollapsingHeader(list_title(lists[n]).c_str(), n == 0 ? ImGuiTreeNodeFlags_DefaultOpen : 0)) continue;
     for (std::size_t k = 0; k < scene.elements.size(); ++k) {
-      const ForceElement& e = *scene.elements[k];
+      const sim::ForceElement& e = *scene.elements[k];
       if (e.list() != lists[n]) continue;
-      const std::vector<ElementParameter> parameters = e.parameters();
+      const std::vector<sim::ElementParameter> parameters = e.parameters();
       const std::string path = scene.element_path(k);
       ImGui::PushID(static_cast<int>(k));
       const FailureLock lock(state, path);
@@ -255,9 +255,9 @@ void elements_section(GuiState& state, Requests& requests) {
       ImGui::Text("%s %s", e.kind().c_str(), handle.c_str());
       lock.note();
       if (const std::string note = e.note(); !note.empty()) ImGui::TextDisabled("  %s", note.c_str());
-      for (const ElementParameter& p : parameters)
-        value_field((p.label + "##" + p.key).c_str(), path + "." + p.key, p.value, p.step, requests, p.lo, p.hi,
-                    "%.6g", p.help.c_str());
+      for (const sim::ElementParameter& p : parameters)
+        value_field((p.label + "##" + p.key).c_str(), path + "." + p.key, p.value, p.step, requests, p.lo, p.hi, "%.6g",
+                    p.help.c_str());
       ImGui::PopID();
     }
   }
@@ -266,7 +266,7 @@ void elements_section(GuiState& state, Requests& requests) {
 }  // namespace
 
 void parameters_panel(GuiState& state, Requests& requests) {
-  const Scene& scene = state.scene;
+  const sim::Scene& scene = state.scene;
   if (state.save_path[0] == 0) {
     const std::string stem = std::filesystem::path(state.scene_name).stem().string();
     std::snprintf(state.save_path, sizeof state.save_path, "%s_edited.yaml", stem.c_str());
@@ -308,26 +308,26 @@ void parameters_panel(GuiState& state, Requests& requests) {
   }
   elements_section(state, requests);
   if (!scene.loops.empty() && ImGui::CollapsingHeader("Loop regulator", ImGuiTreeNodeFlags_DefaultOpen)) {
-    const RegulatorSettings& r = scene.regulator;
-    int gains = r.gains == GainTuning::full ? 0 : 1;
+    const sim::RegulatorSettings& r = scene.regulator;
+    int gains = r.gains == sim::GainTuning::full ? 0 : 1;
     ImGui::SetNextItemWidth(em(160));
     if (ImGui::Combo("gains", &gains, "full (current W)\0paper (16), diagonal\0"))
-      requests.edit = Override{"regulator.gains", gains == 0 ? "full" : "paper"};
+      requests.edit = sim::Override{"regulator.gains", gains == 0 ? "full" : "paper"};
     value_field("v_max [rad/s]", "regulator.v_max", r.v_max, 10, requests, 1e-3, 1e9, "%.6g",
                 "the regulator's bandwidth: how fast it closes a loop's gap");
     value_field("p0", "regulator.p0", r.p0, 0.01, requests, 1e-3, 100, "%.6g", "pole placement of the PID gains (16)");
     value_field("p1", "regulator.p1", r.p1, 0.01, requests, 1e-3, 0.999, "%.6g", "pole placement of the PID gains (16)");
   }
   if (ImGui::CollapsingHeader("Integrator", ImGuiTreeNodeFlags_DefaultOpen)) {
-    const RunSettings& run = scene.run;
+    const sim::RunSettings& run = scene.run;
     int current = 0;
-    const auto& kinds = all_integrators();
+    const auto& kinds = sim::all_integrators();
     for (std::size_t k = 0; k < kinds.size(); ++k)
       if (kinds[k] == run.integrator) current = static_cast<int>(k);
     ImGui::SetNextItemWidth(em(160));
     if (ImGui::Combo("integrator", &current, "cvode-bdf\0cvode-adams\0arkode-erk\0arkode-dirk\0rk4\0"))
-      requests.edit = Override{"run.integrator", integrator_name(kinds[current])};
-    if (run.integrator == IntegratorKind::rk4) {
+      requests.edit = sim::Override{"run.integrator", sim::integrator_name(kinds[current])};
+    if (run.integrator == sim::IntegratorKind::rk4) {
       value_field("step [s]", "run.dt", run.dt, 1e-6, requests, 1e-9, 1, "%.3g", "the fixed step of RK4");
     } else {
       value_field("rtol", "run.rtol", run.rtol, 1e-10, requests, 1e-14, 1e-1, "%.3g",
@@ -340,7 +340,7 @@ void parameters_panel(GuiState& state, Requests& requests) {
   if (!state.edits.empty()) {
     ImGui::Separator();
     ImGui::TextDisabled("changed from the file:");
-    for (const Override& o : state.edits) ImGui::TextDisabled("  %s = %s", o.path.c_str(), o.value.c_str());
+    for (const sim::Override& o : state.edits) ImGui::TextDisabled("  %s = %s", o.path.c_str(), o.value.c_str());
   }
 }
 
@@ -371,7 +371,7 @@ namespace {
 
 // The joints the plots draw: a checklist, with all, none and the default.
 void curves_checklist(GuiState& state) {
-  const Model& model = state.scene.model;
+  const sim::Model& model = state.scene.model;
   if (ImGui::SmallButton("curves...")) ImGui::OpenPopup("curves");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("choose the joints the plots draw");
   if (!ImGui::BeginPopup("curves")) return;
@@ -636,10 +636,11 @@ void file_dialog_panel(GuiState& state, Requests& requests) {
 void status_bar(const GuiState& state) {
   const RunProgress& p = state.progress;
   const double factor = p.wall_time_s > 0 ? p.t_reached / p.wall_time_s : 0;
-  const RunSettings& run = state.scene.run;
-  ImGui::Text("simulated %.3f / %.3g s | wall %.3f s | %ld steps | %ld RHS | %.1fx real time | %s rtol %.0e | %s | UI %.0f fps",
-              p.t_reached, run.t_end, p.wall_time_s, p.steps, p.rhs_calls, factor, integrator_name(run.integrator),
-              run.rtol, p.running ? "running" : run_status_name(p.status), state.fps);
+  const sim::RunSettings& run = state.scene.run;
+  ImGui::Text(
+      "simulated %.3f / %.3g s | wall %.3f s | %ld steps | %ld RHS | %.1fx real time | %s rtol %.0e | %s | UI %.0f fps",
+      p.t_reached, run.t_end, p.wall_time_s, p.steps, p.rhs_calls, factor, sim::integrator_name(run.integrator),
+      run.rtol, p.running ? "running" : sim::run_status_name(p.status), state.fps);
   if (!state.notice.empty()) {
     ImGui::SameLine();
     ImGui::TextDisabled("| %s", state.notice.c_str());

@@ -32,7 +32,7 @@ struct ExportRequest {
 };
 
 struct Requests {
-  std::optional<Override> edit;         // a parameter: restart the run with it
+  std::optional<sim::Override> edit;    // a parameter: restart the run with it
   bool reset_edits = false;             // back to the scene file's values
   bool undo = false, redo = false;      // of the parameter edits
   std::optional<std::string> save_scene;  // the edited scene as YAML
@@ -72,15 +72,15 @@ struct GuiState {
   char scene_path[512] = "";  // the toolbar's field
   // The scene: its source, the edits made in the GUI, the loaded result.
   std::string scene_name;                 // as given: a path or a built-in name
-  std::vector<Override> command_line_set;  // --set from the command line
-  std::vector<Override> edits;             // from the parameters panel
-  std::vector<std::vector<Override>> undo, redo;  // earlier and undone sets of edits
+  std::vector<sim::Override> command_line_set;         // --set from the command line
+  std::vector<sim::Override> edits;                    // from the parameters panel
+  std::vector<std::vector<sim::Override>> undo, redo;  // earlier and undone sets of edits
   char save_path[256] = "";                // the Save scene field
   std::string confirm_overwrite;           // a file the user is asked about
   bool ask_overwrite = false;              // open the question (once)
   bool focus_scene_field = false;          // Ctrl+O: type a scene
-  Scene scene;
-  SceneVisuals visuals;
+  sim::Scene scene;
+  sim::SceneVisuals visuals;
   std::string scene_error;                 // why the last load failed
   std::optional<std::filesystem::file_time_type> scene_mtime;
   // A finished study, when one is open; its case on show (study->shown)
@@ -99,8 +99,8 @@ struct GuiState {
   // scene (other bodies, other coordinates) and are neither drawn nor kept
   // as the ghost.
   long scene_first_generation = 0;
-  Trajectory trajectory;
-  Trajectory ghost;
+  sim::Trajectory trajectory;
+  sim::Trajectory ghost;
   RunProgress progress;
   // Runs kept for comparison, drawn with the current one and tabled
   // against it (the Runs tab); they stay while the scene keeps its shape.

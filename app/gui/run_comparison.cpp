@@ -17,7 +17,7 @@ double figure(const std::vector<RunFigure>& figures, const std::string& name) {
 
 }  // namespace
 
-std::vector<RunFigure> run_figures(const RunSummary& s) {
+std::vector<RunFigure> run_figures(const sim::RunSummary& s) {
   std::vector<RunFigure> figures;
   double last_latch = s.latch_times.empty() ? kNone : 0;
   for (const auto& [joint, t] : s.latch_times) last_latch = std::max(last_latch, t);
@@ -35,7 +35,7 @@ std::vector<RunFigure> run_figures(const RunSummary& s) {
   return figures;
 }
 
-SceneShape scene_shape(const Scene& scene) {
+SceneShape scene_shape(const sim::Scene& scene) {
   return {scene.name, scene.model.size(), scene.model.nq, static_cast<int>(scene.loops.size())};
 }
 
@@ -46,7 +46,7 @@ ImU32 pinned_color(int k) {
   return colors[k % 6];
 }
 
-std::vector<ComparisonRow> compare_runs(const RunSummary& current, const std::vector<PinnedRun>& pinned) {
+std::vector<ComparisonRow> compare_runs(const sim::RunSummary& current, const std::vector<PinnedRun>& pinned) {
   std::vector<std::vector<RunFigure>> figures;
   for (const PinnedRun& p : pinned) figures.push_back(p.summary ? run_figures(*p.summary) : std::vector<RunFigure>{});
   std::vector<ComparisonRow> rows;

@@ -22,7 +22,7 @@ struct RunFigure {
   double value = 0;
 };
 
-std::vector<RunFigure> run_figures(const RunSummary& summary);
+std::vector<RunFigure> run_figures(const sim::RunSummary& summary);
 
 // What a pinned run can be drawn against: runs of the same scene with the
 // same bodies, coordinates and loops (a study's failure case may add or
@@ -35,14 +35,14 @@ struct SceneShape {
   }
 };
 
-SceneShape scene_shape(const Scene& scene);
+SceneShape scene_shape(const sim::Scene& scene);
 
 struct PinnedRun {
   std::string name;
   char name_field[64] = "";  // the Runs tab's editable copy of the name
   SceneShape shape;
-  Trajectory trajectory;
-  std::shared_ptr<const RunSummary> summary;
+  sim::Trajectory trajectory;
+  std::shared_ptr<const sim::RunSummary> summary;
   ImU32 color = 0;
   bool shown = true;
 };
@@ -60,6 +60,6 @@ struct ComparisonRow {
   std::vector<double> pinned;
 };
 
-std::vector<ComparisonRow> compare_runs(const RunSummary& current, const std::vector<PinnedRun>& pinned);
+std::vector<ComparisonRow> compare_runs(const sim::RunSummary& current, const std::vector<PinnedRun>& pinned);
 
 }  // namespace unfurl::app

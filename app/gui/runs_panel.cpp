@@ -16,7 +16,7 @@ namespace {
 std::string default_pin_name(const GuiState& state) {
   std::string name = state.study && !state.study->shown.empty() ? state.study->shown : "file values";
   if (!state.edits.empty()) {
-    const Override& last = state.edits.back();
+    const sim::Override& last = state.edits.back();
     const std::size_t dot = last.path.find('.');
     name = (dot == std::string::npos ? last.path : last.path.substr(dot + 1)) + "=" + last.value;
     if (state.edits.size() > 1) name += " +" + std::to_string(state.edits.size() - 1);

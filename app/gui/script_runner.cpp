@@ -65,7 +65,7 @@ void ScriptRunner::step(ScriptTarget& target, double now) {
       target.camera_preset(arg(0));
     } else if (c.name == "set") {
       Requests r;
-      r.edit = Override{arg(0), arg(1)};
+      r.edit = sim::Override{arg(0), arg(1)};
       target.request(r);
     } else if (c.name == "screenshot") {
       target.screenshot(arg(0));
@@ -125,7 +125,7 @@ void ScriptRunner::step(ScriptTarget& target, double now) {
       ++state.plots_version;
     } else if (c.name == "curves") {
       state.plot_coordinates.clear();
-      const Model& model = state.scene.model;
+      const sim::Model& model = state.scene.model;
       for (const std::string& joint : c.args)
         for (int k = 0; k < model.nq; ++k)
           if (model.joints[model.joint_of_position[k]].name == joint) state.plot_coordinates.push_back(k);

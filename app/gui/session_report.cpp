@@ -13,12 +13,12 @@ void write_session_report(const GuiState& state, const std::string& path) {
   json.begin_object();
   json.value("scene", state.scene.name).value("generation", state.generation);
   if (state.study) json.value("study_case", state.study->shown).value("study_rows", static_cast<long>(state.study->rows.size()));
-  auto run = [&](const char* key, const Trajectory& tr) {
+  auto run = [&](const char* key, const sim::Trajectory& tr) {
     json.begin_object(key);
     json.value("samples", static_cast<long>(tr.samples.size()));
     json.value("t_end", tr.empty() ? 0.0 : tr.t_end());
     json.begin_object("latch_time");
-    for (const LatchEvent& e : tr.events) json.value(state.scene.model.joints[e.joint].name, e.t);
+    for (const sim::LatchEvent& e : tr.events) json.value(state.scene.model.joints[e.joint].name, e.t);
     json.end_object();
     json.end_object();
   };
@@ -52,7 +52,7 @@ void write_session_report(const GuiState& state, const std::string& path) {
   for (int c : render::chosen_coordinates(state.scene.model, plot_choice(state)))
     json.value("", state.scene.model.joints[state.scene.model.joint_of_position[c]].name);
   json.end_array();
-  json.value("status", state.progress.running ? "running" : run_status_name(state.progress.status));
+  json.value("status", state.progress.running ? "running" : sim::run_status_name(state.progress.status));
   json.value("run_wall_time_s", state.progress.wall_time_s).value("run_steps", state.progress.steps);
   json.value("edit_to_curves_s", state.curves_at > state.edited_at ? state.curves_at - state.edited_at : -1.0);
   json.value("play_time", state.play_time);
@@ -71,7 +71,7 @@ void write_session_report(const GuiState& state, const std::string& path) {
   for (const std::string& e : state.failure_elements) json.value("", e);
   json.end_array();
   json.begin_array("edits");
-  for (const Override& o : state.edits) json.value("", o.path + "=" + o.value);
+  for (const sim::Override& o : state.edits) json.value("", o.path + "=" + o.value);
   json.end_array();
   json.end_object();
   file.commit();

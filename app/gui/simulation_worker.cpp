@@ -16,7 +16,7 @@ SimulationWorker::~SimulationWorker() {
   thread_.join();
 }
 
-long SimulationWorker::run(const Scene& scene) {
+long SimulationWorker::run(const sim::Scene& scene) {
   std::lock_guard<std::mutex> lock(mutex_);
   pending_ = scene;
   cancel_ = true;
@@ -26,12 +26,12 @@ long SimulationWorker::run(const Scene& scene) {
   return progress_.generation + 1;
 }
 
-RunProgress SimulationWorker::sync(long& generation, Trajectory& copy, Trajectory& previous) {
+RunProgress SimulationWorker::sync(long& generation, sim::Trajectory& copy, sim::Trajectory& previous) {
   std::lock_guard<std::mutex> lock(mutex_);
   if (generation != progress_.generation) {
     generation = progress_.generation;
     if (!copy.empty()) previous = std::move(copy);
-    copy = Trajectory{};
+    copy = sim::Trajectory{};
   }
   copy.layout = buffer_.layout;
   copy.samples.insert(copy.samples.end(), buffer_.samples.begin() + static_cast<long>(copy.samples.size()),
@@ -53,7 +53,7 @@ void SimulationWorker::loop() {
   // simulate`; at equal priority 0.27-0.29 s, with the UI at 33-35 frames/s
   // instead of 41-43 while it computes.
   for (;;) {
-    Scene scene;
+    sim::Scene scene;
     {
       std::unique_lock<std::mutex> lock(mutex_);
       wake_.wait(lock, [this] { return quit_ || pending_.has_value(); });
@@ -61,46 +61,47 @@ void SimulationWorker::loop() {
       scene = std::move(*pending_);
       pending_.reset();
       cancel_ = false;
-      buffer_ = Trajectory{};
+      buffer_ = sim::Trajectory{};
       const long generation = progress_.generation + 1;
       progress_ = RunProgress{};
       progress_.generation = generation;
       progress_.running = true;
     }
     const auto start = std::chrono::steady_clock::now();
-    RunObserver observer;
+    sim::RunObserver observer;
     observer.cancel = &cancel_;
-    observer.on_sample = [&](const Sample& s) {
+    observer.on_sample = [&](const sim::Sample& s) {
       std::lock_guard<std::mutex> lock(mutex_);
-      if (buffer_.samples.empty()) buffer_.layout = StateLayout{scene.model.nq, scene.model.nv, 0};
+      if (buffer_.samples.empty()) buffer_.layout = sim::StateLayout{scene.model.nq, scene.model.nv, 0};
       buffer_.samples.push_back(s);
       progress_.t_reached = s.t;
       progress_.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     };
-    observer.on_progress = [&](const StepProgress& p) {
+    observer.on_progress = [&](const sim::StepProgress& p) {
       // Atomics rather than the lock: the status line reads them every frame.
       steps_live_.store(p.steps, std::memory_order_relaxed);
       rhs_live_.store(p.rhs_calls, std::memory_order_relaxed);
     };
-    observer.on_event = [&](const LatchEvent& e) {
+    observer.on_event = [&](const sim::LatchEvent& e) {
       std::lock_guard<std::mutex> lock(mutex_);
       buffer_.events.push_back(e);
     };
-    RunResult result;
+    sim::RunResult result;
     try {
-      result = simulate(scene, scene.run, observer);
+      result = sim::simulate(scene, scene.run, observer);
     } catch (const std::exception& e) {
-      result.status = RunStatus::failed;
+      result.status = sim::RunStatus::failed;
       result.failure = {0, 0, "setup", e.what()};
     }
-    std::shared_ptr<const RunSummary> summary;
-    if (result.status != RunStatus::cancelled) summary = std::make_shared<const RunSummary>(summarize(scene, result));
+    std::shared_ptr<const sim::RunSummary> summary;
+    if (result.status != sim::RunStatus::cancelled)
+      summary = std::make_shared<const sim::RunSummary>(sim::summarize(scene, result));
     std::lock_guard<std::mutex> lock(mutex_);
     progress_.summary = std::move(summary);
     buffer_.layout = result.trajectory.layout;
     progress_.running = false;
     progress_.status = result.status;
-    progress_.failure = result.status == RunStatus::failed ? describe(result.failure) : "";
+    progress_.failure = result.status == sim::RunStatus::failed ? sim::describe(result.failure) : "";
     progress_.steps = result.stats.steps;
     progress_.rhs_calls = result.rhs_calls;
     progress_.wall_time_s = result.wall_time_s;

@@ -22,7 +22,7 @@ namespace unfurl::app {
 // What the UI sees of the current run.
 struct RunProgress {
   long generation = 0;         // increments with every new run
-  RunStatus status = RunStatus::finished;
+  sim::RunStatus status = sim::RunStatus::finished;
   bool running = false;
   std::string failure;         // a solver failure, said where
   double t_reached = 0;
@@ -30,7 +30,7 @@ struct RunProgress {
   long steps = 0;
   long rhs_calls = 0;
   // The finished (or failed) run's figures; null while it runs.
-  std::shared_ptr<const RunSummary> summary;
+  std::shared_ptr<const sim::RunSummary> summary;
 };
 
 class SimulationWorker {
@@ -42,26 +42,26 @@ class SimulationWorker {
 
   // Cancels the run in progress (promptly: at its next step) and runs this
   // scene instead. Returns the new run's generation.
-  long run(const Scene& scene);
+  long run(const sim::Scene& scene);
 
   // Copies the samples and events the UI has not seen yet into `copy`
   // (which must hold the first copy.samples.size() samples of `generation`).
   // When a new run has started, `copy` moves to `previous` and starts
   // afresh. Returns the run's progress.
-  RunProgress sync(long& generation, Trajectory& copy, Trajectory& previous);
+  RunProgress sync(long& generation, sim::Trajectory& copy, sim::Trajectory& previous);
 
  private:
   void loop();
 
   std::mutex mutex_;
   std::condition_variable wake_;
-  std::optional<Scene> pending_;  // the next run, taken by the worker
+  std::optional<sim::Scene> pending_;  // the next run, taken by the worker
   bool quit_ = false;
   std::atomic<bool> cancel_{false};
   std::atomic<long> steps_live_{0}, rhs_live_{0};
 
   // Shared with the UI under mutex_.
-  Trajectory buffer_;
+  sim::Trajectory buffer_;
   RunProgress progress_;
 
   // Last: it starts running loop() at construction, so every member above

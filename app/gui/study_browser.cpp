@@ -15,17 +15,17 @@ StudyBrowser open_study(const std::string& study_path, const std::string& dir) {
   StudyBrowser b;
   b.study_path = study_path;
   b.dir = dir;
-  b.study = read_study_file(study_path);
-  b.columns = case_columns(b.study, nominal_scene(b.study).scene);
-  b.cases = study_cases(b.study);
-  for (const StudyCase& c : b.cases)
+  b.study = studies::read_study_file(study_path);
+  b.columns = studies::case_columns(b.study, studies::nominal_scene(b.study).scene);
+  b.cases = studies::study_cases(b.study);
+  for (const studies::StudyCase& c : b.cases)
     if (auto row = io::read_case_record(b.columns, dir, c.id)) b.rows.push_back(std::move(*row));
   if (b.rows.empty())
     throw std::runtime_error(dir + " holds no finished case of " + study_path + " (run: unfurl sweep " + study_path +
                              " --out " + dir + ")");
   const int n_inputs = static_cast<int>(b.columns.inputs.size());
   b.table_columns = {0, 1};
-  for (const std::string& name : CaseColumns::headline()) {
+  for (const std::string& name : studies::CaseColumns::headline()) {
     const auto it = std::find(b.columns.outputs.begin(), b.columns.outputs.end(), name);
     if (it != b.columns.outputs.end()) b.table_columns.push_back(2 + n_inputs + static_cast<int>(it - b.columns.outputs.begin()));
   }
@@ -35,8 +35,8 @@ StudyBrowser open_study(const std::string& study_path, const std::string& dir) {
   return b;
 }
 
-const StudyCase* StudyBrowser::find_case(const std::string& id) const {
-  for (const StudyCase& c : cases)
+const studies::StudyCase* StudyBrowser::find_case(const std::string& id) const {
+  for (const studies::StudyCase& c : cases)
     if (c.id == id) return &c;
   return nullptr;
 }
@@ -48,7 +48,7 @@ std::string StudyBrowser::column_name(int column) const {
   return k < columns.inputs.size() ? columns.inputs[k] : columns.outputs[k - columns.inputs.size()];
 }
 
-double StudyBrowser::value(const CaseResult& r, int column) const {
+double StudyBrowser::value(const studies::CaseResult& r, int column) const {
   if (column < 2) return std::nan("");
   const std::size_t k = static_cast<std::size_t>(column - 2);
   return k < r.inputs.size() ? r.inputs[k] : r.outputs[k - r.inputs.size()];
@@ -56,7 +56,7 @@ double StudyBrowser::value(const CaseResult& r, int column) const {
 
 void StudyBrowser::sort(int column, bool ascending) {
   const auto less = [&](int a, int b) {
-    const CaseResult &ra = rows[a], &rb = rows[b];
+    const studies::CaseResult &ra = rows[a], &rb = rows[b];
     if (column == 0) return ascending ? a < b : b < a;  // case order
     if (column == 1) {
       if (ra.status != rb.status) return ascending ? ra.status < rb.status : rb.status < ra.status;
@@ -70,7 +70,7 @@ void StudyBrowser::sort(int column, bool ascending) {
   std::stable_sort(order.begin(), order.end(), less);
 }
 
-std::vector<std::string> failure_elements(const Scene& scene, const StudyFailure& failure) {
+std::vector<std::string> failure_elements(const sim::Scene& scene, const studies::StudyFailure& failure) {
   std::vector<std::string> paths;
   const auto add = [&](std::size_t k) {
     for (const std::string& path : scene.element_paths(k)) paths.push_back(path);
@@ -88,16 +88,21 @@ std::vector<std::string> failure_elements(const Scene& scene, const StudyFailure
     if (found < scene.elements.size()) add(found);
   };
   switch (failure.kind) {
-    case StudyFailure::Kind::latch_fails: break;  // nothing left to edit
-    case StudyFailure::Kind::spring_breaks:
-    case StudyFailure::Kind::preload_loss:
+    case studies::StudyFailure::Kind::latch_fails:
+      break;  // nothing left to edit
+    case studies::StudyFailure::Kind::spring_breaks:
+    case studies::StudyFailure::Kind::preload_loss:
       for (std::size_t k = 0; k < scene.elements.size(); ++k)
-        if (const auto* s = dynamic_cast<const JointSpring*>(scene.elements[k].get());
+        if (const auto* s = dynamic_cast<const sim::JointSpring*>(scene.elements[k].get());
             s && scene.model.joints[s->joint].name == failure.joint)
           add(k);
       break;
-    case StudyFailure::Kind::stuck: last_on_joint(static_cast<const Latch*>(nullptr)); break;
-    case StudyFailure::Kind::extra_friction: last_on_joint(static_cast<const JointFriction*>(nullptr)); break;
+    case studies::StudyFailure::Kind::stuck:
+      last_on_joint(static_cast<const sim::Latch*>(nullptr));
+      break;
+    case studies::StudyFailure::Kind::extra_friction:
+      last_on_joint(static_cast<const sim::JointFriction*>(nullptr));
+      break;
   }
   return paths;
 }

@@ -16,22 +16,22 @@ namespace unfurl::app {
 struct StudyBrowser {
   std::string study_path;
   std::string dir;
-  Study study;
-  CaseColumns columns;
-  std::vector<StudyCase> cases;
-  std::vector<CaseResult> rows;  // the finished cases, in case order
+  studies::Study study;
+  studies::CaseColumns columns;
+  std::vector<studies::StudyCase> cases;
+  std::vector<studies::CaseResult> rows;  // the finished cases, in case order
   std::vector<int> order;        // indices into rows, as the table shows them
   std::string shown;             // the id of the case on show; "" for none
   // The table's columns (as numbered below), at most 64 (Dear ImGui's
   // limit): id, status, the headline outputs, then the inputs.
   std::vector<int> table_columns;
 
-  const StudyCase* find_case(const std::string& id) const;
+  const studies::StudyCase* find_case(const std::string& id) const;
   // Sorts the table by column `column` (0 id, 1 status, then the inputs,
   // then the outputs); NaN last either way.
   void sort(int column, bool ascending);
   // Column k's value in row r, for sorting and display (NaN for id/status).
-  double value(const CaseResult& r, int column) const;
+  double value(const studies::CaseResult& r, int column) const;
   int column_count() const { return 2 + static_cast<int>(columns.inputs.size() + columns.outputs.size()); }
   std::string column_name(int column) const;
 };
@@ -41,7 +41,7 @@ struct StudyBrowser {
 // that name them ("springs.j1", "latches.8", "friction.j4"): they are the
 // study file's, not the scene's, so the workbench shows them read-only and
 // refuses an edit of them. `scene` is the case's scene, failure applied.
-std::vector<std::string> failure_elements(const Scene& scene, const StudyFailure& failure);
+std::vector<std::string> failure_elements(const sim::Scene& scene, const studies::StudyFailure& failure);
 
 // Whether an edit's path reaches into one of `elements`.
 bool edits_element(const std::string& path, const std::vector<std::string>& elements);

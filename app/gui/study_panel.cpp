@@ -12,11 +12,14 @@ namespace unfurl::app {
 
 namespace {
 
-ImVec4 status_colour(CaseStatus status) {
+ImVec4 status_colour(studies::CaseStatus status) {
   switch (status) {
-    case CaseStatus::deployed: return ImVec4(0.55f, 0.85f, 0.55f, 1);
-    case CaseStatus::not_deployed: return ImVec4(1.0f, 0.7f, 0.3f, 1);
-    case CaseStatus::failed: return ImVec4(1.0f, 0.4f, 0.4f, 1);
+    case studies::CaseStatus::deployed:
+      return ImVec4(0.55f, 0.85f, 0.55f, 1);
+    case studies::CaseStatus::not_deployed:
+      return ImVec4(1.0f, 0.7f, 0.3f, 1);
+    case studies::CaseStatus::failed:
+      return ImVec4(1.0f, 0.4f, 0.4f, 1);
   }
   return ImVec4(1, 1, 1, 1);
 }
@@ -27,8 +30,8 @@ void histogram(const StudyBrowser& b, const std::string& name, const char* unit,
   const auto it = std::find(b.columns.outputs.begin(), b.columns.outputs.end(), name);
   if (it == b.columns.outputs.end()) return;
   const std::size_t k = static_cast<std::size_t>(it - b.columns.outputs.begin());
-  for (const CaseResult& r : b.rows)
-    if (r.status == CaseStatus::deployed && std::isfinite(r.outputs[k])) x.push_back(r.outputs[k]);
+  for (const studies::CaseResult& r : b.rows)
+    if (r.status == studies::CaseStatus::deployed && std::isfinite(r.outputs[k])) x.push_back(r.outputs[k]);
   if (x.empty()) return;
   const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
   constexpr int kBins = 20;
@@ -64,7 +67,7 @@ void cases_table(StudyBrowser& b, Requests& requests) {
   clipper.Begin(static_cast<int>(b.order.size()));
   while (clipper.Step()) {
     for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
-      const CaseResult& r = b.rows[b.order[i]];
+      const studies::CaseResult& r = b.rows[b.order[i]];
       ImGui::TableNextRow();
       ImGui::TableSetColumnIndex(0);
       if (ImGui::Selectable(r.id.c_str(), r.id == b.shown, ImGuiSelectableFlags_SpanAllColumns))
@@ -73,7 +76,7 @@ void cases_table(StudyBrowser& b, Requests& requests) {
         ImGui::SetTooltip("%s%s%s", r.failure.c_str(), r.failure.empty() || r.reason.empty() ? "" : ": ",
                           r.reason.c_str());
       ImGui::TableSetColumnIndex(1);
-      ImGui::TextColored(status_colour(r.status), "%s", case_status_name(r.status));
+      ImGui::TextColored(status_colour(r.status), "%s", studies::case_status_name(r.status));
       for (int d = 2; d < n; ++d) {
         ImGui::TableSetColumnIndex(d);
         const double v = b.value(r, b.table_columns[d]);
@@ -92,14 +95,14 @@ void cases_table(StudyBrowser& b, Requests& requests) {
 void study_panel(GuiState& state, Requests& requests) {
   StudyBrowser& b = *state.study;
   long count[3] = {0, 0, 0};
-  for (const CaseResult& r : b.rows) ++count[static_cast<int>(r.status)];
+  for (const studies::CaseResult& r : b.rows) ++count[static_cast<int>(r.status)];
   ImGui::TextWrapped("%s: %zu of %zu cases finished in %s", b.study_path.c_str(), b.rows.size(), b.cases.size(),
                      b.dir.c_str());
-  ImGui::TextColored(status_colour(CaseStatus::deployed), "%ld deployed", count[0]);
+  ImGui::TextColored(status_colour(studies::CaseStatus::deployed), "%ld deployed", count[0]);
   ImGui::SameLine();
-  ImGui::TextColored(status_colour(CaseStatus::not_deployed), "%ld not deployed", count[1]);
+  ImGui::TextColored(status_colour(studies::CaseStatus::not_deployed), "%ld not deployed", count[1]);
   ImGui::SameLine();
-  ImGui::TextColored(status_colour(CaseStatus::failed), "%ld failed", count[2]);
+  ImGui::TextColored(status_colour(studies::CaseStatus::failed), "%ld failed", count[2]);
   const float half = 0.5f * ImGui::GetContentRegionAvail().x - 4;
   ImGui::TextDisabled("deployment time");
   ImGui::SameLine(half + 8);

@@ -10,18 +10,21 @@ namespace unfurl::app {
 
 namespace {
 
-double measured(const PrecisionPoint& p, PrecisionMeasure measure) {
+double measured(const studies::PrecisionPoint& p, PrecisionMeasure measure) {
   switch (measure) {
-    case PrecisionMeasure::angle_error: return p.angle_error;
-    case PrecisionMeasure::final_error: return p.final_error;
-    case PrecisionMeasure::latch_time_error: return p.latch_time_error;
+    case PrecisionMeasure::angle_error:
+      return p.angle_error;
+    case PrecisionMeasure::final_error:
+      return p.final_error;
+    case PrecisionMeasure::latch_time_error:
+      return p.latch_time_error;
   }
-  return kNotMeasured;
+  return studies::kNotMeasured;
 }
 
 }  // namespace
 
-render::PlotSpec work_precision_plot(const WorkPrecision& report, PrecisionMeasure measure) {
+render::PlotSpec work_precision_plot(const studies::WorkPrecision& report, PrecisionMeasure measure) {
   render::PlotSpec spec;
   spec.log_x = spec.log_y = true;
   spec.x_label = "wall time, s (median)";
@@ -39,13 +42,13 @@ render::PlotSpec work_precision_plot(const WorkPrecision& report, PrecisionMeasu
       spec.y_label = "max |t_latch - t_ref|, s";
       break;
   }
-  const auto& kinds = all_integrators();
+  const auto& kinds = sim::all_integrators();
   for (std::size_t k = 0; k < kinds.size(); ++k) {
     render::Series s;
-    s.label = integrator_name(kinds[k]);
+    s.label = sim::integrator_name(kinds[k]);
     s.color = render::palette(static_cast<int>(k));
     s.markers = true;
-    for (const PrecisionPoint& p : report.points) {
+    for (const studies::PrecisionPoint& p : report.points) {
       const double y = measured(p, measure);
       if (p.integrator != kinds[k] || !std::isfinite(y)) continue;
       // An exact match (0) sits at the bottom of a log axis, not off it.

@@ -17,7 +17,7 @@ enum class PrecisionMeasure { angle_error, final_error, latch_time_error };
 
 // `measure` against the median wall time, one curve per integrator (the
 // settings that finished and measured something).
-render::PlotSpec work_precision_plot(const WorkPrecision& report, PrecisionMeasure measure);
+render::PlotSpec work_precision_plot(const studies::WorkPrecision& report, PrecisionMeasure measure);
 
 // Measured points as markered curves, one per label, in the palette's order.
 std::vector<render::Series> marked_series(std::map<std::string, render::Series> curves);

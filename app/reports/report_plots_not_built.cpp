@@ -20,7 +20,8 @@ std::vector<std::string> no_plots() {
 
 }  // namespace
 
-std::vector<std::string> write_work_precision_plots(const Scene&, const WorkPrecision&, const std::string&) {
+std::vector<std::string> write_work_precision_plots(const sim::Scene&, const studies::WorkPrecision&,
+                                                    const std::string&) {
   return no_plots();
 }
 std::vector<std::string> write_scaling_plots(const ScalingReport&, const std::string&) { return no_plots(); }

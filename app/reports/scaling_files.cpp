@@ -13,19 +13,19 @@ namespace unfurl::app {
 void write_scaling_csv(const ScalingReport& report, const std::string& dir) {
   io::OutputFile rhs(dir + "/rhs_scaling.csv");
   rhs.stream() << "family,variant,size,bodies,loop_components,states,seconds_per_call,ns_per_body\n";
-  for (const RhsTiming& t : report.rhs)
+  for (const studies::RhsTiming& t : report.rhs)
     rhs.stream() << t.scene.family << ',' << t.scene.variant << ',' << t.scene.size << ',' << t.bodies << ','
-                 << t.loop_components << ',' << t.states << ',' << format_number(t.seconds_per_call) << ','
-                 << format_number(t.ns_per_body) << '\n';
+                 << t.loop_components << ',' << t.states << ',' << sim::format_number(t.seconds_per_call) << ','
+                 << sim::format_number(t.ns_per_body) << '\n';
   rhs.commit();
   io::OutputFile runs(dir + "/run_scaling.csv");
   runs.stream() << "family,size,bodies,states,method,status,t_reached,wall_time_s,steps,rhs_calls,jacobians,"
                    "linear_iterations,max_closure_gap\n";
-  for (const RunTiming& t : report.runs)
+  for (const studies::RunTiming& t : report.runs)
     runs.stream() << t.scene.family << ',' << t.scene.size << ',' << t.bodies << ',' << t.states << ",\"" << t.method
-                  << "\"," << run_status_name(t.status) << ',' << format_number(t.t_reached) << ','
-                  << format_number(t.wall_time_s) << ',' << t.steps << ',' << t.rhs_calls << ',' << t.jacobians << ','
-                  << t.linear_iterations << ',' << format_number(t.max_closure_gap) << '\n';
+                  << "\"," << sim::run_status_name(t.status) << ',' << sim::format_number(t.t_reached) << ','
+                  << sim::format_number(t.wall_time_s) << ',' << t.steps << ',' << t.rhs_calls << ',' << t.jacobians
+                  << ',' << t.linear_iterations << ',' << sim::format_number(t.max_closure_gap) << '\n';
   runs.commit();
 }
 
@@ -44,10 +44,12 @@ void write_scaling_markdown(const ScalingReport& report, const std::vector<std::
          "Cholesky O(m^3)).\n\n";
   for (const std::string& p : pictures)
     if (p == "rhs_per_body.png") out << "![" << p << "](" << p << ")\n\n";
-  out << "| mechanism | size | bodies | loop components | states | time per call | per body |\n|---|---|---|---|---|---|---|\n";
-  for (const RhsTiming& t : report.rhs) {
-    std::snprintf(buf, sizeof buf, "| %s | %d | %d | %d | %d | %.3g us | %.0f ns |\n", family_label(t.scene).c_str(),
-                  t.scene.size, t.bodies, t.loop_components, t.states, 1e6 * t.seconds_per_call, t.ns_per_body);
+  out << "| mechanism | size | bodies | loop components | states | time per call | per body "
+         "|\n|---|---|---|---|---|---|---|\n";
+  for (const studies::RhsTiming& t : report.rhs) {
+    std::snprintf(buf, sizeof buf, "| %s | %d | %d | %d | %d | %.3g us | %.0f ns |\n",
+                  studies::family_label(t.scene).c_str(), t.scene.size, t.bodies, t.loop_components, t.states,
+                  1e6 * t.seconds_per_call, t.ns_per_body);
     out << buf;
   }
   std::snprintf(buf, sizeof buf, "%g", report.run_t_end);
@@ -61,8 +63,8 @@ void write_scaling_markdown(const ScalingReport& report, const std::vector<std::
     if (p == "run_wall_time.png") out << "![" << p << "](" << p << ")\n\n";
   out << "| mechanism | bodies | states | method | result | wall time, s | steps | RHS calls | Jacobians | GMRES "
          "iterations | max closure, m |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const RunTiming& t : report.runs) {
-    const std::string result = t.status == RunStatus::finished ? "finished" : t.failure;
+  for (const studies::RunTiming& t : report.runs) {
+    const std::string result = t.status == sim::RunStatus::finished ? "finished" : t.failure;
     std::snprintf(buf, sizeof buf, "| %.3g | %ld | %ld | %ld | %ld | %.2e |\n", t.wall_time_s, t.steps, t.rhs_calls,
                   t.jacobians, t.linear_iterations, t.max_closure_gap);
     out << "| " << t.scene.family << ' ' << t.scene.size << " | " << t.bodies << " | " << t.states << " | " << t.method

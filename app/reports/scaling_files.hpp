@@ -10,8 +10,8 @@
 namespace unfurl::app {
 
 struct ScalingReport {
-  std::vector<RhsTiming> rhs;
-  std::vector<RunTiming> runs;
+  std::vector<studies::RhsTiming> rhs;
+  std::vector<studies::RunTiming> runs;
   double run_t_end = 1, budget_s = 0;
   std::string command;
 };

@@ -16,8 +16,8 @@ render::PlotSpec rhs_plot(const ScalingReport& report) {
   spec.x_label = "bodies";
   spec.log_x = spec.log_y = true;
   std::map<std::string, render::Series> curves;
-  for (const RhsTiming& t : report.rhs) {
-    render::Series& s = curves[family_label(t.scene)];
+  for (const studies::RhsTiming& t : report.rhs) {
+    render::Series& s = curves[studies::family_label(t.scene)];
     s.x.push_back(t.bodies);
     s.y.push_back(t.ns_per_body);
   }
@@ -34,8 +34,8 @@ render::PlotSpec run_plot(const ScalingReport& report) {
   spec.x_label = "bodies";
   spec.log_x = spec.log_y = true;
   std::map<std::string, render::Series> curves;
-  for (const RunTiming& t : report.runs) {
-    if (t.status != RunStatus::finished) continue;
+  for (const studies::RunTiming& t : report.runs) {
+    if (t.status != sim::RunStatus::finished) continue;
     render::Series& s = curves[t.scene.family + ", " + t.method];
     s.x.push_back(t.bodies);
     s.y.push_back(t.wall_time_s);

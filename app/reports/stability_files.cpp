@@ -25,13 +25,15 @@ std::string fixed(double x, const char* format) {
   return buf;
 }
 
-std::string outcome(const StabilityResult& r) {
-  std::string s = r.status == RunStatus::finished ? "finished" : r.failure;
-  if (r.status == RunStatus::failed) s = "failed: " + s;
+std::string outcome(const studies::StabilityResult& r) {
+  std::string s = r.status == sim::RunStatus::finished ? "finished" : r.failure;
+  if (r.status == sim::RunStatus::failed) s = "failed: " + s;
   s = io::table_cell(s);
   if (r.spec.probe) return s;
-  if (!r.spec.expected_check.empty()) s += as_expected(r) ? " (expected)" : " (**expected the " + r.spec.expected_check + " check to fail**)";
-  else if (!as_expected(r)) s += " (**expected to finish**)";
+  if (!r.spec.expected_check.empty())
+    s += studies::as_expected(r) ? " (expected)" : " (**expected the " + r.spec.expected_check + " check to fail**)";
+  else if (!studies::as_expected(r))
+    s += " (**expected to finish**)";
   return s;
 }
 
@@ -43,13 +45,14 @@ void write_stability_csv(const StabilityReport& report, const std::string& path)
   out << "group,case,scene,status,as_expected,failed_check,t_reached,wall_time_s,steps,rhs_calls,min_step,bodies,"
          "loop_components,energy_initial,energy_final,energy_drift,max_closure_gap,max_closure_angle,"
          "latches_engaged,latches_total\n";
-  for (const StabilityResult& r : report.results)
-    out << r.spec.group << ',' << '"' << r.spec.label << '"' << ',' << r.spec.scene << ',' << run_status_name(r.status)
-        << ',' << (as_expected(r) ? "yes" : "no") << ',' << r.failed_check << ',' << format_number(r.t_reached) << ','
-        << format_number(r.wall_time_s) << ',' << r.steps << ',' << r.rhs_calls << ',' << format_number(r.min_step)
-        << ',' << r.bodies << ',' << r.loop_components << ',' << format_number(r.energy_initial) << ','
-        << format_number(r.energy_final) << ',' << format_number(r.energy_drift) << ','
-        << format_number(r.max_closure_gap) << ',' << format_number(r.max_closure_angle) << ',' << r.latches_engaged << ',' << r.latches_total << '\n';
+  for (const studies::StabilityResult& r : report.results)
+    out << r.spec.group << ',' << '"' << r.spec.label << '"' << ',' << r.spec.scene << ','
+        << sim::run_status_name(r.status) << ',' << (studies::as_expected(r) ? "yes" : "no") << ',' << r.failed_check
+        << ',' << sim::format_number(r.t_reached) << ',' << sim::format_number(r.wall_time_s) << ',' << r.steps << ','
+        << r.rhs_calls << ',' << sim::format_number(r.min_step) << ',' << r.bodies << ',' << r.loop_components << ','
+        << sim::format_number(r.energy_initial) << ',' << sim::format_number(r.energy_final) << ','
+        << sim::format_number(r.energy_drift) << ',' << sim::format_number(r.max_closure_gap) << ','
+        << sim::format_number(r.max_closure_angle) << ',' << r.latches_engaged << ',' << r.latches_total << '\n';
   file.commit();
 }
 
@@ -58,7 +61,7 @@ void write_stability_markdown(const StabilityReport& report, const std::vector<s
   io::OutputFile file(path);
   std::ostream& out = file.stream();
   int expected = 0;
-  for (const StabilityResult& r : report.results) expected += as_expected(r) ? 1 : 0;
+  for (const studies::StabilityResult& r : report.results) expected += studies::as_expected(r) ? 1 : 0;
   out << "# Stability: stiff and extreme cases\n\n";
   out << "Made by `" << report.command << "`. Each case is a scene pushed to an extreme and run to its end or to a "
       << "clear failure (which check, at what time and step); every run has a budget of " << report.budget_s
@@ -66,11 +69,12 @@ void write_stability_markdown(const StabilityReport& report, const std::vector<s
       << " cases ended as expected. The command under each table reproduces a case.\n\n";
 
   // The largest latch stiffness per integrator.
-  std::map<std::string, std::pair<const StabilityResult*, const StabilityResult*>> limits;  // last ok, first failure
-  for (const StabilityResult& r : report.results) {
+  std::map<std::string, std::pair<const studies::StabilityResult*, const studies::StabilityResult*>>
+      limits;  // last ok, first failure
+  for (const studies::StabilityResult& r : report.results) {
     if (r.spec.group != "latch stiffness") continue;
     auto& l = limits[r.spec.label.substr(r.spec.label.find(", ") + 2)];
-    const bool handled = r.status == RunStatus::finished && !r.energy_rose;
+    const bool handled = r.status == sim::RunStatus::finished && !r.energy_rose;
     if (handled && !l.second) l.first = &r;
     if (!handled && !l.second) l.second = &r;
   }
@@ -81,21 +85,23 @@ void write_stability_markdown(const StabilityReport& report, const std::vector<s
            "energy does not rise).\n\n"
         << "| integrator | largest k_L handled | its wall time, s | beyond it |\n|---|---|---|---|\n";
     for (const auto& [name, l] : limits)
-      out << "| " << name << " | " << (l.first ? l.first->spec.label.substr(6, l.first->spec.label.find(',') - 6) : "none")
-          << " | " << (l.first ? fixed(l.first->wall_time_s, "%.3g") : "-") << " | "
+      out << "| " << name << " | "
+          << (l.first ? l.first->spec.label.substr(6, l.first->spec.label.find(',') - 6) : "none") << " | "
+          << (l.first ? fixed(l.first->wall_time_s, "%.3g") : "-") << " | "
           << (l.second ? l.second->spec.label.substr(0, l.second->spec.label.find(',')) + ": " +
-                             io::table_cell(l.second->status == RunStatus::finished ? l.second->notes.back() : l.second->failure)
+                             io::table_cell(l.second->status == sim::RunStatus::finished ? l.second->notes.back()
+                                                                                         : l.second->failure)
                        : "finished up to 1e9")
           << " |\n";
     out << "\n";
   }
   if (report.has_gains) {
-    const GainComparison& g = report.gains;
+    const studies::GainComparison& g = report.gains;
     out << "## The regulator's tuning on the pantograph\n\n"
         << "The paper's diagonal gains (16), from the diagonal of W at t = 0, against the full-matrix gains from the "
            "current W. The paper's run is let go past the closure check (up to loops open by 1e3) to show where it "
            "goes: "
-        << (g.paper_status == RunStatus::finished ? "it ran to the end" : g.paper_failure) << ", with "
+        << (g.paper_status == sim::RunStatus::finished ? "it ran to the end" : g.paper_failure) << ", with "
         << g.paper_latches << " of 8 latches (full gains: " << g.full_latches
         << "). With diagonal gains a residual mode along an eigenvector of K = W diag(W)^-1 is stable only if its "
            "eigenvalue a exceeds the Routh bound "
@@ -107,7 +113,7 @@ void write_stability_markdown(const StabilityReport& report, const std::vector<s
       if (p.rfind("gains_", 0) == 0) out << "![" << p << "](" << p << ")\n\n";
   }
   std::string group;
-  for (const StabilityResult& r : report.results) {
+  for (const studies::StabilityResult& r : report.results) {
     if (r.spec.group != group) {
       group = r.spec.group;
       out << "## " << group << "\n\n";
@@ -122,14 +128,14 @@ void write_stability_markdown(const StabilityReport& report, const std::vector<s
                "the modes W loses near the branch points, times v_max^2, makes BDF's Newton iterations fail step "
                "after step (delta = 1e-4 would pass it in 8 s, at the cost above): that case is a probe.\n\n";
       for (const std::string& p : pictures)
-        if ((group == "latch stiffness" && p == "latch_stiffness.png") || (group == "long run" && p == "long_run.png") ||
-            (group == "large array" && p == "large_arrays.png"))
+        if ((group == "latch stiffness" && p == "latch_stiffness.png") ||
+            (group == "long run" && p == "long_run.png") || (group == "large array" && p == "large_arrays.png"))
           out << "![" << p << "](" << p << ")\n\n";
       out << "| case | result | t reached, s | steps | wall time, s | min step, s | energy E0 -> E_end, J | energy "
              "drift | max closure, m / rad | latches |\n|---|---|---|---|---|---|---|---|---|---|\n";
     }
-    out << "| " << r.spec.label << " | " << outcome(r) << " | " << fixed(r.t_reached, "%g") << " | " << r.steps
-        << " | " << fixed(r.wall_time_s, "%.3g") << " | " << sci(r.min_step) << " | " << fixed(r.energy_initial, "%.6g")
+    out << "| " << r.spec.label << " | " << outcome(r) << " | " << fixed(r.t_reached, "%g") << " | " << r.steps << " | "
+        << fixed(r.wall_time_s, "%.3g") << " | " << sci(r.min_step) << " | " << fixed(r.energy_initial, "%.6g")
         << " -> " << fixed(r.energy_final, "%.6g") << " | " << sci(r.energy_drift) << " | "
         << (r.loop_components ? sci(r.max_closure_gap) + " / " + sci(r.max_closure_angle) : "no loops") << " | "
         << r.latches_engaged << " of " << r.latches_total << " |\n";
@@ -137,8 +143,8 @@ void write_stability_markdown(const StabilityReport& report, const std::vector<s
     const bool last_of_group = &r == &report.results.back() || (&r + 1)->spec.group != group;
     if (last_of_group) {
       out << "\nReproduce:\n\n";
-      for (const StabilityResult& x : report.results)
-        if (x.spec.group == group) out << "    " << reproduce_command(x.spec) << "\n";
+      for (const studies::StabilityResult& x : report.results)
+        if (x.spec.group == group) out << "    " << studies::reproduce_command(x.spec) << "\n";
       out << "\n";
     }
   }

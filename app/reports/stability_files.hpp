@@ -13,8 +13,8 @@
 namespace unfurl::app {
 
 struct StabilityReport {
-  std::vector<StabilityResult> results;
-  GainComparison gains;
+  std::vector<studies::StabilityResult> results;
+  studies::GainComparison gains;
   bool has_gains = false;
   double budget_s = 0;
   std::string command;

@@ -19,7 +19,7 @@ render::Series series(const std::string& label, int color, std::vector<double> x
   return s;
 }
 
-render::PlotSpec gains_residual_plot(const GainComparison& g) {
+render::PlotSpec gains_residual_plot(const studies::GainComparison& g) {
   render::PlotSpec spec;
   spec.title = "pantograph: loop gap, paper's diagonal gains (16) against full-matrix gains";
   spec.y_label = "largest geometric gap, m and rad";
@@ -32,7 +32,7 @@ render::PlotSpec gains_residual_plot(const GainComparison& g) {
   return spec;
 }
 
-render::PlotSpec gains_eigen_plot(const GainComparison& g) {
+render::PlotSpec gains_eigen_plot(const studies::GainComparison& g) {
   render::PlotSpec spec;
   spec.title = "pantograph: smallest eigenvalue a of W diag(W)^-1 along the run";
   spec.y_label = "a (the paper's tuning is stable only above the Routh bound)";
@@ -46,7 +46,7 @@ render::PlotSpec gains_eigen_plot(const GainComparison& g) {
   return spec;
 }
 
-render::PlotSpec long_run_plot(const StabilityResult& r) {
+render::PlotSpec long_run_plot(const studies::StabilityResult& r) {
   render::PlotSpec spec;
   spec.title = r.spec.label + ": energy drift and loop closure";
   spec.y_label = "|E - E0| / |E0|, closure m and rad";
@@ -54,11 +54,11 @@ render::PlotSpec long_run_plot(const StabilityResult& r) {
   spec.log_y = true;
   std::vector<double> t, drift, closure_m, closure_rad;
   const double E0 = r.trajectory.samples.front().energy.total();
-  for (const Sample& s : r.trajectory.samples) {
+  for (const sim::Sample& s : r.trajectory.samples) {
     t.push_back(s.t);
     drift.push_back(std::max(std::abs(s.energy.total() - E0) / std::abs(E0), 1e-17));
     double m = 0, rad = 0;
-    for (const ClosureError& c : s.closure) m = std::max(m, c.distance), rad = std::max(rad, c.angle);
+    for (const sim::ClosureError& c : s.closure) m = std::max(m, c.distance), rad = std::max(rad, c.angle);
     closure_m.push_back(std::max(m, 1e-17));
     closure_rad.push_back(std::max(rad, 1e-17));
   }
@@ -94,10 +94,10 @@ std::vector<std::string> write_stability_plots(const StabilityReport& report, co
     plots.emplace_back(gains_eigen_plot(report.gains), "gains_eigenvalue.png");
   }
   std::map<std::string, render::Series> stiffness, arrays;
-  for (const StabilityResult& r : report.results) {
+  for (const studies::StabilityResult& r : report.results) {
     if (r.spec.conservative && !r.trajectory.empty() && r.spec.label.find("1e4") != std::string::npos)
       plots.emplace_back(long_run_plot(r), "long_run.png");
-    if (r.status != RunStatus::finished) continue;
+    if (r.status != sim::RunStatus::finished) continue;
     if (r.spec.group == "latch stiffness") {
       auto& c = stiffness[r.spec.label.substr(r.spec.label.find(", ") + 2)];
       c.x.push_back(first_number(r.spec.label, "k_L = "));
@@ -112,7 +112,8 @@ std::vector<std::string> write_stability_plots(const StabilityReport& report, co
     plots.emplace_back(wall_time_plot("pantograph: wall time against latch stiffness", "k_L, N m/rad", stiffness),
                        "latch_stiffness.png");
   if (!arrays.empty())
-    plots.emplace_back(wall_time_plot("large arrays: wall time of the first second", "bodies", arrays), "large_arrays.png");
+    plots.emplace_back(wall_time_plot("large arrays: wall time of the first second", "bodies", arrays),
+                       "large_arrays.png");
   return write_plot_pngs(plots, dir);
 }
 

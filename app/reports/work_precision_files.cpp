@@ -11,9 +11,9 @@ namespace unfurl::app {
 
 namespace {
 
-std::string setting(const PrecisionPoint& p) {
+std::string setting(const studies::PrecisionPoint& p) {
   char buf[64];
-  if (p.integrator == IntegratorKind::rk4)
+  if (p.integrator == sim::IntegratorKind::rk4)
     std::snprintf(buf, sizeof buf, "dt %g", p.dt);
   else
     std::snprintf(buf, sizeof buf, "rtol %g", p.rtol);
@@ -33,37 +33,38 @@ std::string seconds(double s) {
   return buf;
 }
 
-std::string status_text(const PrecisionPoint& p) {
-  if (p.status == RunStatus::finished) return p.latches_missing ? std::to_string(p.latches_missing) + " latch(es) differ" : "ok";
-  return std::string(run_status_name(p.status)) + (p.failure.empty() ? "" : ": " + p.failure);
+std::string status_text(const studies::PrecisionPoint& p) {
+  if (p.status == sim::RunStatus::finished)
+    return p.latches_missing ? std::to_string(p.latches_missing) + " latch(es) differ" : "ok";
+  return std::string(sim::run_status_name(p.status)) + (p.failure.empty() ? "" : ": " + p.failure);
 }
 
 }  // namespace
 
-void write_work_precision_csv(const WorkPrecision& report, const std::string& path) {
+void write_work_precision_csv(const studies::WorkPrecision& report, const std::string& path) {
   io::OutputFile file(path);
   std::ostream& out = file.stream();
   out << "scene,integrator,rtol,atol,dt,status,runs,wall_time_s,steps,rhs_calls,jacobian_evals,linear_setups,"
          "linear_iterations,nonlinear_iterations,error_test_failures,min_step,angle_error,angle_error_whole_run,"
          "final_error,latch_time_error,latches_missing,max_loop_gap_m,failure\n";
-  for (const PrecisionPoint& p : report.points) {
+  for (const studies::PrecisionPoint& p : report.points) {
     std::string failure = p.failure;
     for (char& c : failure)
       if (c == ',' || c == '\n' || c == '"') c = ';';
-    out << report.scene << ',' << integrator_name(p.integrator) << ',' << format_number(p.rtol) << ','
-        << format_number(p.atol) << ',' << format_number(p.dt) << ',' << run_status_name(p.status) << ',' << p.runs
-        << ',' << format_number(p.wall_time_s) << ',' << p.stats.steps << ',' << p.rhs_calls << ','
+    out << report.scene << ',' << sim::integrator_name(p.integrator) << ',' << sim::format_number(p.rtol) << ','
+        << sim::format_number(p.atol) << ',' << sim::format_number(p.dt) << ',' << sim::run_status_name(p.status) << ','
+        << p.runs << ',' << sim::format_number(p.wall_time_s) << ',' << p.stats.steps << ',' << p.rhs_calls << ','
         << p.stats.jacobian_evals << ',' << p.stats.linear_setups << ',' << p.stats.linear_iterations << ','
         << p.stats.nonlinear_iterations << ',' << p.stats.error_test_failures << ','
-        << format_number(p.stats.min_step) << ',' << format_number(p.angle_error) << ','
-        << format_number(p.angle_error_whole_run) << ',' << format_number(p.final_error) << ','
-        << format_number(p.latch_time_error) << ',' << p.latches_missing << ',' << format_number(p.max_loop_gap)
-        << ',' << failure << '\n';
+        << sim::format_number(p.stats.min_step) << ',' << sim::format_number(p.angle_error) << ','
+        << sim::format_number(p.angle_error_whole_run) << ',' << sim::format_number(p.final_error) << ','
+        << sim::format_number(p.latch_time_error) << ',' << p.latches_missing << ','
+        << sim::format_number(p.max_loop_gap) << ',' << failure << '\n';
   }
   file.commit();
 }
 
-void write_work_precision_markdown(const Scene& scene, const WorkPrecision& report,
+void write_work_precision_markdown(const sim::Scene& scene, const studies::WorkPrecision& report,
                                    const std::vector<std::string>& pictures, const std::string& command,
                                    const std::string& path) {
   io::OutputFile file(path);
@@ -86,10 +87,10 @@ void write_work_precision_markdown(const Scene& scene, const WorkPrecision& repo
 
   out << "## Cheapest integrator for each accuracy\n\n";
   out << "| angle error at most | integrator | setting | wall time, s | RHS calls |\n|---|---|---|---|---|\n";
-  for (const CheapestRun& c : cheapest_by_accuracy(report)) {
+  for (const studies::CheapestRun& c : studies::cheapest_by_accuracy(report)) {
     if (!c.point) continue;
     std::snprintf(buf, sizeof buf, "%.0e", c.accuracy);
-    out << "| " << buf << " rad | " << integrator_name(c.point->integrator) << " | " << setting(*c.point) << " | "
+    out << "| " << buf << " rad | " << sim::integrator_name(c.point->integrator) << " | " << setting(*c.point) << " | "
         << seconds(c.point->wall_time_s) << " | " << c.point->rhs_calls << " |\n";
   }
   out << "\n## Every run\n\n";
@@ -99,10 +100,11 @@ void write_work_precision_markdown(const Scene& scene, const WorkPrecision& repo
   if (!scene.loops.empty()) out << " max loop gap, m |";
   out << "\n|---|---|---|---|---|---|---|---|---|---|" << (scene.latches().empty() ? "" : "---|")
       << (scene.loops.empty() ? "" : "---|") << "\n";
-  for (const PrecisionPoint& p : report.points) {
-    out << "| " << integrator_name(p.integrator) << " | " << setting(p) << " | " << io::table_cell(status_text(p)) << " | "
-        << seconds(p.wall_time_s) << " | " << p.stats.steps << " | " << p.rhs_calls << " | " << p.stats.jacobian_evals << " | "
-        << p.stats.linear_iterations << " | " << sci(p.angle_error) << " | " << sci(p.final_error) << " |";
+  for (const studies::PrecisionPoint& p : report.points) {
+    out << "| " << sim::integrator_name(p.integrator) << " | " << setting(p) << " | " << io::table_cell(status_text(p))
+        << " | " << seconds(p.wall_time_s) << " | " << p.stats.steps << " | " << p.rhs_calls << " | "
+        << p.stats.jacobian_evals << " | " << p.stats.linear_iterations << " | " << sci(p.angle_error) << " | "
+        << sci(p.final_error) << " |";
     if (!scene.latches().empty()) out << ' ' << sci(p.latch_time_error) << " |";
     if (!scene.loops.empty()) out << ' ' << sci(p.max_loop_gap) << " |";
     out << '\n';

@@ -11,13 +11,13 @@
 
 namespace unfurl::app {
 
-void write_work_precision_csv(const WorkPrecision& report, const std::string& path);
-void write_work_precision_markdown(const Scene& scene, const WorkPrecision& report,
+void write_work_precision_csv(const studies::WorkPrecision& report, const std::string& path);
+void write_work_precision_markdown(const sim::Scene& scene, const studies::WorkPrecision& report,
                                    const std::vector<std::string>& pictures, const std::string& command,
                                    const std::string& path);
 // The PNGs (angle error; with latches, latch-time and final-state error);
 // returns their file names inside dir.
-std::vector<std::string> write_work_precision_plots(const Scene& scene, const WorkPrecision& report,
+std::vector<std::string> write_work_precision_plots(const sim::Scene& scene, const studies::WorkPrecision& report,
                                                     const std::string& dir);
 
 }  // namespace unfurl::app

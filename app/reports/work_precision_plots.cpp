@@ -4,10 +4,9 @@
 
 namespace unfurl::app {
 
-std::vector<std::string> write_work_precision_plots(const Scene& scene, const WorkPrecision& report,
+std::vector<std::string> write_work_precision_plots(const sim::Scene& scene, const studies::WorkPrecision& report,
                                                     const std::string& dir) {
-  std::vector<std::pair<PrecisionMeasure, std::string>> plots{
-      {PrecisionMeasure::angle_error, "work_precision.png"}};
+  std::vector<std::pair<PrecisionMeasure, std::string>> plots{{PrecisionMeasure::angle_error, "work_precision.png"}};
   if (!scene.latches().empty()) {
     plots.emplace_back(PrecisionMeasure::latch_time_error, "work_precision_latch.png");
     plots.emplace_back(PrecisionMeasure::final_error, "work_precision_final.png");

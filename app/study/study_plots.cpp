@@ -13,9 +13,9 @@ namespace {
 
 std::vector<double> deployed_values(const io::StudyReport& report, const std::string& output) {
   std::vector<double> x;
-  for (const CaseResult& r : report.results) {
-    const double v = output_value(report.columns, r, output);
-    if (r.status == CaseStatus::deployed && r.failure.empty() && std::isfinite(v)) x.push_back(v);
+  for (const studies::CaseResult& r : report.results) {
+    const double v = studies::output_value(report.columns, r, output);
+    if (r.status == studies::CaseStatus::deployed && r.failure.empty() && std::isfinite(v)) x.push_back(v);
   }
   return x;
 }
@@ -46,7 +46,7 @@ render::PlotSpec histogram(const io::StudyReport& report, const std::string& out
   return spec;
 }
 
-render::PlotSpec scatter(const io::StudyReport& report, const Driver& d) {
+render::PlotSpec scatter(const io::StudyReport& report, const studies::Driver& d) {
   render::PlotSpec spec;
   char rho[32];
   std::snprintf(rho, sizeof rho, "%.3f", d.rho);
@@ -64,9 +64,9 @@ render::PlotSpec scatter(const io::StudyReport& report, const Driver& d) {
   nominal.color = render::palette(1);
   nominal.markers = true;
   nominal.lines = false;
-  for (const CaseResult& r : report.results) {
-    const double y = output_value(report.columns, r, d.output);
-    if (r.status != CaseStatus::deployed || !r.failure.empty() || !std::isfinite(y)) continue;
+  for (const studies::CaseResult& r : report.results) {
+    const double y = studies::output_value(report.columns, r, d.output);
+    if (r.status != studies::CaseStatus::deployed || !r.failure.empty() || !std::isfinite(y)) continue;
     render::Series& s = r.id == "nominal" ? nominal : cases;
     s.x.push_back(r.inputs[input]);
     s.y.push_back(y);
@@ -81,7 +81,7 @@ render::PlotSpec overlay(const io::StudyReport& report) {
   spec.x_label = "t, s";
   spec.y_label = "q." + report.study.overlay_joint + ", rad";
   spec.ghost_label = "other cases (red: not deployed)";
-  for (const CaseResult& r : report.results) {
+  for (const studies::CaseResult& r : report.results) {
     if (r.angle_t.empty()) continue;
     render::Series s;
     s.x = r.angle_t;
@@ -90,8 +90,8 @@ render::PlotSpec overlay(const io::StudyReport& report) {
       s.label = "nominal";
       s.color = render::palette(1);
     } else {
-      s.label = r.status == CaseStatus::deployed ? "deployed case" : "not deployed or failed";
-      s.color = r.status == CaseStatus::deployed ? render::palette(0) : render::palette(3);
+      s.label = r.status == studies::CaseStatus::deployed ? "deployed case" : "not deployed or failed";
+      s.color = r.status == studies::CaseStatus::deployed ? render::palette(0) : render::palette(3);
       s.ghost = true;
     }
     spec.series.push_back(std::move(s));
@@ -111,7 +111,8 @@ std::vector<std::string> write_study_plots(const io::StudyReport& report, const 
   if (deployed_values(report, "peak_latch_torque").size() >= 2)
     plots.emplace_back(histogram(report, "peak_latch_torque", "peak latch torque over all latches, N m"),
                        "hist_peak_latch_torque.png");
-  for (const Driver& d : report.statistics.drivers) plots.emplace_back(scatter(report, d), "scatter_" + d.output + ".png");
+  for (const studies::Driver& d : report.statistics.drivers)
+    plots.emplace_back(scatter(report, d), "scatter_" + d.output + ".png");
   plots.emplace_back(overlay(report), "overlay_angles.png");
   return write_plot_pngs(plots, dir);
 }

@@ -14,10 +14,10 @@
 
 namespace unfurl::app {
 
-StudyRun::StudyRun(const Study& study, SweepOptions options, const std::atomic<bool>& cancel)
-    : study_(study), options_(std::move(options)), cancel_(cancel), nominal_(nominal_scene(study).scene) {
-  columns_ = case_columns(study_, nominal_);
-  cases_ = study_cases(study_);
+StudyRun::StudyRun(const studies::Study& study, SweepOptions options, const std::atomic<bool>& cancel)
+    : study_(study), options_(std::move(options)), cancel_(cancel), nominal_(studies::nominal_scene(study).scene) {
+  columns_ = studies::case_columns(study_, nominal_);
+  cases_ = studies::study_cases(study_);
   results_.resize(cases_.size());
   for (std::size_t i = 0; i < cases_.size(); ++i) {
     results_[i] = io::read_case_record(columns_, options_.dir, cases_[i].id);
@@ -26,16 +26,16 @@ StudyRun::StudyRun(const Study& study, SweepOptions options, const std::atomic<b
 }
 
 std::optional<std::string> StudyRun::run_case(std::size_t i) const {
-  const StudyCase& c = cases_[i];
-  CaseResult result;
+  const studies::StudyCase& c = cases_[i];
+  studies::CaseResult result;
   try {
-    const CaseRun run = simulate_case(study_, c, &cancel_);
-    if (run.run.status == RunStatus::cancelled) return std::nullopt;
-    result = case_result(study_, nominal_, c, run);
+    const studies::CaseRun run = studies::simulate_case(study_, c, &cancel_);
+    if (run.run.status == sim::RunStatus::cancelled) return std::nullopt;
+    result = studies::case_result(study_, nominal_, c, run);
     if (options_.keep_runs) {
       const std::string dir = options_.dir + "/cases/" + c.id;
       io::make_directory(dir);
-      const RunSummary summary = summarize(run.scene, run.run);
+      const sim::RunSummary summary = sim::summarize(run.scene, run.run);
       io::write_trajectory_csv(run.scene, run.run.trajectory, dir + "/trajectory.csv");
       io::write_loads_csv(run.scene, run.run.trajectory, dir + "/loads.csv");
       io::write_events_csv(run.scene, run.run.trajectory, dir + "/events.csv");
@@ -44,11 +44,11 @@ std::optional<std::string> StudyRun::run_case(std::size_t i) const {
   } catch (const io::OutputError&) {
     throw;
   } catch (const std::exception& e) {
-    result = CaseResult{};
+    result = studies::CaseResult{};
     result.id = c.id;
     result.failure = c.failure ? c.failure->describe() : "";
     result.inputs = c.inputs;
-    result.status = CaseStatus::failed;
+    result.status = studies::CaseStatus::failed;
     result.reason = std::string("the case's scene: ") + e.what();
     result.outputs.assign(columns_.outputs.size(), std::nan(""));
   }
@@ -56,12 +56,12 @@ std::optional<std::string> StudyRun::run_case(std::size_t i) const {
 }
 
 void StudyRun::record(std::size_t i, const std::string& text) {
-  std::optional<CaseResult> r = io::parse_case_record(columns_, text);
+  std::optional<studies::CaseResult> r = io::parse_case_record(columns_, text);
   if (!r) throw std::runtime_error("case " + cases_[i].id + ": a record that does not parse");
   io::write_case_record(options_.dir, cases_[i].id, text);
   const std::lock_guard<std::mutex> lock(mutex_);
   ++done_now_;
-  if (r->status == CaseStatus::failed) ++failed_now_;
+  if (r->status == studies::CaseStatus::failed) ++failed_now_;
   results_[i] = std::move(r);
   show_progress();
 }

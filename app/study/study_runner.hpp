@@ -18,19 +18,19 @@ namespace unfurl::app {
 
 struct SweepOptions {
   std::string dir;
-  int jobs = 1;         // threads per process
+  int jobs = 1;  // threads per process
   bool keep_runs = false;
   bool quiet = false;
 };
 
 class StudyRun {
  public:
-  StudyRun(const Study& study, SweepOptions options, const std::atomic<bool>& cancel);
+  StudyRun(const studies::Study& study, SweepOptions options, const std::atomic<bool>& cancel);
 
-  const Study& study() const { return study_; }
-  const Scene& nominal() const { return nominal_; }
-  const CaseColumns& columns() const { return columns_; }
-  const std::vector<StudyCase>& cases() const { return cases_; }
+  const studies::Study& study() const { return study_; }
+  const sim::Scene& nominal() const { return nominal_; }
+  const studies::CaseColumns& columns() const { return columns_; }
+  const std::vector<studies::StudyCase>& cases() const { return cases_; }
   const SweepOptions& options() const { return options_; }
   const std::atomic<bool>& cancel() const { return cancel_; }
 
@@ -44,20 +44,20 @@ class StudyRun {
   void record(std::size_t i, const std::string& record);
 
   // Every case's result, in case order (nullopt: not finished).
-  const std::vector<std::optional<CaseResult>>& results() const { return results_; }
+  const std::vector<std::optional<studies::CaseResult>>& results() const { return results_; }
   void finish_progress();
 
  private:
   void show_progress();
 
-  const Study& study_;
+  const studies::Study& study_;
   SweepOptions options_;
   const std::atomic<bool>& cancel_;
-  Scene nominal_;
-  CaseColumns columns_;
-  std::vector<StudyCase> cases_;
+  sim::Scene nominal_;
+  studies::CaseColumns columns_;
+  std::vector<studies::StudyCase> cases_;
   std::vector<std::size_t> pending_;
-  std::vector<std::optional<CaseResult>> results_;
+  std::vector<std::optional<studies::CaseResult>> results_;
   mutable std::mutex mutex_;
   long done_now_ = 0, failed_now_ = 0;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now(), shown_{};

@@ -13,8 +13,7 @@ bool contains(const YAML::Node& haystack, const YAML::Node& needle) {
   if (haystack.is(needle)) return true;
   if (haystack.IsSequence() || haystack.IsMap())
     for (const auto& item : haystack)
-      if (haystack.IsMap() ? contains(item.first, needle) || contains(item.second, needle)
-                           : contains(item, needle))
+      if (haystack.IsMap() ? contains(item.first, needle) || contains(item.second, needle) : contains(item, needle))
         return true;
   return false;
 }
@@ -57,9 +56,7 @@ void check_single_document(const std::string& text, const std::string& source) {
 
 }  // namespace
 
-std::string index_field(const std::string& list, std::size_t i) {
-  return list + "[" + std::to_string(i) + "]";
-}
+std::string index_field(const std::string& list, std::size_t i) { return list + "[" + std::to_string(i) + "]"; }
 
 std::string YamlFields::where(const YAML::Node& at) const {
   for (const auto& [node, text] : overrides_)
@@ -133,8 +130,7 @@ long YamlFields::count(const YAML::Node& node, const std::string& field, long lo
   return static_cast<long>(x);
 }
 
-double YamlFields::number_or(const YAML::Node& map, const char* key, double fallback,
-                              const std::string& field) const {
+double YamlFields::number_or(const YAML::Node& map, const char* key, double fallback, const std::string& field) const {
   const YAML::Node node = map[key];
   return node ? number(node, field + "." + key) : fallback;
 }
@@ -179,7 +175,7 @@ Eigen::Vector3d YamlFields::vec3(const YAML::Node& node, const std::string& fiel
 }
 
 Eigen::Vector3d YamlFields::vec3_or(const YAML::Node& map, const char* key, const Eigen::Vector3d& fallback,
-                          const std::string& field) const {
+                                    const std::string& field) const {
   const YAML::Node node = map[key];
   return node ? vec3(node, field + "." + key) : fallback;
 }

@@ -12,11 +12,21 @@ void JsonWriter::quoted(const std::string& s) {
   out_ << '"';
   for (const char c : s) {
     switch (c) {
-      case '"': out_ << "\\\""; break;
-      case '\\': out_ << "\\\\"; break;
-      case '\n': out_ << "\\n"; break;
-      case '\t': out_ << "\\t"; break;
-      case '\r': out_ << "\\r"; break;
+      case '"':
+        out_ << "\\\"";
+        break;
+      case '\\':
+        out_ << "\\\\";
+        break;
+      case '\n':
+        out_ << "\\n";
+        break;
+      case '\t':
+        out_ << "\\t";
+        break;
+      case '\r':
+        out_ << "\\r";
+        break;
       default:
         if (static_cast<unsigned char>(c) < 0x20) {
           char buf[8];
@@ -70,7 +80,7 @@ JsonWriter& JsonWriter::end_array() {
 JsonWriter& JsonWriter::value(const std::string& k, double x) {
   key(k);
   if (std::isfinite(x))
-    out_ << format_number(x);
+    out_ << sim::format_number(x);
   else
     out_ << "null";
   return *this;

@@ -16,9 +16,9 @@ namespace unfurl::io {
 
 namespace {
 
-std::string num(double x) { return format_number(x); }
+std::string num(double x) { return sim::format_number(x); }
 
-std::string vec(const Vec3& v) { return num(v.x()) + " " + num(v.y()) + " " + num(v.z()); }
+std::string vec(const sim::Vec3& v) { return num(v.x()) + " " + num(v.y()) + " " + num(v.z()); }
 
 // Text safe inside an XML comment.
 std::string comment_text(std::string s) {
@@ -28,18 +28,20 @@ std::string comment_text(std::string s) {
 
 struct MassProperties {
   double mass = 0;
-  Vec3 com = Vec3::Zero();
-  Mat3 inertia = Mat3::Zero();  // about com, body axes
+  sim::Vec3 com = sim::Vec3::Zero();
+  sim::Mat3 inertia = sim::Mat3::Zero();  // about com, body axes
 };
 
 // A body's mass properties with another body's added, that one placed in
 // this one's frame by (R, p): x_this = R x_other + p.
-MassProperties merged(const Body& a, const Body& b, const Mat3& R, const Vec3& p) {
+MassProperties merged(const sim::Body& a, const sim::Body& b, const sim::Mat3& R, const sim::Vec3& p) {
   MassProperties out;
   out.mass = a.mass + b.mass;
-  const Vec3 cb = R * b.com + p;
+  const sim::Vec3 cb = R * b.com + p;
   out.com = (a.mass * a.com + b.mass * cb) / out.mass;
-  auto shifted = [](double m, const Vec3& d) { return m * (d.squaredNorm() * Mat3::Identity() - d * d.transpose()); };
+  auto shifted = [](double m, const sim::Vec3& d) {
+    return m * (d.squaredNorm() * sim::Mat3::Identity() - d * d.transpose());
+  };
   out.inertia = a.inertia_com + shifted(a.mass, a.com - out.com) + R * b.inertia_com * R.transpose() +
                 shifted(b.mass, cb - out.com);
   // The round-off of bringing a coinciding image over, not physics.
@@ -51,23 +53,23 @@ MassProperties merged(const Body& a, const Body& b, const Mat3& R, const Vec3& p
 
 class Writer {
  public:
-  explicit Writer(const Scene& scene) : scene_(scene), model_(scene.model) {
-    body_poses(model_, scene.q0.data(), poses_);
-    for (const Loop& loop : scene.loops) {
+  explicit Writer(const sim::Scene& scene) : scene_(scene), model_(scene.model) {
+    sim::body_poses(model_, scene.q0.data(), poses_);
+    for (const sim::Loop& loop : scene.loops) {
       image_of_[loop.image] = &loop;
       body_of_[loop.body] = &loop;
-      if (model_.joints[loop.image].type != JointType::revolute)
+      if (model_.joints[loop.image].type != sim::JointType::revolute)
         throw std::runtime_error("cannot export to MJCF: loop '" + loop.name + "' is closed at a " +
-                                 joint_type_name(model_.joints[loop.image].type) +
+                                 sim::joint_type_name(model_.joints[loop.image].type) +
                                  " joint, and a point constraint stands only for a hinge");
       for (int i = 0; i < model_.size(); ++i)
         if (model_.parent[i] == loop.image)
           throw std::runtime_error("cannot export to MJCF: the image '" + model_.bodies[loop.image].name +
                                    "' of loop '" + loop.name + "' carries bodies of its own");
     }
-    Dynamics dynamics(scene);
+    sim::Dynamics dynamics(scene);
     const std::vector<double> y = dynamics.initial_state();
-    Observation o;
+    sim::Observation o;
     dynamics.observe(0, y.data(), o);
     dq0_ = o.q_dot;
     rates0_ = o.w;
@@ -77,9 +79,9 @@ class Writer {
     MjcfModel out;
     header();
     out_ << "  <worldbody>\n";
-    sites(kBase, "    ");
+    sites(sim::kBase, "    ");
     for (int i = 0; i < model_.size(); ++i)
-      if (model_.parent[i] == kBase && !image_of_.count(i)) body(i, 2);
+      if (model_.parent[i] == sim::kBase && !image_of_.count(i)) body(i, 2);
     out_ << "  </worldbody>\n";
     tendons();
     equalities();
@@ -97,8 +99,9 @@ class Writer {
 
  private:
   void header() {
-    const Model& m = model_;
-    out_ << "<!-- " << comment_text(scene_.name) << ": exported by `unfurl export mjcf` from " << comment_text(scene_.source)
+    const sim::Model& m = model_;
+    out_ << "<!-- " << comment_text(scene_.name) << ": exported by `unfurl export mjcf` from "
+         << comment_text(scene_.source)
          << ".\n     Bodies sit at the scene's initial coordinates and each joint's ref is that\n"
          << "     coordinate, so MuJoCo's qpos is unfurl's q. Closed loops are merged back into\n"
          << "     one body and closed by equality/connect at the split pivot. -->\n";
@@ -107,10 +110,10 @@ class Writer {
     out_ << "  <option timestep=\"1e-4\" integrator=\"RK4\" gravity=\"" << vec(scene_.gravity()) << "\">\n";
     out_ << "    <flag contact=\"disable\" energy=\"enable\"/>\n  </option>\n";
     if (!m.base_velocity.isZero(0))
-      unsupported("the base moves (velocity " + vec(m.base_velocity.head<3>()) + ", " +
-                  vec(m.base_velocity.tail<3>()) + "): the model's base is fixed");
+      unsupported("the base moves (velocity " + vec(m.base_velocity.head<3>()) + ", " + vec(m.base_velocity.tail<3>()) +
+                  "): the model's base is fixed");
     for (const auto& e : scene_.elements) {
-      if (const auto* load = dynamic_cast<const AppliedForce*>(e.get()))
+      if (const auto* load = dynamic_cast<const sim::AppliedForce*>(e.get()))
         unsupported("a constant load on '" + m.bodies[load->body].name + "' (MJCF has no constant body force)");
       else if (!exported(*e))
         unsupported("a " + e->kind() + " (" + e->list() + "): MJCF has no form for it here");
@@ -118,24 +121,24 @@ class Writer {
   }
 
   void body(int i, int depth) {
-    const Model& m = model_;
+    const sim::Model& m = model_;
     if (depth - 1 > deepest_) deepest_ = depth - 1, deepest_body_ = m.bodies[i].name;
     const std::string pad(2 * depth, ' ');
-    const Joint& joint = m.joints[i];
+    const sim::Joint& joint = m.joints[i];
     const int c = m.first_position[i].value;
     // A ball's or planar joint's body sits at the joint's neutral position,
     // so MuJoCo's qpos for it is unfurl's q; a hinge's or slide's at q0 with
     // ref = q0; a free body where q0 puts it (its qpos is its pose).
     std::vector<double> neutral(std::max(1, joint.positions()));
     joint.neutral_positions(neutral.data());
-    const bool at_q0 = joint.is_scalar() || joint.type == JointType::free;
-    const Placement X = joint.placement(c >= 0 && at_q0 ? &scene_.q0[c] : neutral.data());
+    const bool at_q0 = joint.is_scalar() || joint.type == sim::JointType::free;
+    const sim::Placement X = joint.placement(c >= 0 && at_q0 ? &scene_.q0[c] : neutral.data());
     const Eigen::Quaterniond quat(X.G.transpose());
     out_ << pad << "<body name=\"" << m.bodies[i].name << "\" pos=\"" << vec(X.rho) << "\" quat=\"" << num(quat.w())
          << " " << num(quat.x()) << " " << num(quat.y()) << " " << num(quat.z()) << "\">\n";
     inertial(i, pad + "  ");
     sites(i, pad + "  ");
-    if (joint.type != JointType::fixed) {
+    if (joint.type != sim::JointType::fixed) {
       this->joint(i, pad + "  ");
       written_.push_back(i);
     }
@@ -145,55 +148,55 @@ class Writer {
   }
 
   void inertial(int i, const std::string& pad) {
-    const Body& b = model_.bodies[i];
+    const sim::Body& b = model_.bodies[i];
     MassProperties mp{b.mass, b.com, b.inertia_com};
     if (const auto loop = body_of_.find(i); loop != body_of_.end()) {
       // The image, seen from the split body at the initial state.
-      const Pose &P = poses_[i], &Q = poses_[loop->second->image];
+      const sim::Pose &P = poses_[i], &Q = poses_[loop->second->image];
       mp = merged(b, model_.bodies[loop->second->image], P.rotation * Q.rotation.transpose(),
                   P.rotation * (Q.position - P.position));
       out_ << pad << "<!-- with its image '" << model_.bodies[loop->second->image].name << "' merged back -->\n";
     }
-    const Mat3& J = mp.inertia;
+    const sim::Mat3& J = mp.inertia;
     out_ << pad << "<inertial pos=\"" << vec(mp.com) << "\" mass=\"" << num(mp.mass) << "\" fullinertia=\""
          << num(J(0, 0)) << " " << num(J(1, 1)) << " " << num(J(2, 2)) << " " << num(J(0, 1)) << " " << num(J(0, 2))
          << " " << num(J(1, 2)) << "\"/>\n";
   }
 
   void joint(int i, const std::string& pad) {
-    const Joint& j = model_.joints[i];
+    const sim::Joint& j = model_.joints[i];
     const int c = model_.first_position[i].value;
     // Springs on one joint add up to one: stiffness sum k, rest at the
     // stiffness-weighted free position (the same torque for every q).
     double k = 0, k_free = 0, damping = 0;
-    for (const JointSpring* s : scene_.elements_of<JointSpring>())
+    for (const sim::JointSpring* s : scene_.elements_of<sim::JointSpring>())
       if (s->joint == i) k += s->stiffness, k_free += s->stiffness * s->free_position, damping += s->damping;
-    for (const JointDamper* d : scene_.elements_of<JointDamper>())
+    for (const sim::JointDamper* d : scene_.elements_of<sim::JointDamper>())
       if (d->joint == i) damping += d->damping;
     // Coulomb friction becomes MuJoCo's frictionloss, a dry-friction
     // constraint that sticks exactly where ours (tanh, joint_friction.hpp)
     // creeps.
-    for (const JointSpring* s : scene_.elements_of<JointSpring>())
+    for (const sim::JointSpring* s : scene_.elements_of<sim::JointSpring>())
       if (s->joint == i && s->curve)
         unsupported("the measured spring curve of '" + j.name + "' (MJCF joint springs are linear)");
     double frictionloss = 0;
-    for (const JointFriction* f : scene_.elements_of<JointFriction>())
+    for (const sim::JointFriction* f : scene_.elements_of<sim::JointFriction>())
       if (f->joint == i) frictionloss += f->coulomb, damping += f->viscous;
     switch (j.type) {
-      case JointType::free:
+      case sim::JointType::free:
         out_ << pad << "<freejoint name=\"" << j.name << "\"/>\n";
         return;
-      case JointType::spherical:
+      case sim::JointType::spherical:
         out_ << pad << "<joint name=\"" << j.name << "\" type=\"ball\" pos=\"" << vec(j.child_point) << "\"/>\n";
         return;
-      case JointType::universal:
+      case sim::JointType::universal:
         // Two hinges in one body: MuJoCo turns the second axis by the
         // first, as the cross carries it.
         for (int k = 1; k <= 2; ++k)
           out_ << pad << "<joint name=\"" << j.name << "." << k << "\" type=\"hinge\" axis=\""
                << vec(k == 1 ? j.axis : j.axis2) << "\" pos=\"" << vec(j.child_point) << "\"/>\n";
         return;
-      case JointType::planar:
+      case sim::JointType::planar:
         // Two slides along the plane's axes (in the parent's axes: they
         // come before the hinge), then the hinge about the normal.
         out_ << pad << "<joint name=\"" << j.name << ".x1\" type=\"slide\" axis=\"" << vec(j.plane_axis_1()) << "\"/>\n"
@@ -204,9 +207,10 @@ class Writer {
       default:
         break;
     }
-    out_ << pad << "<joint name=\"" << j.name << "\" type=\"" << (j.type == JointType::revolute ? "hinge" : "slide")
-         << "\" axis=\"" << vec(j.axis) << "\" pos=\"" << vec(j.type == JointType::revolute ? j.child_point : Vec3::Zero())
-         << "\" ref=\"" << num(scene_.q0[c]) << "\"";
+    out_ << pad << "<joint name=\"" << j.name << "\" type=\""
+         << (j.type == sim::JointType::revolute ? "hinge" : "slide") << "\" axis=\"" << vec(j.axis) << "\" pos=\""
+         << vec(j.type == sim::JointType::revolute ? j.child_point : sim::Vec3::Zero()) << "\" ref=\""
+         << num(scene_.q0[c]) << "\"";
     if (k > 0) out_ << " stiffness=\"" << num(k) << "\" springref=\"" << num(k_free / k) << "\"";
     if (damping > 0) out_ << " damping=\"" << num(damping) << "\"";
     if (frictionloss > 0) out_ << " frictionloss=\"" << num(frictionloss) << "\"";
@@ -215,32 +219,34 @@ class Writer {
 
   // The body a point is written on (an image is merged into its split
   // body), and the point in that body's frame.
-  std::pair<int, Vec3> written_point(int body, const Vec3& r) const {
+  std::pair<int, sim::Vec3> written_point(int body, const sim::Vec3& r) const {
     const auto loop = image_of_.find(body);
     if (loop == image_of_.end()) return {body, r};
-    const Pose &P = poses_[loop->second->body], &Q = poses_[body];
+    const sim::Pose &P = poses_[loop->second->body], &Q = poses_[body];
     return {loop->second->body, P.rotation * (Q.to_base(r) - P.position)};
   }
 
   // The ends of the point springs on body i, as sites NAME_a and NAME_b.
   void sites(int i, const std::string& pad) {
-    for (const PointSpring* s : scene_.elements_of<PointSpring>())
+    for (const sim::PointSpring* s : scene_.elements_of<sim::PointSpring>())
       for (const auto& [body, point, end] :
            {std::tuple{s->body_a, s->point_a, "_a"}, std::tuple{s->body_b, s->point_b, "_b"}}) {
-        const auto [on, r] = body == kBase ? std::pair{kBase, point} : written_point(body, point);
-        if (on == i) out_ << pad << "<site name=\"" << s->name << end << "\" pos=\"" << vec(r) << "\" size=\"0.005\"/>\n";
+        const auto [on, r] = body == sim::kBase ? std::pair{sim::kBase, point} : written_point(body, point);
+        if (on == i)
+          out_ << pad << "<site name=\"" << s->name << end << "\" pos=\"" << vec(r) << "\" size=\"0.005\"/>\n";
       }
   }
 
   // Point springs as spatial tendons between their two sites.
   void tendons() {
-    const std::vector<const PointSpring*> springs = scene_.elements_of<PointSpring>();
+    const std::vector<const sim::PointSpring*> springs = scene_.elements_of<sim::PointSpring>();
     if (springs.empty()) return;
     out_ << "  <tendon>\n";
-    for (const PointSpring* s : springs) {
+    for (const sim::PointSpring* s : springs) {
       out_ << "    <spatial name=\"" << s->name << "\" stiffness=\"" << num(s->stiffness) << "\" springlength=\""
            << num(s->rest_length) << "\" damping=\"" << num(s->damping) << "\" width=\"0.006\">\n"
-           << "      <site site=\"" << s->name << "_a\"/>\n      <site site=\"" << s->name << "_b\"/>\n    </spatial>\n";
+           << "      <site site=\"" << s->name << "_a\"/>\n      <site site=\"" << s->name
+           << "_b\"/>\n    </spatial>\n";
       if (s->tension_only)
         unsupported("cable '" + s->name + "' is tension-only; MJCF's tendon spring also pushes when slack");
     }
@@ -252,16 +258,16 @@ class Writer {
     out_ << "  <!-- The loops: each image's joint becomes a point constraint at its pivot,\n"
          << "       as stiff as MuJoCo allows: it raises the time constant to twice the\n"
          << "       timestep (refsafe); impedance 0.9999. -->\n  <equality>\n";
-    for (const Loop& loop : scene_.loops) {
-      const Joint& pivot = model_.joints[loop.image];
+    for (const sim::Loop& loop : scene_.loops) {
+      const sim::Joint& pivot = model_.joints[loop.image];
       // The pivot in the split body's frame: the image's hinge point.
-      const Pose &P = poses_[loop.body], &Q = poses_[loop.image];
-      const Vec3 anchor = P.rotation * (Q.to_base(pivot.child_point) - P.position);
+      const sim::Pose &P = poses_[loop.body], &Q = poses_[loop.image];
+      const sim::Vec3 anchor = P.rotation * (Q.to_base(pivot.child_point) - P.position);
       const int parent = model_.parent[loop.image];
       out_ << "    <connect name=\"" << loop.name << "\" body1=\"" << model_.bodies[loop.body].name << "\" body2=\""
-           << (parent == kBase ? std::string("world") : model_.bodies[parent].name) << "\" anchor=\"" << vec(anchor)
-           << "\" solref=\"1e-9 1\" solimp=\"0.9999 0.9999 0.001 0.5 2\"/>\n";
-      for (const JointElement* e : scene_.elements_of<JointElement>())
+           << (parent == sim::kBase ? std::string("world") : model_.bodies[parent].name) << "\" anchor=\""
+           << vec(anchor) << "\" solref=\"1e-9 1\" solimp=\"0.9999 0.9999 0.001 0.5 2\"/>\n";
+      for (const sim::JointElement* e : scene_.elements_of<sim::JointElement>())
         if (e->joint == loop.image)
           unsupported("a " + e->kind() + " on the loop joint '" + pivot.name + "' (it became a connect constraint)");
     }
@@ -269,19 +275,19 @@ class Writer {
   }
 
   void latches() {
-    const std::vector<const Latch*> latches = scene_.latches();
+    const std::vector<const sim::Latch*> latches = scene_.latches();
     if (latches.empty()) return;
     out_ << "  <!-- Not in MJCF: latches. Joint JOINT latches the first time it reaches its\n"
          << "       position and from then on feels -stiffness (q - position) - damping dq.\n"
          << "       latch:JOINT = position, stiffness, damping, side (sign of q0 - position;\n"
          << "       0: engaged from the start); apply them through mjcb_passive. -->\n  <custom>\n";
-    for (const Latch* l : latches) {
+    for (const sim::Latch* l : latches) {
       const double offset = scene_.q0[model_.position_of(l->joint).value] - l->position;
       const double side = offset > 0 ? 1 : offset < 0 ? -1 : 0;
       out_ << "    <numeric name=\"latch:" << model_.joints[l->joint].name << "\" data=\"" << num(l->position) << " "
            << num(l->stiffness) << " " << num(l->damping) << " " << num(side) << "\"/>\n";
-      unsupported("the latch of '" + model_.joints[l->joint].name + "' (kept as custom numeric latch:" +
-                  model_.joints[l->joint].name + ")");
+      unsupported("the latch of '" + model_.joints[l->joint].name +
+                  "' (kept as custom numeric latch:" + model_.joints[l->joint].name + ")");
       if (l->free_play > 0) unsupported("the free play of the latch of '" + model_.joints[l->joint].name + "'");
     }
     out_ << "  </custom>\n";
@@ -295,27 +301,28 @@ class Writer {
     std::string qpos, qvel;
     const auto add = [](std::string& list, double x) { list += (list.empty() ? "" : " ") + num(x); };
     for (int i : written_) {
-      const Joint& j = model_.joints[i];
+      const sim::Joint& j = model_.joints[i];
       const int c = model_.first_position[i].value, v = model_.first_velocity[i].value;
       for (int k = 0; k < j.positions(); ++k) add(qpos, scene_.q0[c + k]);
-      if (j.type == JointType::free) {
+      if (j.type == sim::JointType::free) {
         for (int k = 0; k < 3; ++k) add(qvel, dq0_[c + k]);
         for (int k = 3; k < 6; ++k) add(qvel, rates0_[v + k]);
-      } else if (j.type == JointType::spherical) {
+      } else if (j.type == sim::JointType::spherical) {
         for (int k = 0; k < 3; ++k) add(qvel, rates0_[v + k]);
       } else {
         for (int k = 0; k < j.positions(); ++k) add(qvel, dq0_[c + k]);
       }
     }
-    out_ << "  <keyframe>\n    <key name=\"initial\" qpos=\"" << qpos << "\" qvel=\"" << qvel << "\"/>\n  </keyframe>\n";
+    out_ << "  <keyframe>\n    <key name=\"initial\" qpos=\"" << qpos << "\" qvel=\"" << qvel
+         << "\"/>\n  </keyframe>\n";
   }
 
   // Whether the writer has a form (or a note) for an element of this kind.
-  static bool exported(const ForceElement& e) {
-    return dynamic_cast<const JointSpring*>(&e) || dynamic_cast<const JointDamper*>(&e) ||
-           dynamic_cast<const JointFriction*>(&e) || dynamic_cast<const Latch*>(&e) ||
-           dynamic_cast<const PointSpring*>(&e) || dynamic_cast<const Gravity*>(&e) ||
-           dynamic_cast<const AppliedForce*>(&e);
+  static bool exported(const sim::ForceElement& e) {
+    return dynamic_cast<const sim::JointSpring*>(&e) || dynamic_cast<const sim::JointDamper*>(&e) ||
+           dynamic_cast<const sim::JointFriction*>(&e) || dynamic_cast<const sim::Latch*>(&e) ||
+           dynamic_cast<const sim::PointSpring*>(&e) || dynamic_cast<const sim::Gravity*>(&e) ||
+           dynamic_cast<const sim::AppliedForce*>(&e);
   }
 
   void unsupported(const std::string& what) {
@@ -323,12 +330,12 @@ class Writer {
     out_ << "  <!-- Not exported: " << comment_text(what) << " -->\n";
   }
 
-  const Scene& scene_;
-  const Model& model_;
-  std::vector<Pose> poses_;
+  const sim::Scene& scene_;
+  const sim::Model& model_;
+  std::vector<sim::Pose> poses_;
   std::vector<double> dq0_, rates0_;  // q' and the rates at t = 0
-  std::vector<int> written_;  // bodies whose joints are in the file, in file order
-  std::map<int, const Loop*> image_of_, body_of_;
+  std::vector<int> written_;          // bodies whose joints are in the file, in file order
+  std::map<int, const sim::Loop*> image_of_, body_of_;
   std::vector<std::string> not_exported_;
   int deepest_ = 0;  // bodies nested below the world
   std::string deepest_body_;
@@ -337,6 +344,6 @@ class Writer {
 
 }  // namespace
 
-MjcfModel export_mjcf(const Scene& scene) { return Writer(scene).write(); }
+MjcfModel export_mjcf(const sim::Scene& scene) { return Writer(scene).write(); }
 
 }  // namespace unfurl::io

@@ -32,8 +32,7 @@ void write_png(const render::Image& image, const std::string& path, int compress
   png_set_IHDR(png, info, image.width, image.height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_write_info(png, info);
-  for (int y = 0; y < image.height; ++y)
-    png_write_row(png, const_cast<png_bytep>(image.pixel(0, y)));
+  for (int y = 0; y < image.height; ++y) png_write_row(png, const_cast<png_bytep>(image.pixel(0, y)));
   png_write_end(png, nullptr);
   png_destroy_write_struct(&png, &info);
   const bool ok = std::fflush(file) == 0 && !std::ferror(file);

@@ -9,7 +9,7 @@ namespace {
 const char* const kAxes[] = {"x", "y", "z"};
 
 void add(std::vector<RunColumn>& out, std::string name, std::string unit, std::string frame,
-         std::function<double(const Sample&)> value, std::function<void(Sample&, double)> set = {}) {
+         std::function<double(const sim::Sample&)> value, std::function<void(sim::Sample&, double)> set = {}) {
   out.push_back({std::move(name), std::move(unit), std::move(frame), std::move(value), std::move(set)});
 }
 
@@ -22,21 +22,25 @@ std::string header_cell(const RunColumn& c) {
 
 std::string column_name(const std::string& cell) { return cell.substr(0, cell.find(" [")); }
 
-std::vector<RunColumn> trajectory_columns(const Scene& scene, const Trajectory& tr) {
-  const Model& m = scene.model;
-  const StateLayout L = tr.layout;
+std::vector<RunColumn> trajectory_columns(const sim::Scene& scene, const sim::Trajectory& tr) {
+  const sim::Model& m = scene.model;
+  const sim::StateLayout L = tr.layout;
   std::vector<RunColumn> out;
-  add(out, "t", "s", "", [](const Sample& s) { return s.t; }, [](Sample& s, double x) { s.t = x; });
+  add(
+      out, "t", "s", "", [](const sim::Sample& s) { return s.t; }, [](sim::Sample& s, double x) { s.t = x; });
   const auto position = [&](int c) {
-    add(out, "q." + m.position_name(c), m.position_unit(c), "", [c, L](const Sample& s) { return s.y[L.q() + c]; },
-        [c, L](Sample& s, double x) { s.y[L.q() + c] = x; });
+    add(
+        out, "q." + m.position_name(c), m.position_unit(c), "", [c, L](const sim::Sample& s) { return s.y[L.q() + c]; },
+        [c, L](sim::Sample& s, double x) { s.y[L.q() + c] = x; });
     const std::string unit = m.position_unit(c);
-    add(out, "dq." + m.position_name(c), unit.empty() ? "1/s" : unit + "/s", "",
-        [c](const Sample& s) { return s.q_dot[c]; }, [c](Sample& s, double x) { s.q_dot[c] = x; });
+    add(
+        out, "dq." + m.position_name(c), unit.empty() ? "1/s" : unit + "/s", "",
+        [c](const sim::Sample& s) { return s.q_dot[c]; }, [c](sim::Sample& s, double x) { s.q_dot[c] = x; });
   };
   const auto momentum = [&](int v) {
-    add(out, "p." + m.velocity_name(v), m.momentum_unit(v), "", [v, L](const Sample& s) { return s.y[L.p() + v]; },
-        [v, L](Sample& s, double x) { s.y[L.p() + v] = x; });
+    add(
+        out, "p." + m.velocity_name(v), m.momentum_unit(v), "", [v, L](const sim::Sample& s) { return s.y[L.p() + v]; },
+        [v, L](sim::Sample& s, double x) { s.y[L.p() + v] = x; });
   };
   // A one-coordinate joint's q, q' and p side by side; then the positions
   // of ball, planar and free joints with their q', then their momenta.
@@ -51,10 +55,13 @@ std::vector<RunColumn> trajectory_columns(const Scene& scene, const Trajectory& 
   for (int v = 0; v < m.nv; ++v)
     if (!m.joints[m.joint_of_velocity[v]].is_scalar()) momentum(v);
   for (std::size_t l = 0; l < scene.loops.size(); ++l) {
-    add(out, "closure_gap." + scene.loops[l].name, "m", "", [l](const Sample& s) { return s.closure[l].distance; },
-        [l](Sample& s, double x) { s.closure[l].distance = x; });
-    add(out, "closure_angle." + scene.loops[l].name, "rad", "", [l](const Sample& s) { return s.closure[l].angle; },
-        [l](Sample& s, double x) { s.closure[l].angle = x; });
+    add(
+        out, "closure_gap." + scene.loops[l].name, "m", "", [l](const sim::Sample& s) { return s.closure[l].distance; },
+        [l](sim::Sample& s, double x) { s.closure[l].distance = x; });
+    add(
+        out, "closure_angle." + scene.loops[l].name, "rad", "",
+        [l](const sim::Sample& s) { return s.closure[l].angle; },
+        [l](sim::Sample& s, double x) { s.closure[l].angle = x; });
   }
   // Each ball or free joint's orientation as a rotation vector and its
   // child's angular rate: derived, not read back.
@@ -62,39 +69,46 @@ std::vector<RunColumn> trajectory_columns(const Scene& scene, const Trajectory& 
     if (!m.joints[i].has_quaternion()) continue;
     const std::string& joint = m.joints[i].name;
     for (int a = 0; a < 3; ++a)
-      add(out, "rotation_vector." + joint + "." + kAxes[a], "rad", "parent frame", [&m, i, a, L](const Sample& s) {
-        return joint_orientation(m, i, s.y.data() + L.q(), s.q_dot.data()).rotation_vector[a];
+      add(out, "rotation_vector." + joint + "." + kAxes[a], "rad", "parent frame", [&m, i, a, L](const sim::Sample& s) {
+        return sim::joint_orientation(m, i, s.y.data() + L.q(), s.q_dot.data()).rotation_vector[a];
       });
     for (int a = 0; a < 3; ++a)
-      add(out, "rate." + joint + "." + kAxes[a], "rad/s", "child frame", [&m, i, a, L](const Sample& s) {
-        return joint_orientation(m, i, s.y.data() + L.q(), s.q_dot.data()).rate[a];
+      add(out, "rate." + joint + "." + kAxes[a], "rad/s", "child frame", [&m, i, a, L](const sim::Sample& s) {
+        return sim::joint_orientation(m, i, s.y.data() + L.q(), s.q_dot.data()).rate[a];
       });
   }
   if (m.free_floating()) {
     for (int a = 0; a < 3; ++a)
-      add(out, std::string("momentum.") + kAxes[a], "N s", "inertial frame",
-          [a](const Sample& s) { return s.momentum.linear[a]; },
-          [a](Sample& s, double x) { s.momentum.linear[a] = x; });
+      add(
+          out, std::string("momentum.") + kAxes[a], "N s", "inertial frame",
+          [a](const sim::Sample& s) { return s.momentum.linear[a]; },
+          [a](sim::Sample& s, double x) { s.momentum.linear[a] = x; });
     for (int a = 0; a < 3; ++a)
-      add(out, std::string("angular_momentum.") + kAxes[a], "N m s", "inertial frame about its origin",
-          [a](const Sample& s) { return s.momentum.angular[a]; },
-          [a](Sample& s, double x) { s.momentum.angular[a] = x; });
+      add(
+          out, std::string("angular_momentum.") + kAxes[a], "N m s", "inertial frame about its origin",
+          [a](const sim::Sample& s) { return s.momentum.angular[a]; },
+          [a](sim::Sample& s, double x) { s.momentum.angular[a] = x; });
   }
-  add(out, "energy", "J", "", [](const Sample& s) { return s.energy.total(); },
-      [](Sample& s, double x) { s.energy.unattributed = x; });
-  add(out, "energy_dissipated", "J", "", [](const Sample& s) { return s.energy.dissipated; },
-      [](Sample& s, double x) { s.energy.dissipated = x; });
+  add(
+      out, "energy", "J", "", [](const sim::Sample& s) { return s.energy.total(); },
+      [](sim::Sample& s, double x) { s.energy.unattributed = x; });
+  add(
+      out, "energy_dissipated", "J", "", [](const sim::Sample& s) { return s.energy.dissipated; },
+      [](sim::Sample& s, double x) { s.energy.dissipated = x; });
   return out;
 }
 
-std::vector<RunColumn> load_file_columns(const Scene& scene, const Trajectory& tr) {
-  const Model& m = scene.model;
-  const std::vector<LoadColumn>& element = tr.load_columns;
+std::vector<RunColumn> load_file_columns(const sim::Scene& scene, const sim::Trajectory& tr) {
+  const sim::Model& m = scene.model;
+  const std::vector<sim::LoadColumn>& element = tr.load_columns;
   std::vector<RunColumn> out;
-  add(out, "t", "s", "", [](const Sample& s) { return s.t; }, [](Sample& s, double x) { s.t = x; });
+  add(
+      out, "t", "s", "", [](const sim::Sample& s) { return s.t; }, [](sim::Sample& s, double x) { s.t = x; });
   const auto element_column = [&](std::size_t c) {
-    add(out, element[c].name, element[c].unit, element[c].frame, [c](const Sample& s) { return s.loads.element[c]; },
-        [c](Sample& s, double x) { s.loads.element[c] = x; });
+    add(
+        out, element[c].name, element[c].unit, element[c].frame,
+        [c](const sim::Sample& s) { return s.loads.element[c]; },
+        [c](sim::Sample& s, double x) { s.loads.element[c] = x; });
   };
   // Each joint's element columns, then its reaction; the loops' forces;
   // the columns of elements that are not on a joint.
@@ -102,29 +116,32 @@ std::vector<RunColumn> load_file_columns(const Scene& scene, const Trajectory& t
     for (std::size_t c = 0; c < element.size(); ++c)
       if (element[c].joint == j) element_column(c);
     for (int a = 0; a < 6; ++a)
-      add(out, std::string(a < 3 ? "hinge_force." : "hinge_moment.") + m.joints[j].name + "." + kAxes[a % 3],
+      add(
+          out, std::string(a < 3 ? "hinge_force." : "hinge_moment.") + m.joints[j].name + "." + kAxes[a % 3],
           a < 3 ? "N" : "N m", a < 3 ? "child body frame" : "child body frame about the hinge point",
-          [j, a](const Sample& s) { return s.loads.reaction[j][a]; },
-          [j, a](Sample& s, double x) { s.loads.reaction[j][a] = x; });
+          [j, a](const sim::Sample& s) { return s.loads.reaction[j][a]; },
+          [j, a](sim::Sample& s, double x) { s.loads.reaction[j][a] = x; });
   }
   for (std::size_t k = 0; k < tr.loop_components.size(); ++k) {
-    const LoopComponent& c = tr.loop_components[k];
-    add(out, std::string(c.axis < 3 ? "loop_force." : "loop_moment.") + scene.loops[c.loop].name + "." + kAxes[c.axis % 3],
-        c.axis < 3 ? "N" : "N m", "split body frame", [k](const Sample& s) { return s.loads.loop_force[k]; },
-        [k](Sample& s, double x) { s.loads.loop_force[k] = x; });
+    const sim::LoopComponent& c = tr.loop_components[k];
+    add(
+        out,
+        std::string(c.axis < 3 ? "loop_force." : "loop_moment.") + scene.loops[c.loop].name + "." + kAxes[c.axis % 3],
+        c.axis < 3 ? "N" : "N m", "split body frame", [k](const sim::Sample& s) { return s.loads.loop_force[k]; },
+        [k](sim::Sample& s, double x) { s.loads.loop_force[k] = x; });
   }
   for (std::size_t c = 0; c < element.size(); ++c)
     if (element[c].joint < 0) element_column(c);
   return out;
 }
 
-Sample empty_sample(const Scene& scene, const Trajectory& tr) {
-  Sample s;
+sim::Sample empty_sample(const sim::Scene& scene, const sim::Trajectory& tr) {
+  sim::Sample s;
   s.y.assign(tr.layout.size(), 0.0);
   s.q_dot.assign(tr.layout.nq, 0.0);
   s.closure.resize(scene.loops.size());
   s.loads.element.assign(tr.load_columns.size(), 0.0);
-  s.loads.reaction.assign(scene.model.size(), Vec6::Zero());
+  s.loads.reaction.assign(scene.model.size(), sim::Vec6::Zero());
   s.loads.loop_force.assign(tr.loop_components.size(), 0.0);
   return s;
 }

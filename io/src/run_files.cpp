@@ -18,13 +18,13 @@ namespace unfurl::io {
 namespace {
 
 // Writes columns of every sample as a CSV file with its header.
-void write_columns(const std::vector<RunColumn>& columns, const Trajectory& trajectory, const std::string& path) {
+void write_columns(const std::vector<RunColumn>& columns, const sim::Trajectory& trajectory, const std::string& path) {
   OutputFile file(path);
   std::ostream& out = file.stream();
   for (std::size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << header_cell(columns[c]);
   out << '\n';
-  for (const Sample& s : trajectory.samples) {
-    for (std::size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << format_number(columns[c].value(s));
+  for (const sim::Sample& s : trajectory.samples) {
+    for (std::size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << sim::format_number(columns[c].value(s));
     out << '\n';
   }
   file.commit();
@@ -62,7 +62,7 @@ std::map<std::string, int> header_of(const std::string& line) {
 // samples already there (loads.csv beside a trajectory) or new ones.
 // Columns the file lacks are an error where `required`.
 void read_columns(const std::string& path, const std::vector<RunColumn>& columns, std::istream& in,
-                  const std::map<std::string, int>& header, const Sample& blank, std::vector<Sample>& samples,
+                  const std::map<std::string, int>& header, const sim::Sample& blank, std::vector<sim::Sample>& samples,
                   bool append) {
   std::vector<std::pair<const RunColumn*, int>> read;
   for (const RunColumn& c : columns) {
@@ -78,7 +78,7 @@ void read_columns(const std::string& path, const std::vector<RunColumn>& columns
     if (cells.size() != header.size())
       throw std::runtime_error(where + ": expected " + std::to_string(header.size()) + " columns");
     if (!append && k >= samples.size()) throw std::runtime_error(where + ": more rows than trajectory.csv");
-    Sample s = append ? blank : samples[k];
+    sim::Sample s = append ? blank : samples[k];
     for (const auto& [column, at] : read) column->set(s, parse(cells[at], where));
     if (append) {
       if (!samples.empty() && !(s.t > samples.back().t)) throw std::runtime_error(where + ": times must increase");
@@ -91,12 +91,12 @@ void read_columns(const std::string& path, const std::vector<RunColumn>& columns
   }
 }
 
-void read_events(const Scene& scene, const std::string& path, Trajectory& tr) {
+void read_events(const sim::Scene& scene, const std::string& path, sim::Trajectory& tr) {
   std::ifstream in(path);
   if (!in) return;
   std::string line;
   std::getline(in, line);
-  const std::vector<const Latch*> latches = scene.latches();
+  const std::vector<const sim::Latch*> latches = scene.latches();
   for (int n = 2; std::getline(in, line); ++n) {
     const auto cells = split(line);
     if (cells.size() != 3) throw std::runtime_error(path + ":" + std::to_string(n) + ": expected t,event,joint");
@@ -110,9 +110,9 @@ void read_events(const Scene& scene, const std::string& path, Trajectory& tr) {
 
 // The active loop components a loads.csv was written with, from its
 // loop_force and loop_moment columns.
-std::vector<LoopComponent> loop_components_of(const Scene& scene, const std::map<std::string, int>& header,
-                                              const std::string& path) {
-  std::vector<std::pair<int, LoopComponent>> found;
+std::vector<sim::LoopComponent> loop_components_of(const sim::Scene& scene, const std::map<std::string, int>& header,
+                                                   const std::string& path) {
+  std::vector<std::pair<int, sim::LoopComponent>> found;
   for (const auto& [name, at] : header) {
     const bool force = name.rfind("loop_force.", 0) == 0, moment = name.rfind("loop_moment.", 0) == 0;
     if (!force && !moment) continue;
@@ -127,28 +127,28 @@ std::vector<LoopComponent> loop_components_of(const Scene& scene, const std::map
     found.push_back({at, {loop, axis}});
   }
   std::sort(found.begin(), found.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  std::vector<LoopComponent> components;
+  std::vector<sim::LoopComponent> components;
   for (const auto& f : found) components.push_back(f.second);
   return components;
 }
 
 }  // namespace
 
-void write_trajectory_csv(const Scene& scene, const Trajectory& trajectory, const std::string& path) {
+void write_trajectory_csv(const sim::Scene& scene, const sim::Trajectory& trajectory, const std::string& path) {
   write_columns(trajectory_columns(scene, trajectory), trajectory, path);
 }
 
-void write_loads_csv(const Scene& scene, const Trajectory& trajectory, const std::string& path) {
+void write_loads_csv(const sim::Scene& scene, const sim::Trajectory& trajectory, const std::string& path) {
   write_columns(load_file_columns(scene, trajectory), trajectory, path);
 }
 
-Trajectory read_trajectory_csv(const Scene& scene, const std::string& path) {
+sim::Trajectory read_trajectory_csv(const sim::Scene& scene, const std::string& path) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error(path + ": cannot open the trajectory");
   std::string line;
   if (!std::getline(in, line)) throw std::runtime_error(path + ": empty file");
-  const Model& model = scene.model;
-  Trajectory tr;
+  const sim::Model& model = scene.model;
+  sim::Trajectory tr;
   tr.layout.nq = model.nq;
   tr.layout.nv = model.nv;
   tr.load_columns = scene.load_columns();
@@ -174,11 +174,11 @@ Trajectory read_trajectory_csv(const Scene& scene, const std::string& path) {
   return tr;
 }
 
-void write_events_csv(const Scene& scene, const Trajectory& trajectory, const std::string& path) {
+void write_events_csv(const sim::Scene& scene, const sim::Trajectory& trajectory, const std::string& path) {
   OutputFile file(path);
   file.stream() << "t,event,joint\n";
-  for (const LatchEvent& e : trajectory.events)
-    file.stream() << format_number(e.t) << ",latch," << scene.model.joints[e.joint].name << '\n';
+  for (const sim::LatchEvent& e : trajectory.events)
+    file.stream() << sim::format_number(e.t) << ",latch," << scene.model.joints[e.joint].name << '\n';
   file.commit();
 }
 
@@ -186,19 +186,19 @@ namespace {
 
 // "units": the unit of every number above with one; per joint where
 // joints differ (a slider's force is in N where a hinge's torque is in N m).
-void write_summary_units(JsonWriter& json, const Scene& scene, const RunSummary& summary) {
-  const Model& m = scene.model;
+void write_summary_units(JsonWriter& json, const sim::Scene& scene, const sim::RunSummary& summary) {
+  const sim::Model& m = scene.model;
   json.begin_object("units");
   for (const char* key : {"t_end", "sample", "dt", "t_reached", "wall_time", "min_step", "min_step_after_restart"})
     json.value(key, "s");
   json.value("latch_time", "s");
   json.value("max_closure_gap", "m").value("max_closure_angle", "rad");
   json.value("max_closure_gap_before_latch", "m").value("max_closure_angle_before_latch", "rad");
-  const auto per_joint = [&](const char* key, const std::vector<RunSummary::NamedPeak>& peaks, bool moment) {
+  const auto per_joint = [&](const char* key, const std::vector<sim::RunSummary::NamedPeak>& peaks, bool moment) {
     json.begin_object(key);
     for (const auto& [joint, peak] : peaks) {
       const std::optional<int> j = m.find_joint(joint);
-      const bool slider = j && m.joints[*j].type == JointType::prismatic;
+      const bool slider = j && m.joints[*j].type == sim::JointType::prismatic;
       json.value(joint, moment && !slider ? "N m" : "N");
     }
     json.end_object();
@@ -215,22 +215,22 @@ void write_summary_units(JsonWriter& json, const Scene& scene, const RunSummary&
 
 }  // namespace
 
-void write_summary_json(const Scene& scene, const RunResult& result, const RunSummary& summary,
+void write_summary_json(const sim::Scene& scene, const sim::RunResult& result, const sim::RunSummary& summary,
                         const std::string& path) {
-  const RunSettings& run = result.settings;
+  const sim::RunSettings& run = result.settings;
   OutputFile file(path);
   JsonWriter json(file.stream());
   json.begin_object();
   json.value("scene", scene.name).value("scene_source", scene.source);
-  json.value("integrator", integrator_name(run.integrator));
+  json.value("integrator", sim::integrator_name(run.integrator));
   json.value("rtol", run.rtol).value("atol", run.atol);
-  if (run.integrator == IntegratorKind::rk4) json.value("dt", run.dt);
+  if (run.integrator == sim::IntegratorKind::rk4) json.value("dt", run.dt);
   json.value("t_end", run.t_end).value("sample", run.sample);
-  json.value("status", run_status_name(result.status));
-  if (result.status == RunStatus::failed) {
+  json.value("status", sim::run_status_name(result.status));
+  if (result.status == sim::RunStatus::failed) {
     json.begin_object("failure");
     json.value("t", result.failure.t).value("step", result.failure.step);
-    json.value("check", result.failure.check).value("message", describe(result.failure));
+    json.value("check", result.failure.check).value("message", sim::describe(result.failure));
     json.end_object();
   }
   json.value("t_reached", summary.t_reached);
@@ -259,7 +259,7 @@ void write_summary_json(const Scene& scene, const RunResult& result, const RunSu
   json.value("max_closure_angle", summary.max_closure_angle);
   json.value("max_closure_gap_before_latch", summary.max_closure_gap_before_latch);
   json.value("max_closure_angle_before_latch", summary.max_closure_angle_before_latch);
-  auto peaks = [&](const char* key, const std::vector<RunSummary::NamedPeak>& list) {
+  auto peaks = [&](const char* key, const std::vector<sim::RunSummary::NamedPeak>& list) {
     json.begin_object(key);
     for (const auto& [joint, peak] : list) {
       if (std::isnan(peak.t)) continue;  // never engaged

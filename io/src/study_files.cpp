@@ -27,9 +27,12 @@ std::vector<std::string> split_csv_line(const std::string& line) {
   for (std::size_t i = 0; i < line.size(); ++i) {
     const char c = line[i];
     if (quoted) {
-      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') fields.back() += '"', ++i;
-      else if (c == '"') quoted = false;
-      else fields.back() += c;
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"')
+        fields.back() += '"', ++i;
+      else if (c == '"')
+        quoted = false;
+      else
+        fields.back() += c;
     } else if (c == '"') {
       quoted = true;
     } else if (c == ',') {
@@ -53,19 +56,20 @@ double parse_number(const std::string& s) {
   return std::stod(s);
 }
 
-std::optional<CaseStatus> parse_status(const std::string& s) {
-  for (CaseStatus status : {CaseStatus::deployed, CaseStatus::not_deployed, CaseStatus::failed})
-    if (s == case_status_name(status)) return status;
+std::optional<studies::CaseStatus> parse_status(const std::string& s) {
+  for (studies::CaseStatus status :
+       {studies::CaseStatus::deployed, studies::CaseStatus::not_deployed, studies::CaseStatus::failed})
+    if (s == studies::case_status_name(status)) return status;
   return std::nullopt;
 }
 
-std::string angle_csv(const CaseResult& r) {
+std::string angle_csv(const studies::CaseResult& r) {
   std::string out = "t,q\n";
   for (std::size_t k = 0; k < r.angle_t.size(); ++k) out += number(r.angle_t[k]) + "," + number(r.angle[k]) + "\n";
   return out;
 }
 
-void parse_angle_csv(const std::string& text, CaseResult& r) {
+void parse_angle_csv(const std::string& text, studies::CaseResult& r) {
   std::istringstream lines(text);
   std::string line;
   std::getline(lines, line);  // header
@@ -108,28 +112,29 @@ std::string read_text_file(const std::string& path) {
   return text.str();
 }
 
-std::string cases_header(const CaseColumns& columns) {
+std::string cases_header(const studies::CaseColumns& columns) {
   std::string h = "case,failure,status,reason";
   for (const std::string& c : columns.inputs) h += "," + csv_field(c);
   for (const std::string& c : columns.outputs) {
-    const std::string unit = output_unit(c);
+    const std::string unit = studies::output_unit(c);
     h += "," + csv_field(unit.empty() ? c : c + " [" + unit + "]");
   }
   return h;
 }
 
-std::string case_row(const CaseResult& r) {
-  std::string row = csv_field(r.id) + "," + csv_field(r.failure) + "," + case_status_name(r.status) + "," + csv_field(r.reason);
+std::string case_row(const studies::CaseResult& r) {
+  std::string row = csv_field(r.id) + "," + csv_field(r.failure) + "," + studies::case_status_name(r.status) + "," +
+                    csv_field(r.reason);
   for (double x : r.inputs) row += "," + number(x);
   for (double x : r.outputs) row += "," + number(x);
   return row;
 }
 
-std::string case_record(const CaseColumns& columns, const CaseResult& r) {
+std::string case_record(const studies::CaseColumns& columns, const studies::CaseResult& r) {
   return cases_header(columns) + "\n" + case_row(r) + "\n\f" + angle_csv(r);
 }
 
-std::optional<CaseResult> parse_case_record(const CaseColumns& columns, const std::string& record) {
+std::optional<studies::CaseResult> parse_case_record(const studies::CaseColumns& columns, const std::string& record) {
   const auto split = record.find('\f');
   std::istringstream lines(record.substr(0, split));
   std::string header, row;
@@ -137,7 +142,7 @@ std::optional<CaseResult> parse_case_record(const CaseColumns& columns, const st
   const auto f = split_csv_line(row);
   const std::size_t n_in = columns.inputs.size(), n_out = columns.outputs.size();
   if (f.size() != 4 + n_in + n_out) return std::nullopt;
-  CaseResult r;
+  studies::CaseResult r;
   r.id = f[0];
   r.failure = f[1];
   const auto status = parse_status(f[2]);
@@ -163,42 +168,57 @@ void write_case_record(const std::string& dir, const std::string& id, const std:
   write_text(case_dir + "/case.csv", record.substr(0, split));
 }
 
-std::optional<CaseResult> read_case_record(const CaseColumns& columns, const std::string& dir, const std::string& id) {
+std::optional<studies::CaseResult> read_case_record(const studies::CaseColumns& columns, const std::string& dir,
+                                                    const std::string& id) {
   const std::string case_dir = dir + "/cases/" + id;
   std::error_code ec;
   if (!std::filesystem::is_regular_file(case_dir + "/case.csv", ec)) return std::nullopt;
-  return parse_case_record(columns, read_text_file(case_dir + "/case.csv") + "\f" + read_text_file(case_dir + "/angle.csv"));
+  return parse_case_record(columns,
+                           read_text_file(case_dir + "/case.csv") + "\f" + read_text_file(case_dir + "/angle.csv"));
 }
 
 void write_cases_csv(const StudyReport& report, const std::string& path) {
   OutputFile out(path);
   out.stream() << cases_header(report.columns) << "\n";
-  for (const CaseResult& r : report.results) out.stream() << case_row(r) << "\n";
+  for (const studies::CaseResult& r : report.results) out.stream() << case_row(r) << "\n";
   out.commit();
 }
 
 void write_study_summary_json(const StudyReport& report, const std::string& path) {
   OutputFile file(path);
   JsonWriter json(file.stream());
-  const StudyStatistics& st = report.statistics;
+  const studies::StudyStatistics& st = report.statistics;
   json.begin_object();
   json.value("study", report.study.source).value("scene", report.study.scene_source);
   json.value("cases", static_cast<long>(report.total_cases)).value("finished", st.cases);
-  json.begin_object("status").value("deployed", st.deployed).value("not_deployed", st.not_deployed).value("failed", st.failed).end_object();
+  json.begin_object("status")
+      .value("deployed", st.deployed)
+      .value("not_deployed", st.not_deployed)
+      .value("failed", st.failed)
+      .end_object();
   json.value("fraction_deployed", st.cases ? static_cast<double>(st.deployed) / static_cast<double>(st.cases) : 0.0);
-  json.value("resumed", report.resumed).value("wall_time", report.wall_time_s).value("processes", report.processes).value("jobs", report.jobs);
+  json.value("resumed", report.resumed)
+      .value("wall_time", report.wall_time_s)
+      .value("processes", report.processes)
+      .value("jobs", report.jobs);
   json.begin_object("outputs");
-  for (const OutputStatistics& o : st.outputs) {
+  for (const studies::OutputStatistics& o : st.outputs) {
     json.begin_object(o.output).value("n", o.n).value("min", o.min).value("max", o.max).value("mean", o.mean);
-    json.value("sd", o.sd).value("p1", o.p1).value("p5", o.p5).value("p50", o.p50).value("p95", o.p95).value("p99", o.p99);
+    json.value("sd", o.sd)
+        .value("p1", o.p1)
+        .value("p5", o.p5)
+        .value("p50", o.p50)
+        .value("p95", o.p95)
+        .value("p99", o.p99);
     json.end_object();
   }
   json.end_object();
   json.begin_object("drivers");
-  for (const Driver& d : st.drivers) json.begin_object(d.output).value("input", d.input).value("spearman_rho", d.rho).end_object();
+  for (const studies::Driver& d : st.drivers)
+    json.begin_object(d.output).value("input", d.input).value("spearman_rho", d.rho).end_object();
   json.end_object();
   json.begin_array("correlations");
-  for (const Driver& d : st.correlations)
+  for (const studies::Driver& d : st.correlations)
     json.begin_object().value("output", d.output).value("input", d.input).value("spearman_rho", d.rho).end_object();
   json.end_array();
   json.end_object();
@@ -206,53 +226,65 @@ void write_study_summary_json(const StudyReport& report, const std::string& path
   file.commit();
 }
 
-void write_study_markdown(const StudyReport& report, const std::vector<std::string>& pictures, const std::string& path) {
-  const StudyStatistics& st = report.statistics;
+void write_study_markdown(const StudyReport& report, const std::vector<std::string>& pictures,
+                          const std::string& path) {
+  const studies::StudyStatistics& st = report.statistics;
   OutputFile file(path);
   std::ostream& md = file.stream();
   md << "# Study: " << std::filesystem::path(report.study.source).filename().string() << "\n\n";
   md << "Scene `" << report.study.scene << "`, " << report.total_cases << " cases";
-  if (report.study.runs > 0) md << " (the nominal case and " << report.study.runs << " random draws, seed " << report.study.seed << ")";
+  if (report.study.runs > 0)
+    md << " (the nominal case and " << report.study.runs << " random draws, seed " << report.study.seed << ")";
   if (!report.study.failures.empty()) md << ", " << report.study.failures.size() << " of them injected failures";
   md << ". Made by `" << report.command << "` in " << fmt(report.wall_time_s) << " s (" << report.processes
      << (report.processes == 1 ? " process, " : " processes, ") << report.jobs << (report.jobs == 1 ? " job" : " jobs")
      << (report.processes == 1 ? "" : " each") << ")";
-  if (report.resumed > 0) md << "; " << report.resumed << " cases were read back from an earlier run of the same command";
+  if (report.resumed > 0)
+    md << "; " << report.resumed << " cases were read back from an earlier run of the same command";
   md << ".\n\n";
-  if (st.cases < report.total_cases) md << "**Incomplete:** " << st.cases << " of " << report.total_cases << " cases finished.\n\n";
+  if (st.cases < report.total_cases)
+    md << "**Incomplete:** " << st.cases << " of " << report.total_cases << " cases finished.\n\n";
   md << "| status | cases | fraction |\n|---|---:|---:|\n";
   const auto row = [&](const char* name, long n) {
-    md << "| " << name << " | " << n << " | " << fmt(st.cases ? 100.0 * static_cast<double>(n) / static_cast<double>(st.cases) : 0.0) << " % |\n";
+    md << "| " << name << " | " << n << " | "
+       << fmt(st.cases ? 100.0 * static_cast<double>(n) / static_cast<double>(st.cases) : 0.0) << " % |\n";
   };
   row("deployed", st.deployed);
   row("not deployed", st.not_deployed);
   row("failed", st.failed);
   md << "\n## Outputs over the deployed cases\n\nInjected failures are left out here (they are listed below).\n\n";
-  md << "| output | n | min | p1 | p5 | median | p95 | p99 | max | mean | sd |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-  for (const OutputStatistics& o : st.outputs) {
-    if (std::find(CaseColumns::headline().begin(), CaseColumns::headline().end(), o.output) == CaseColumns::headline().end()) continue;
+  md << "| output | n | min | p1 | p5 | median | p95 | p99 | max | mean | sd "
+        "|\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const studies::OutputStatistics& o : st.outputs) {
+    if (std::find(studies::CaseColumns::headline().begin(), studies::CaseColumns::headline().end(), o.output) ==
+        studies::CaseColumns::headline().end())
+      continue;
     md << "| " << o.output << " | " << o.n << " | " << fmt(o.min) << " | " << fmt(o.p1) << " | " << fmt(o.p5) << " | "
-       << fmt(o.p50) << " | " << fmt(o.p95) << " | " << fmt(o.p99) << " | " << fmt(o.max) << " | " << fmt(o.mean) << " | "
-       << fmt(o.sd) << " |\n";
+       << fmt(o.p50) << " | " << fmt(o.p95) << " | " << fmt(o.p99) << " | " << fmt(o.max) << " | " << fmt(o.mean)
+       << " | " << fmt(o.sd) << " |\n";
   }
   md << "\nEvery output column (per latch and per joint) is summarized in summary.json.\n";
   if (!st.drivers.empty()) {
     md << "\n## What drives the spread\n\nSpearman's rank correlation of each output with each varied input, over the "
           "deployed cases; the strongest per output:\n\n| output | strongest input | rho |\n|---|---|---:|\n";
-    for (const Driver& d : st.drivers) md << "| " << d.output << " | " << d.input << " | " << fmt(d.rho) << " |\n";
-    const Driver& d = st.drivers.front();
+    for (const studies::Driver& d : st.drivers)
+      md << "| " << d.output << " | " << d.input << " | " << fmt(d.rho) << " |\n";
+    const studies::Driver& d = st.drivers.front();
     md << "\nThe deployment time is driven most by `" << d.input << "` (rho = " << fmt(d.rho) << ": "
        << (d.rho < 0 ? "a larger value deploys sooner" : "a larger value deploys later") << ").\n";
   }
   bool any_failure = false;
-  for (const CaseResult& r : report.results) any_failure = any_failure || !r.failure.empty() || r.status != CaseStatus::deployed;
+  for (const studies::CaseResult& r : report.results)
+    any_failure = any_failure || !r.failure.empty() || r.status != studies::CaseStatus::deployed;
   if (any_failure) {
-    md << "\n## Cases that did not deploy, and injected failures\n\n| case | failure | status | reason | deployment time, s | peak latch torque, N m |\n|---|---|---|---|---:|---:|\n";
-    for (const CaseResult& r : report.results) {
-      if (r.failure.empty() && r.status == CaseStatus::deployed) continue;
-      md << "| " << r.id << " | " << (r.failure.empty() ? "-" : r.failure) << " | " << case_status_name(r.status) << " | "
-         << (r.reason.empty() ? "-" : cell(r.reason)) << " | " << fmt(output_value(report.columns, r, "deployment_time"))
-         << " | " << fmt(output_value(report.columns, r, "peak_latch_torque")) << " |\n";
+    md << "\n## Cases that did not deploy, and injected failures\n\n| case | failure | status | reason | deployment "
+          "time, s | peak latch torque, N m |\n|---|---|---|---|---:|---:|\n";
+    for (const studies::CaseResult& r : report.results) {
+      if (r.failure.empty() && r.status == studies::CaseStatus::deployed) continue;
+      md << "| " << r.id << " | " << (r.failure.empty() ? "-" : r.failure) << " | "
+         << studies::case_status_name(r.status) << " | " << (r.reason.empty() ? "-" : cell(r.reason)) << " | "
+         << fmt(studies::output_value(report.columns, r, "deployment_time")) << " | "
+         << fmt(studies::output_value(report.columns, r, "peak_latch_torque")) << " |\n";
     }
   }
   if (!pictures.empty()) {

@@ -10,11 +10,11 @@ std::optional<CameraFrame> parse_camera_frame(const std::string& name) {
 
 const char* camera_frame_name(CameraFrame frame) { return frame == CameraFrame::bus ? "bus" : "inertial"; }
 
-void poses_in_camera_frame(CameraFrame frame, const Model& model, const double* q, std::vector<Pose>& poses) {
-  body_poses(model, q, poses);
+void poses_in_camera_frame(CameraFrame frame, const sim::Model& model, const double* q, std::vector<sim::Pose>& poses) {
+  sim::body_poses(model, q, poses);
   if (frame != CameraFrame::bus || !model.free_floating()) return;
-  const Pose bus = poses[0];
-  for (Pose& p : poses) {
+  const sim::Pose bus = poses[0];
+  for (sim::Pose& p : poses) {
     p.position = bus.rotation * (p.position - bus.position);
     p.rotation = p.rotation * bus.rotation.transpose();
   }

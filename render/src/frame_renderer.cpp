@@ -4,7 +4,7 @@
 
 namespace unfurl::render {
 
-FrameRenderer::FrameRenderer(const Scene& scene, const SceneVisuals& visuals, int width, int height,
+FrameRenderer::FrameRenderer(const sim::Scene& scene, const sim::SceneVisuals& visuals, int width, int height,
                              std::vector<std::string> mesh_directories)
     : scene_name_(scene.name),
       meshes_(std::move(mesh_directories)),
@@ -25,7 +25,7 @@ void draw_overlay(ImDrawList* draw, const std::string& scene_name, double t) {
   draw->AddText(ImVec2(at.x, at.y + 1.2f * font), IM_COL32(210, 220, 255, 255), time);
 }
 
-void FrameRenderer::frame(const std::vector<Pose>& poses, double t, const Camera& camera, Image& out) {
+void FrameRenderer::frame(const std::vector<sim::Pose>& poses, double t, const Camera& camera, Image& out) {
   framebuffer_.bind();
   view_->draw(poses, camera, width(), height());
   imgui_.begin_frame(width(), height());

@@ -73,14 +73,14 @@ void main() {
 constexpr float kPinRadius = 0.008f, kPinLength = 0.05f;
 constexpr float kLinkRadius = 0.006f;
 
-Eigen::Affine3f pose_transform(const Pose& pose) {
+Eigen::Affine3f pose_transform(const sim::Pose& pose) {
   Eigen::Affine3f T = Eigen::Affine3f::Identity();
   T.linear() = pose.rotation.transpose().cast<float>();
   T.translation() = pose.position.cast<float>();
   return T;
 }
 
-Eigen::Affine3f visual_transform(const Visual& v) {
+Eigen::Affine3f visual_transform(const sim::Visual& v) {
   Eigen::Affine3f T = Eigen::Affine3f::Identity();
   T.translate(v.offset.cast<float>());
   if (v.rotation_deg != 0)
@@ -91,39 +91,40 @@ Eigen::Affine3f visual_transform(const Visual& v) {
 
 }  // namespace
 
-SceneView::SceneView(const Scene& scene, const SceneVisuals& visuals, MeshLibrary& meshes)
+SceneView::SceneView(const sim::Scene& scene, const sim::SceneVisuals& visuals, MeshLibrary& meshes)
     : shader_(std::make_unique<Shader>(kVertex, kFragment)),
       background_(std::make_unique<Shader>(kBackgroundVertex, kBackgroundFragment)) {
   glGenVertexArrays(1, &background_vao_);
   std::set<int> images;
-  for (const Loop& loop : scene.loops) images.insert(loop.image);
-  if (!visuals.base.mesh.empty()) items_.push_back({kBase, &meshes.get(visuals.base.mesh), visual_transform(visuals.base)});
+  for (const sim::Loop& loop : scene.loops) images.insert(loop.image);
+  if (!visuals.base.mesh.empty())
+    items_.push_back({sim::kBase, &meshes.get(visuals.base.mesh), visual_transform(visuals.base)});
   for (int i = 0; i < scene.model.size(); ++i) {
-    const Visual& v = visuals.bodies[i];
+    const sim::Visual& v = visuals.bodies[i];
     if (v.mesh.empty() || images.count(i)) continue;
     items_.push_back({i, &meshes.get(v.mesh), visual_transform(v)});
   }
   add_pins(scene, visuals, meshes);
   for (const auto& element : scene.elements)
-    for (const ElementLink& link : element->links()) links_.push_back(link);
+    for (const sim::ElementLink& link : element->links()) links_.push_back(link);
   if (!links_.empty()) link_mesh_ = &meshes.get("pin");
 }
 
 SceneView::~SceneView() = default;
 
-void SceneView::add_pins(const Scene& scene, const SceneVisuals& visuals, MeshLibrary& meshes) {
+void SceneView::add_pins(const sim::Scene& scene, const sim::SceneVisuals& visuals, MeshLibrary& meshes) {
   // Two short pins near the ends of a hinge line as wide as the child's
   // mesh; one pin where the child is not drawn (a cross pivot to an image).
   const MeshModel& pin = meshes.get("pin");
   std::set<int> images;
-  for (const Loop& loop : scene.loops) images.insert(loop.image);
+  for (const sim::Loop& loop : scene.loops) images.insert(loop.image);
   for (int i = 0; i < scene.model.size(); ++i) {
-    const Joint& joint = scene.model.joints[i];
-    if (joint.type != JointType::revolute) continue;
+    const sim::Joint& joint = scene.model.joints[i];
+    if (joint.type != sim::JointType::revolute) continue;
     const Eigen::Vector3f axis = joint.axis.cast<float>();
     const Eigen::Quaternionf turn = Eigen::Quaternionf::FromTwoVectors(Eigen::Vector3f::UnitZ(), axis);
     std::vector<float> stations{0.0f};
-    const Visual& v = visuals.bodies[i];
+    const sim::Visual& v = visuals.bodies[i];
     if (!v.mesh.empty() && !images.count(i)) {
       const Eigen::Vector3f size = meshes.get(v.mesh).bounds.sizes().cwiseProduct(v.scale.cast<float>());
       const float width = size.dot(axis.cwiseAbs());
@@ -139,11 +140,11 @@ void SceneView::add_pins(const Scene& scene, const SceneVisuals& visuals, MeshLi
   }
 }
 
-Eigen::Affine3f SceneView::placement(const Item& item, const std::vector<Pose>& poses) const {
-  return (item.body == kBase ? Eigen::Affine3f::Identity() : pose_transform(poses[item.body])) * item.local;
+Eigen::Affine3f SceneView::placement(const Item& item, const std::vector<sim::Pose>& poses) const {
+  return (item.body == sim::kBase ? Eigen::Affine3f::Identity() : pose_transform(poses[item.body])) * item.local;
 }
 
-Eigen::AlignedBox3f SceneView::bounds(const std::vector<Pose>& poses) const {
+Eigen::AlignedBox3f SceneView::bounds(const std::vector<sim::Pose>& poses) const {
   Eigen::AlignedBox3f box;
   for (const Item& item : items_) {
     const Eigen::Affine3f T = placement(item, poses);
@@ -153,7 +154,7 @@ Eigen::AlignedBox3f SceneView::bounds(const std::vector<Pose>& poses) const {
   return box;
 }
 
-void SceneView::draw(const std::vector<Pose>& poses, const Camera& camera, int width, int height) const {
+void SceneView::draw(const std::vector<sim::Pose>& poses, const Camera& camera, int width, int height) const {
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
   background_->use();
@@ -174,8 +175,9 @@ void SceneView::draw(const std::vector<Pose>& poses, const Camera& camera, int w
   for (const Item& item : items_) draw_mesh(*item.mesh, placement(item, poses), nullptr);
   // Springs orange, cables pale grey.
   const Eigen::Vector3f spring(0.95f, 0.55f, 0.15f), cable(0.85f, 0.85f, 0.8f);
-  for (const ElementLink& link : links_)
-    draw_mesh(*link_mesh_, link_placement(link, poses), link.style == ElementLink::Style::cable ? &cable : &spring);
+  for (const sim::ElementLink& link : links_)
+    draw_mesh(*link_mesh_, link_placement(link, poses),
+              link.style == sim::ElementLink::Style::cable ? &cable : &spring);
   glBindVertexArray(0);
 }
 
@@ -191,8 +193,8 @@ void SceneView::draw_mesh(const MeshModel& mesh, const Eigen::Affine3f& T, const
   }
 }
 
-Eigen::Affine3f SceneView::link_placement(const ElementLink& link, const std::vector<Pose>& poses) const {
-  const auto at = [&](int body, const Vec3& r) { return body == kBase ? r : poses[body].to_base(r); };
+Eigen::Affine3f SceneView::link_placement(const sim::ElementLink& link, const std::vector<sim::Pose>& poses) const {
+  const auto at = [&](int body, const sim::Vec3& r) { return body == sim::kBase ? r : poses[body].to_base(r); };
   const Eigen::Vector3f a = at(link.body_a, link.point_a).cast<float>(), b = at(link.body_b, link.point_b).cast<float>();
   const float length = std::max((b - a).norm(), 1e-6f);  // a singular scale would spoil the normals
   Eigen::Affine3f T = Eigen::Affine3f::Identity();

@@ -7,15 +7,15 @@ namespace unfurl::render {
 
 namespace {
 
-using Value = std::function<double(const Sample&)>;
+using Value = std::function<double(const sim::Sample&)>;
 
-Series series(const Trajectory& tr, const std::string& label, ImU32 color, const Value& value) {
+Series series(const sim::Trajectory& tr, const std::string& label, ImU32 color, const Value& value) {
   Series s;
   s.label = label;
   s.color = color;
   s.x.reserve(tr.samples.size());
   s.y.reserve(tr.samples.size());
-  for (const Sample& sample : tr.samples) {
+  for (const sim::Sample& sample : tr.samples) {
     s.x.push_back(sample.t);
     s.y.push_back(value(sample));
   }
@@ -24,7 +24,7 @@ Series series(const Trajectory& tr, const std::string& label, ImU32 color, const
 
 }  // namespace
 
-std::vector<int> chosen_coordinates(const Model& model, const PlotChoice& choice) {
+std::vector<int> chosen_coordinates(const sim::Model& model, const PlotChoice& choice) {
   std::vector<int> coordinates;
   // The one-coordinate joints' angles (a free bus has a plot of its own).
   const int n1 = model.scalar_coordinates;
@@ -38,10 +38,10 @@ std::vector<int> chosen_coordinates(const Model& model, const PlotChoice& choice
 namespace {
 
 // Adds the curves of one run (`other`: a run compared with the current one).
-void add_curves(PlotSpec& spec, PlotKind kind, const Scene& scene, const Trajectory& tr, const ComparedRun* other,
-                const PlotChoice& choice) {
-  const Model& model = scene.model;
-  const StateLayout& L = tr.layout;
+void add_curves(PlotSpec& spec, PlotKind kind, const sim::Scene& scene, const sim::Trajectory& tr,
+                const ComparedRun* other, const PlotChoice& choice) {
+  const sim::Model& model = scene.model;
+  const sim::StateLayout& L = tr.layout;
   const std::vector<int> coordinates = chosen_coordinates(model, choice);
   std::vector<Series> added;
   switch (kind) {
@@ -50,17 +50,17 @@ void add_curves(PlotSpec& spec, PlotKind kind, const Scene& scene, const Traject
       for (int c : coordinates) {
         const std::string& joint = model.joints[model.joint_of_position[c]].name;
         added.push_back(kind == PlotKind::angles
-                            ? series(tr, joint, palette(c), [&, c](const Sample& s) { return s.y[L.q() + c]; })
-                            : series(tr, joint, palette(c), [c](const Sample& s) { return s.q_dot[c]; }));
+                            ? series(tr, joint, palette(c), [&, c](const sim::Sample& s) { return s.y[L.q() + c]; })
+                            : series(tr, joint, palette(c), [c](const sim::Sample& s) { return s.q_dot[c]; }));
       }
       break;
     case PlotKind::residuals:
       for (std::size_t l = 0; l < scene.loops.size(); ++l) {
         const int color = static_cast<int>(l);
         added.push_back(series(tr, scene.loops[l].name + ", m", palette(color),
-                               [l](const Sample& s) { return s.closure[l].distance; }));
+                               [l](const sim::Sample& s) { return s.closure[l].distance; }));
         added.push_back(series(tr, scene.loops[l].name + ", rad", palette(color),
-                               [l](const Sample& s) { return s.closure[l].angle; }));
+                               [l](const sim::Sample& s) { return s.closure[l].angle; }));
         added.back().dashed = true;
       }
       break;
@@ -73,9 +73,9 @@ void add_curves(PlotSpec& spec, PlotKind kind, const Scene& scene, const Traject
         const int c = model.first_position[j].value;
         return choice.coordinates.empty() || std::find(coordinates.begin(), coordinates.end(), c) != coordinates.end();
       };
-      const std::vector<const Latch*> latches = scene.latches();
+      const std::vector<const sim::Latch*> latches = scene.latches();
       std::vector<int> joints;
-      for (const Latch* latch : latches)
+      for (const sim::Latch* latch : latches)
         if (chosen(latch->joint)) joints.push_back(latch->joint);
       for (int j = 0; latches.empty() && j < model.size() && static_cast<int>(joints.size()) < max_joints; ++j)
         if (chosen(j)) joints.push_back(j);
@@ -84,32 +84,33 @@ void add_curves(PlotSpec& spec, PlotKind kind, const Scene& scene, const Traject
         const int j = joints[k];
         const std::string& name = model.joints[j].name;
         const ImU32 color = palette(static_cast<int>(k));
-        const int latch = find_load_column(tr.load_columns, "latch_torque." + name);
+        const int latch = sim::find_load_column(tr.load_columns, "latch_torque." + name);
         if (latch >= 0)
-          added.push_back(series(tr, "latch " + name, color, [latch](const Sample& s) { return s.loads.element[latch]; }));
-        added.push_back(series(tr, "|hinge moment| " + name, color, [j](const Sample& s) {
-          return s.loads.reaction[j].tail<3>().norm();
-        }));
+          added.push_back(
+              series(tr, "latch " + name, color, [latch](const sim::Sample& s) { return s.loads.element[latch]; }));
+        added.push_back(series(tr, "|hinge moment| " + name, color,
+                               [j](const sim::Sample& s) { return s.loads.reaction[j].tail<3>().norm(); }));
         added.back().dashed = !latches.empty();
       }
       break;
     }
     case PlotKind::energy:
-      added.push_back(series(tr, "total", palette(0), [](const Sample& s) { return s.energy.total(); }));
+      added.push_back(series(tr, "total", palette(0), [](const sim::Sample& s) { return s.energy.total(); }));
       if (!tr.empty() && tr.samples.front().energy.unattributed != 0) break;  // only the total is known
       // Every store, and the work taken out: total + dissipated is the
       // balance, flat when the energy is accounted for (the drop at
       // latch-up is the latches' damping, in "dissipated").
-      added.push_back(series(tr, "kinetic", palette(1), [](const Sample& s) { return s.energy.kinetic; }));
-      added.push_back(series(tr, "springs", palette(2), [](const Sample& s) { return s.energy.springs; }));
-      added.push_back(series(tr, "latches", palette(3), [](const Sample& s) { return s.energy.latches; }));
+      added.push_back(series(tr, "kinetic", palette(1), [](const sim::Sample& s) { return s.energy.kinetic; }));
+      added.push_back(series(tr, "springs", palette(2), [](const sim::Sample& s) { return s.energy.springs; }));
+      added.push_back(series(tr, "latches", palette(3), [](const sim::Sample& s) { return s.energy.latches; }));
       if (scene.gravity().norm() > 0)
-        added.push_back(series(tr, "gravity", palette(4), [](const Sample& s) { return s.energy.gravity; }));
+        added.push_back(series(tr, "gravity", palette(4), [](const sim::Sample& s) { return s.energy.gravity; }));
       if (!scene.loops.empty())
-        added.push_back(series(tr, "regulator", palette(5), [](const Sample& s) { return s.energy.regulator; }));
-      added.push_back(series(tr, "dissipated", palette(6), [](const Sample& s) { return s.energy.dissipated; }));
+        added.push_back(series(tr, "regulator", palette(5), [](const sim::Sample& s) { return s.energy.regulator; }));
+      added.push_back(series(tr, "dissipated", palette(6), [](const sim::Sample& s) { return s.energy.dissipated; }));
       added.back().dashed = true;
-      added.push_back(series(tr, "total + dissipated", palette(7), [](const Sample& s) { return s.energy.balance(); }));
+      added.push_back(
+          series(tr, "total + dissipated", palette(7), [](const sim::Sample& s) { return s.energy.balance(); }));
       added.back().dashed = true;
       break;
     case PlotKind::bus: {
@@ -117,13 +118,13 @@ void add_curves(PlotSpec& spec, PlotKind kind, const Scene& scene, const Traject
       // The rotation vector (solid) and the body-frame rate (dashed).
       static const char* const axes[] = {"x", "y", "z"};
       for (int a = 0; a < 3; ++a) {
-        added.push_back(series(tr, std::string("rotation ") + axes[a], palette(a), [&, a](const Sample& s) {
-          return bus_motion(model, s.y.data() + L.q(), s.q_dot.data()).rotation_vector[a];
+        added.push_back(series(tr, std::string("rotation ") + axes[a], palette(a), [&, a](const sim::Sample& s) {
+          return sim::bus_motion(model, s.y.data() + L.q(), s.q_dot.data()).rotation_vector[a];
         }));
       }
       for (int a = 0; a < 3; ++a) {
-        added.push_back(series(tr, std::string("rate ") + axes[a], palette(a), [&, a](const Sample& s) {
-          return bus_motion(model, s.y.data() + L.q(), s.q_dot.data()).rate[a];
+        added.push_back(series(tr, std::string("rate ") + axes[a], palette(a), [&, a](const sim::Sample& s) {
+          return sim::bus_motion(model, s.y.data() + L.q(), s.q_dot.data()).rate[a];
         }));
         added.back().dashed = true;
       }
@@ -142,7 +143,8 @@ void add_curves(PlotSpec& spec, PlotKind kind, const Scene& scene, const Traject
 
 }  // namespace
 
-PlotSpec trajectory_plot(PlotKind kind, const Scene& scene, const Trajectory& trajectory, const PlotChoice& choice) {
+PlotSpec trajectory_plot(PlotKind kind, const sim::Scene& scene, const sim::Trajectory& trajectory,
+                         const PlotChoice& choice) {
   PlotSpec spec;
   spec.x_label = "time, s";
   spec.x_range = choice.time_range;
@@ -178,7 +180,7 @@ PlotSpec trajectory_plot(PlotKind kind, const Scene& scene, const Trajectory& tr
   for (const ComparedRun& other : choice.others)
     if (other.trajectory && !other.trajectory->empty()) add_curves(spec, kind, scene, *other.trajectory, &other, choice);
   add_curves(spec, kind, scene, trajectory, nullptr, choice);
-  for (const LatchEvent& e : trajectory.events)
+  for (const sim::LatchEvent& e : trajectory.events)
     if (spec.events.empty() || std::abs(spec.events.back() - e.t) > 1e-6) spec.events.push_back(e.t);
   return spec;
 }
@@ -195,7 +197,7 @@ const char* plot_kind_name(PlotKind kind) {
   return "?";
 }
 
-std::vector<PlotKind> plot_kinds(const Scene& scene) {
+std::vector<PlotKind> plot_kinds(const sim::Scene& scene) {
   std::vector<PlotKind> kinds{PlotKind::angles, PlotKind::rates};
   if (!scene.loops.empty()) kinds.push_back(PlotKind::residuals);
   kinds.push_back(PlotKind::loads);
@@ -204,7 +206,7 @@ std::vector<PlotKind> plot_kinds(const Scene& scene) {
   return kinds;
 }
 
-std::vector<NamedPlot> trajectory_plots(const Scene& scene, const Trajectory& trajectory, int max_joints) {
+std::vector<NamedPlot> trajectory_plots(const sim::Scene& scene, const sim::Trajectory& trajectory, int max_joints) {
   static const char* files[] = {"angles.png", "rates.png", "residuals.png", "loads.png", "energy.png", "bus.png"};
   std::vector<NamedPlot> plots;
   for (PlotKind kind : plot_kinds(scene)) {

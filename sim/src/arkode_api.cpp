@@ -3,7 +3,7 @@
 #include <arkode/arkode_arkstep.h>
 #include <arkode/arkode_erkstep.h>
 
-namespace unfurl {
+namespace unfurl::sim {
 
 namespace {
 
@@ -63,4 +63,4 @@ const ArkodeApi& dirk_api() {
   return api;
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

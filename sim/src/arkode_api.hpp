@@ -8,7 +8,7 @@
 #include <sundials/sundials_linearsolver.h>
 #include <sundials/sundials_matrix.h>
 
-namespace unfurl {
+namespace unfurl::sim {
 
 struct ArkodeApi {
   bool implicit;
@@ -39,4 +39,4 @@ struct ArkodeApi {
 const ArkodeApi& erk_api();
 const ArkodeApi& dirk_api();
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -4,7 +4,7 @@
 
 #include <cstdlib>
 
-namespace unfurl {
+namespace unfurl::sim {
 
 using sundials::check;
 
@@ -140,4 +140,4 @@ double ArkodeIntegrator::last_step() const {
   return h;
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

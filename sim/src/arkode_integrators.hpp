@@ -11,7 +11,7 @@
 #include "unfurl/sim/integrator.hpp"
 #include "sundials_support.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 class ArkodeIntegrator : public Integrator {
  public:
@@ -49,4 +49,4 @@ class ArkodeIntegrator : public Integrator {
   std::string last_error_;
 };
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

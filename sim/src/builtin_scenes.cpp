@@ -2,7 +2,7 @@
 
 #include "unfurl/sim/scene_file.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 const std::map<std::string, std::string>& builtin_scene_texts();  // generated
 
@@ -31,4 +31,4 @@ Scene load_builtin_scene(const std::string& name, const std::vector<Override>& o
   return read_builtin_scene(name, overrides).scene;
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

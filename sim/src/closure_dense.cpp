@@ -7,7 +7,7 @@
 #include "unfurl/sim/closure_solver.hpp"
 #include "unfurl/sim/mobility.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 namespace {
 
@@ -58,4 +58,4 @@ std::unique_ptr<ClosureSolver> make_closure_solver(ClosureSolverKind kind, const
                : make_sparse_closure_solver(model, loops, components);
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -23,7 +23,7 @@
 
 #include "unfurl/sim/closure_solver.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 namespace {
 
@@ -240,4 +240,4 @@ std::unique_ptr<ClosureSolver> make_sparse_closure_solver(const Model& model, co
   return std::make_unique<SparseClosureSolver>(model, loops, components);
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -5,7 +5,7 @@
 
 #include <cstdlib>
 
-namespace unfurl {
+namespace unfurl::sim {
 
 using sundials::check;
 
@@ -153,4 +153,4 @@ double CvodeIntegrator::current_step() const {
   return h;
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

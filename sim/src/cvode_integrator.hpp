@@ -9,7 +9,7 @@
 #include "unfurl/sim/integrator.hpp"
 #include "sundials_support.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 class CvodeIntegrator : public Integrator {
  public:
@@ -47,4 +47,4 @@ class CvodeIntegrator : public Integrator {
   std::string last_error_;
 };
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace unfurl {
+namespace unfurl::sim {
 
 namespace {
 
@@ -41,4 +41,4 @@ void DissipationMeter::advance(Integrator& integrator, double t) {
   t_ = t;
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

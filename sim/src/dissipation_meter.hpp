@@ -9,7 +9,7 @@
 #include "unfurl/sim/dynamics.hpp"
 #include "unfurl/sim/integrator.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 class DissipationMeter {
  public:
@@ -31,4 +31,4 @@ class DissipationMeter {
   std::vector<double> y_, ydot_;
 };
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -6,7 +6,7 @@
 
 #include "newton_preconditioner.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 namespace {
 
@@ -279,9 +279,15 @@ bool Dynamics::observe(double t, const double* y, Observation& out) {
     const ForceElement& e = *scene_.elements[k];
     const double V = e.potential_energy(element_state(k, y + L.q(), w_.data(), out.poses, v_, model.base_velocity));
     switch (e.energy_store()) {
-      case EnergyStore::springs: E.springs += V; break;
-      case EnergyStore::latches: E.latches += V; break;
-      case EnergyStore::gravity: E.gravity += V; break;
+      case EnergyStore::springs:
+        E.springs += V;
+        break;
+      case EnergyStore::latches:
+        E.latches += V;
+        break;
+      case EnergyStore::gravity:
+        E.gravity += V;
+        break;
     }
   }
   out.momentum = system_momentum(model, out.poses, v_);
@@ -298,4 +304,4 @@ bool Dynamics::observe(double t, const double* y, Observation& out) {
   return true;
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

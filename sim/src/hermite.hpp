@@ -3,7 +3,7 @@
 // recorded trajectory (q with its rates dq).
 #pragma once
 
-namespace unfurl {
+namespace unfurl::sim {
 
 struct Hermite {
   double t0, t1;
@@ -25,4 +25,4 @@ struct Hermite {
   }
 };
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -6,7 +6,7 @@
 #include "cvode_integrator.hpp"
 #include "rk4_integrator.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 SolverStats& SolverStats::operator+=(const SolverStats& segment) {
   steps += segment.steps;
@@ -53,4 +53,4 @@ std::unique_ptr<Integrator> make_integrator(IntegratorKind kind, Dynamics& dynam
   return nullptr;
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

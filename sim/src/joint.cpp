@@ -1,6 +1,6 @@
 #include "unfurl/sim/joint.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 const char* joint_type_name(JointType type) {
   switch (type) {
@@ -212,4 +212,4 @@ void Joint::neutral_positions(double* q) const {
   if (has_quaternion()) q[quaternion_offset()] = 1;
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -1,6 +1,6 @@
 #include "unfurl/sim/kinematics.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 void body_poses(const Model& model, const double* q, std::vector<Pose>& poses) {
   poses.resize(model.size());
@@ -33,4 +33,4 @@ void rates_from_position_rates(const Model& model, const double* q, const double
   }
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

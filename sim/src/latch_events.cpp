@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <limits>
 
-namespace unfurl {
+namespace unfurl::sim {
 
 namespace {
 constexpr int kBisections = 60;
@@ -136,4 +136,4 @@ void LatchEvents::engage(const LatchGroup& group, Integrator& integrator, double
   }
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -20,7 +20,7 @@
 #include "unfurl/sim/dynamics.hpp"
 #include "unfurl/sim/integrator.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 struct LatchRoot {
   int latch = 0;
@@ -65,4 +65,4 @@ class LatchEvents {
   std::vector<double> y_, ydot_, rate_lo_, rate_hi_, y_lo_, y_hi_;
 };
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -1,6 +1,6 @@
 #include "unfurl/sim/loads.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 const char* wrench_component_name(int axis) {
   static const char* names[] = {"fx", "fy", "fz", "mx", "my", "mz"};
@@ -13,4 +13,4 @@ int find_load_column(const std::vector<LoadColumn>& columns, const std::string& 
   return -1;
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

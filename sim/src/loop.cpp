@@ -2,7 +2,7 @@
 
 #include "unfurl/sim/loop.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 ClosureError closure_error(const Pose& body, const Pose& image) {
   const Eigen::AngleAxisd relative(image.rotation * body.rotation.transpose());
@@ -20,4 +20,4 @@ Vec6 closure_mismatch(const Pose& body, const Pose& image) {
   return g;
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

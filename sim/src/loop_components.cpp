@@ -3,7 +3,7 @@
 #include <cmath>
 #include <random>
 
-namespace unfurl {
+namespace unfurl::sim {
 
 std::vector<LoopComponent> active_loop_components(const Model& model, const std::vector<Loop>& loops,
                                                   const std::vector<double>& q0, Sweep& sweep) {
@@ -86,4 +86,4 @@ void geometric_gap(const std::vector<Loop>& loops, const std::vector<LoopCompone
   }
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

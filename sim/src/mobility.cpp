@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace unfurl {
+namespace unfurl::sim {
 
 Mobility::Mobility(const Model& model, const std::vector<Loop>& loops, const std::vector<LoopComponent>& components)
     : loops_(loops),
@@ -71,4 +71,4 @@ double Mobility::largest_eigenvalue(const Sweep& sweep) {
   return lambda;
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

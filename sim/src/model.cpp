@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-namespace unfurl {
+namespace unfurl::sim {
 
 Mat3 Body::inertia_origin() const {
   return inertia_com + mass * (com.squaredNorm() * Mat3::Identity() - com * com.transpose());
@@ -77,10 +77,14 @@ namespace {
 // Whether velocity entry k of a joint of this type is a translation.
 bool translational_rate(JointType type, int k) {
   switch (type) {
-    case JointType::prismatic: return true;
-    case JointType::planar: return k < 2;
-    case JointType::free: return k < 3;
-    default: return false;
+    case JointType::prismatic:
+      return true;
+    case JointType::planar:
+      return k < 2;
+    case JointType::free:
+      return k < 3;
+    default:
+      return false;
   }
 }
 
@@ -116,4 +120,4 @@ std::optional<int> Model::find_joint(const std::string& name) const {
   return std::nullopt;
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace unfurl {
+namespace unfurl::sim {
 
 SystemMomentum system_momentum(const Model& model, const std::vector<Pose>& poses, const std::vector<Vec6>& v) {
   SystemMomentum out;
@@ -46,4 +46,4 @@ double rotation_angle_between(const Eigen::Vector4d& a, const Eigen::Vector4d& b
   return 2 * std::acos(std::min(1.0, std::abs(a.normalized().dot(b.normalized()))));
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -4,7 +4,7 @@
 
 #include "unfurl/sim/dynamics.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 NewtonPreconditioner::NewtonPreconditioner(Dynamics& dynamics)
     : dynamics_(dynamics),
@@ -40,8 +40,9 @@ void NewtonPreconditioner::setup(const double* y, const double* ydot, double gam
   const std::vector<Pose> no_poses;
   const std::vector<Vec6> no_velocities;
   for (std::size_t k = 0; k < scene.elements.size(); ++k)
-    scene.elements[k]->add_joint_stiffness(dynamics_.element_state(k, q, w_.data(), no_poses, no_velocities, Vec6::Zero()),
-                                           RatesOut(stiffness_.data()), RatesOut(damping_.data()));
+    scene.elements[k]->add_joint_stiffness(
+        dynamics_.element_state(k, q, w_.data(), no_poses, no_velocities, Vec6::Zero()), RatesOut(stiffness_.data()),
+        RatesOut(damping_.data()));
   for (int c = 0; c < model.nv; ++c) diagonal_[c] = gamma * damping_[c] + gamma * gamma * stiffness_[c];
   std::copy_n(q, model.nq, q_.begin());
   sweep_.set_configuration(q, diagonal_.data());
@@ -87,4 +88,4 @@ void NewtonPreconditioner::solve(const double* r, double* z) {
   for (int c = 0; c < L.m; ++c) z[L.u() + c] = r[L.u() + c] + gamma * g_dot_[c];
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

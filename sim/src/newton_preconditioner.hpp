@@ -20,7 +20,7 @@
 
 #include "unfurl/sim/sweep.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 class Dynamics;
 
@@ -49,4 +49,4 @@ class NewtonPreconditioner {
   std::vector<Vec6> phi_, v_;
 };
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

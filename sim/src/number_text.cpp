@@ -2,7 +2,7 @@
 
 #include <charconv>
 
-namespace unfurl {
+namespace unfurl::sim {
 
 std::string format_number(double x) {
   char buf[32];
@@ -10,4 +10,4 @@ std::string format_number(double x) {
   return std::string(buf, r.ptr);
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -2,7 +2,7 @@
 
 #include <limits>
 
-namespace unfurl {
+namespace unfurl::sim {
 
 Regulator::Regulator(const Model& model, const std::vector<Loop>& loops, std::vector<LoopComponent> components,
                      const RegulatorSettings& settings)
@@ -42,7 +42,7 @@ void Regulator::calibrate(const Sweep& sweep) {
 }
 
 void Regulator::residual_rate(const std::vector<Vec6>& v, double* g_dot) const {
-  unfurl::residual_rate(loops_, components_, v, g_dot);
+  sim::residual_rate(loops_, components_, v, g_dot);
 }
 
 void Regulator::gap(const std::vector<Pose>& poses, double* g) const {
@@ -86,4 +86,4 @@ double Regulator::energy(const double* g, const double* u) {
   return 0.5 * v2 * s.dot(solved_.col(0));
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

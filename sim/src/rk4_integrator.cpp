@@ -4,7 +4,7 @@
 
 #include "hermite.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 Rk4Integrator::Rk4Integrator(Dynamics& dynamics, const RunSettings& settings, double t0,
                              const std::vector<double>& y0)
@@ -125,4 +125,4 @@ void Rk4Integrator::interpolate_rate(double t, double* ydot) {
   for (std::size_t j = 0; j < y0_.size(); ++j) ydot[j] = step.rate(y0_[j], f0_[j], y1_[j], f1_[j], t);
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -8,7 +8,7 @@
 
 #include "unfurl/sim/integrator.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 class Rk4Integrator : public Integrator {
  public:
@@ -39,4 +39,4 @@ class Rk4Integrator : public Integrator {
   SolverStats stats_;
 };
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

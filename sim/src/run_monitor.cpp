@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace unfurl {
+namespace unfurl::sim {
 
 RunMonitor::RunMonitor(Dynamics& dynamics) : dynamics_(dynamics) {
   peaks_.latch_torque.resize(dynamics.latch_count());
@@ -44,4 +44,4 @@ void RunMonitor::step_taken(double h) {
   min_step_ = std::min(min_step_, h);
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

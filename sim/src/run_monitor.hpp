@@ -12,7 +12,7 @@
 #include "unfurl/sim/dynamics.hpp"
 #include "unfurl/sim/loads.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 class RunMonitor {
  public:
@@ -43,4 +43,4 @@ class RunMonitor {
   double min_step_after_restart_ = std::numeric_limits<double>::infinity();
 };
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -1,6 +1,6 @@
 #include "unfurl/sim/run_settings.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 const char* integrator_name(IntegratorKind kind) {
   switch (kind) {
@@ -26,4 +26,4 @@ std::optional<IntegratorKind> parse_integrator(const std::string& name) {
   return std::nullopt;
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -4,7 +4,7 @@
 
 #include "unfurl/sim/elements/gravity.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 Vec3 Scene::gravity() const {
   Vec3 g = Vec3::Zero();
@@ -17,7 +17,8 @@ std::vector<LoadColumn> Scene::load_columns(std::vector<std::vector<int>>* of_el
   if (of_element) of_element->assign(elements.size(), {});
   for (std::size_t k = 0; k < elements.size(); ++k) {
     for (const LoadColumn& c : elements[k]->load_columns(model)) {
-      const auto same = std::find_if(columns.begin(), columns.end(), [&](const LoadColumn& o) { return o.name == c.name; });
+      const auto same =
+          std::find_if(columns.begin(), columns.end(), [&](const LoadColumn& o) { return o.name == c.name; });
       if (of_element) (*of_element)[k].push_back(static_cast<int>(same - columns.begin()));
       if (same == columns.end()) columns.push_back(c);
     }
@@ -42,4 +43,4 @@ std::vector<std::string> Scene::element_paths(std::size_t k) const {
   return paths;
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

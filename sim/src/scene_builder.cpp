@@ -3,7 +3,7 @@
 #include "unfurl/sim/elements/gravity.hpp"
 #include "unfurl/sim/scene_validation.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 namespace {
 
@@ -49,9 +49,7 @@ SceneBuilder& SceneBuilder::free_base(const Body& bus, Visual visual) {
   return *this;
 }
 
-bool SceneBuilder::has_body(const std::string& name) const {
-  return scene_.model.find_body(name).has_value();
-}
+bool SceneBuilder::has_body(const std::string& name) const { return scene_.model.find_body(name).has_value(); }
 
 int SceneBuilder::body_index(const std::string& name, const std::string& field) const {
   const std::optional<int> i = scene_.model.find_body(name);
@@ -67,7 +65,8 @@ int SceneBuilder::joint_index(const std::string& name, const std::string& field)
 
 SceneBuilder& SceneBuilder::body(const Body& body, const std::string& parent, Joint joint, Visual visual) {
   const std::string field = body_list_field(scene_);
-  if (has_body(body.name)) throw SceneInvalid(field + " (" + body.name + ")", "a body named '" + body.name + "' already exists");
+  if (has_body(body.name))
+    throw SceneInvalid(field + " (" + body.name + ")", "a body named '" + body.name + "' already exists");
   if (!has_body(parent)) throw SceneInvalid(field + " (" + body.name + ").parent", "unknown parent '" + parent + "'");
   if (joint.name.empty()) joint.name = body.name;
   for (const Joint& other : scene_.model.joints)
@@ -193,4 +192,4 @@ Joint prismatic(std::string name, const Vec3& axis, const Vec3& parent_point, co
 
 }  // namespace joints
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -2,7 +2,7 @@
 
 #include <sstream>
 
-namespace unfurl {
+namespace unfurl::sim {
 
 namespace {
 
@@ -114,8 +114,9 @@ void apply_override(YAML::Node& root, const Override& o, input::YamlFields& fiel
       const std::size_t index = element_index(cur, part);
       const bool numeric = is_index(part);
       if (index == cur.size())
-        throw input::InputError(origin + ": no element '" + part + "' in the list (it has " + std::to_string(cur.size()) +
-                         (numeric ? ", numbered from 0)" : "; give an index or a name)"));
+        throw input::InputError(origin + ": no element '" + part + "' in the list (it has " +
+                                std::to_string(cur.size()) +
+                                (numeric ? ", numbered from 0)" : "; give an index or a name)"));
       if (last) {
         cur[index] = value;
       } else {
@@ -156,4 +157,4 @@ Override parse_override(const std::string& assignment) {
   return {assignment.substr(0, eq), assignment.substr(eq + 1)};
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

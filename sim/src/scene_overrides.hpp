@@ -7,11 +7,11 @@
 #include "unfurl/sim/scene_file.hpp"
 #include "unfurl/input/yaml_fields.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 // Sets the value at the override's path in root (creating mappings on the
 // way), and tells `fields` where the new node came from. Throws input::InputError
 // naming the override.
 void apply_override(YAML::Node& root, const Override& o, input::YamlFields& fields);
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -16,7 +16,7 @@
 #include "unfurl/sim/scene_file.hpp"
 #include "unfurl/sim/scene_validation.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 namespace {
 
@@ -472,4 +472,4 @@ Scene load_scene_file(const std::string& path, const std::vector<Override>& over
   return read_scene_file(path, overrides).scene;
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -7,7 +7,7 @@
 #include "unfurl/sim/kinematics.hpp"
 #include "unfurl/sim/number_text.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 namespace {
 
@@ -56,8 +56,9 @@ void check_joint(Scene& scene, int i) {
   const std::string field = joint_field(scene, i);
   check_name(j.name, field + ".name");
   if (j.type == JointType::free && i != 0)
-    throw SceneInvalid(field + ".type",
-                       "a free joint is for a free-floating base only: give the base `free: true` and its mass properties");
+    throw SceneInvalid(
+        field + ".type",
+        "a free joint is for a free-floating base only: give the base `free: true` and its mass properties");
   const bool axial = j.type == JointType::revolute || j.type == JointType::prismatic || j.type == JointType::planar ||
                      j.type == JointType::universal;
   const auto unit = [&](Vec3& axis, const char* key) {
@@ -95,8 +96,9 @@ void validate_model(Scene& scene) {
   }
   model.finalize();
   if (model.nq == 0)
-    throw SceneInvalid("bodies", "every joint is fixed: there is nothing to move or integrate (give a joint a type "
-                                 "that moves)");
+    throw SceneInvalid("bodies",
+                       "every joint is fixed: there is nothing to move or integrate (give a joint a type "
+                       "that moves)");
   if (scene.q0.empty()) {
     scene.q0.assign(model.nq, 0.0);
     for (int i = 0; i < model.size(); ++i)
@@ -138,15 +140,17 @@ void check_loops(const Scene& scene) {
     if (loop.image < 0 || loop.image >= model.size()) throw SceneInvalid(field + ".image", "no such body");
     if (loop.body == loop.image) throw SceneInvalid(field + ".image", "a body cannot be its own image");
     if (on_one_branch(model, loop.body, loop.image))
-      throw SceneInvalid(field + ".image", "'" + model.bodies[loop.image].name + "' and '" + model.bodies[loop.body].name +
+      throw SceneInvalid(field + ".image", "'" + model.bodies[loop.image].name + "' and '" +
+                                               model.bodies[loop.body].name +
                                                "' lie on one branch of the tree (one is the other's ancestor): they do "
                                                "not close a loop");
     for (std::size_t k = 0; k < l; ++k) {
       const Loop& other = scene.loops[k];
-      if (other.name == loop.name) throw SceneInvalid(field + ".name", "a loop named '" + loop.name + "' already exists");
+      if (other.name == loop.name)
+        throw SceneInvalid(field + ".name", "a loop named '" + loop.name + "' already exists");
       if (other.body == loop.body || other.image == loop.image || other.body == loop.image || other.image == loop.body)
-        throw SceneInvalid(field, "this loop shares a split body with loop '" + other.name +
-                                      "' (each loop splits a body of its own)");
+        throw SceneInvalid(
+            field, "this loop shares a split body with loop '" + other.name + "' (each loop splits a body of its own)");
     }
     const ClosureError e = closure_error(poses[loop.body], poses[loop.image]);
     if (e.distance > scene.closure_tolerance || e.angle > scene.closure_tolerance) {
@@ -154,7 +158,8 @@ void check_loops(const Scene& scene) {
       s.precision(6);
       s << "loop '" << loop.name << "' does not close at the initial state: the origins of '"
         << model.bodies[loop.body].name << "' and '" << model.bodies[loop.image].name << "' are " << e.distance
-        << " m apart and their frames " << e.angle << " rad apart (closure_tolerance " << scene.closure_tolerance << ")";
+        << " m apart and their frames " << e.angle << " rad apart (closure_tolerance " << scene.closure_tolerance
+        << ")";
       throw SceneInvalid(field, s.str());
     }
   }
@@ -193,8 +198,8 @@ void check_run(const RunSettings& run) {
                                          "); raise it if the memory is there");
   const double steps = run.t_end / run.dt;
   if (run.integrator == IntegratorKind::rk4 && steps > static_cast<double>(run.max_steps))
-    throw SceneInvalid("run.dt", "t_end / dt makes " + format_number(steps) + " fixed steps, more than run.max_steps (" +
-                                     std::to_string(run.max_steps) + ")");
+    throw SceneInvalid("run.dt", "t_end / dt makes " + format_number(steps) +
+                                     " fixed steps, more than run.max_steps (" + std::to_string(run.max_steps) + ")");
 }
 
 }  // namespace
@@ -232,12 +237,13 @@ void validate(Scene& scene) {
   for (std::size_t k = 0; k < scene.elements.size(); ++k) scene.elements[k]->validate(scene, element_field(scene, k));
   check_positive(scene.closure_tolerance, "closure_tolerance");
   if (scene.closure_tolerance > kLargestClosureTolerance)
-    throw SceneInvalid("closure_tolerance", "at most " + format_number(kLargestClosureTolerance) +
-                                                " m or rad: a loop opener than that is not a loop (the regulator would snap "
-                                                "it shut)");
+    throw SceneInvalid("closure_tolerance",
+                       "at most " + format_number(kLargestClosureTolerance) +
+                           " m or rad: a loop opener than that is not a loop (the regulator would snap "
+                           "it shut)");
   check_loops(scene);
   check_regulator(scene.regulator);
   check_run(scene.run);
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

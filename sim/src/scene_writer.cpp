@@ -7,7 +7,7 @@
 #include "unfurl/sim/number_text.hpp"
 #include "unfurl/sim/scene_file.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 namespace {
 
@@ -91,23 +91,23 @@ void elements(std::ostream& out, const Scene& scene) {
   list("dampers", scene.elements_of<JointDamper>(),
        [&](const JointDamper& d) { return "joint: " + joint(d.joint) + ", damping: " + format_number(d.damping); });
   list("friction", scene.elements_of<JointFriction>(), [&](const JointFriction& f) {
-    return "joint: " + joint(f.joint) + ", coulomb: " + format_number(f.coulomb) + ", viscous: " +
-           format_number(f.viscous) + ", velocity_scale: " + format_number(f.velocity_scale);
+    return "joint: " + joint(f.joint) + ", coulomb: " + format_number(f.coulomb) +
+           ", viscous: " + format_number(f.viscous) + ", velocity_scale: " + format_number(f.velocity_scale);
   });
   list("latches", scene.latches(), [&](const Latch& l) {
-    return "joint: " + joint(l.joint) + ", position: " + format_number(l.position) + ", stiffness: " +
-           format_number(l.stiffness) + ", damping: " + format_number(l.damping) + ", free_play: " +
-           format_number(l.free_play);
+    return "joint: " + joint(l.joint) + ", position: " + format_number(l.position) +
+           ", stiffness: " + format_number(l.stiffness) + ", damping: " + format_number(l.damping) +
+           ", free_play: " + format_number(l.free_play);
   });
   list("loads", scene.elements_of<AppliedForce>(), [&](const AppliedForce& l) {
-    return "body: " + body(l.body) + ", force: " + vec(l.force) + ", torque: " + vec(l.torque) + ", point: " +
-           vec(l.point) + ", frame: " + (l.in_base_frame ? "base" : "body");
+    return "body: " + body(l.body) + ", force: " + vec(l.force) + ", torque: " + vec(l.torque) +
+           ", point: " + vec(l.point) + ", frame: " + (l.in_base_frame ? "base" : "body");
   });
   list("point_springs", scene.elements_of<PointSpring>(), [&](const PointSpring& s) {
-    return (s.named ? "name: " + s.name + ", " : std::string()) + "body_a: " + body(s.body_a) + ", point_a: " +
-           vec(s.point_a) + ", body_b: " + body(s.body_b) + ", point_b: " + vec(s.point_b) + ", stiffness: " +
-           format_number(s.stiffness) + ", rest_length: " + format_number(s.rest_length) + ", damping: " +
-           format_number(s.damping) + ", tension_only: " + (s.tension_only ? "true" : "false");
+    return (s.named ? "name: " + s.name + ", " : std::string()) + "body_a: " + body(s.body_a) +
+           ", point_a: " + vec(s.point_a) + ", body_b: " + body(s.body_b) + ", point_b: " + vec(s.point_b) +
+           ", stiffness: " + format_number(s.stiffness) + ", rest_length: " + format_number(s.rest_length) +
+           ", damping: " + format_number(s.damping) + ", tension_only: " + (s.tension_only ? "true" : "false");
   });
 }
 
@@ -185,7 +185,8 @@ std::string write_scene_text(const SceneFile& file, const std::string& comment) 
   out << "\nbodies:\n";
   for (int i = bus ? 1 : 0; i < m.size(); ++i) {
     const int k = m.parent[i];
-    out << "  - name: " << m.bodies[i].name << "\n    parent: " << (k == kBase ? m.base_name : m.bodies[k].name) << "\n";
+    out << "  - name: " << m.bodies[i].name << "\n    parent: " << (k == kBase ? m.base_name : m.bodies[k].name)
+        << "\n";
     mass_properties(out, m.bodies[i], "    ");
     if (!file.visuals.bodies[i].mesh.empty()) out << "    mesh: " << visual(file.visuals.bodies[i]) << "\n";
     out << "    joint: " << joint_text(m.joints[i]) << "\n";
@@ -209,4 +210,4 @@ SceneFile apply_overrides(const SceneFile& file, const std::vector<Override>& ov
   return read_scene_text(write_scene_text(file), file.scene.source, overrides);
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

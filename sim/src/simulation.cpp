@@ -9,7 +9,7 @@
 #include "latch_events.hpp"
 #include "run_monitor.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 const char* run_status_name(RunStatus status) {
   switch (status) {
@@ -91,7 +91,8 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
 
   std::unique_ptr<Integrator> integrator;
   try {
-    if (result.status == RunStatus::finished) integrator = make_integrator(settings.integrator, dynamics, settings, t0, y);
+    if (result.status == RunStatus::finished)
+      integrator = make_integrator(settings.integrator, dynamics, settings, t0, y);
   } catch (const std::exception& e) {
     fail(t0, 0, "integrator", e.what());
   }
@@ -182,4 +183,4 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
   return result;
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <limits>
 
-namespace unfurl {
+namespace unfurl::sim {
 
 RunSummary summarize(const Scene& scene, const RunResult& result) {
   RunSummary s;
@@ -58,4 +58,4 @@ RunSummary::FreeBus summarize_free_bus(const Model& model, const Trajectory& tr)
   return bus;
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -9,7 +9,7 @@
 
 #include "newton_preconditioner.hpp"
 
-namespace unfurl::sundials {
+namespace unfurl::sim::sundials {
 
 void check(int flag, const char* call) {
   if (flag < 0) throw std::runtime_error(std::string(call) + " failed (flag " + std::to_string(flag) + ")");
@@ -96,4 +96,4 @@ void capture_error(int, const char* module, const char* function, char* message,
   *static_cast<std::string*>(sink) = std::string(module) + " " + function + ": " + message;
 }
 
-}  // namespace unfurl::sundials
+}  // namespace unfurl::sim::sundials

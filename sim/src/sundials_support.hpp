@@ -12,7 +12,7 @@
 
 #include "unfurl/sim/dynamics.hpp"
 
-namespace unfurl::sundials {
+namespace unfurl::sim::sundials {
 
 // Throws std::runtime_error naming the call when a SUNDIALS call fails.
 void check(int flag, const char* call);
@@ -88,4 +88,4 @@ DenseJacobianFn dense_jacobian_for(const Dynamics& dynamics);
 // letting it print.
 void capture_error(int code, const char* module, const char* function, char* message, void* sink);
 
-}  // namespace unfurl::sundials
+}  // namespace unfurl::sim::sundials

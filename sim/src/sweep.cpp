@@ -3,7 +3,7 @@
 #include <Eigen/Cholesky>
 #include <algorithm>
 
-namespace unfurl {
+namespace unfurl::sim {
 
 Sweep::Sweep(const Model& model)
     : model_(model),
@@ -20,8 +20,8 @@ Sweep::Sweep(const Model& model)
     M_[i] = model.bodies[i].spatial_mass();
     if (model.joints[i].dof() > 1) {
       multi_[i] = static_cast<int>(multi_axes_.size());
-      multi_axes_.push_back({model.joints[i].motion_axes(q_.data() + std::max(0, model.first_position[i].value)), Mat6::Zero(),
-                             Mat6::Zero(), model.joints[i].dof(), model.joints[i].has_varying_axes()});
+      multi_axes_.push_back({model.joints[i].motion_axes(q_.data() + std::max(0, model.first_position[i].value)),
+                             Mat6::Zero(), Mat6::Zero(), model.joints[i].dof(), model.joints[i].has_varying_axes()});
     }
   }
 }
@@ -104,7 +104,8 @@ void Sweep::accelerations(const std::vector<Vec6>& v, const double* dq, const st
     if (multi_[i] >= 0) {
       const MultiAxis& J = multi_axes_[multi_[i]];
       a[i] = motion_cross(v[i], J.A * rates_of(i, dq));
-      if (J.varying) a[i] += model_.joints[i].motion_axes_rate(q_.data() + model_.first_position[i].value, dq + c) * rates_of(i, dq);
+      if (J.varying)
+        a[i] += model_.joints[i].motion_axes_rate(q_.data() + model_.first_position[i].value, dq + c) * rates_of(i, dq);
       const Vec6 u = rates_of(i, Q) - J.A.transpose() * bias[i];
       for (int r = 0; r < J.n; ++r) ddq[c + r] = u[r];
     } else if (c >= 0) {
@@ -149,7 +150,9 @@ void Sweep::gyroscopic(const std::vector<Vec6>& v, const std::vector<Vec6>& mu, 
     if (multi_[i] >= 0) {
       const MultiAxis& J = multi_axes_[multi_[i]];
       Vec6 dp_i = -J.A.transpose() * omega_times(v[i], mu[i]);
-      if (J.varying) dp_i += model_.joints[i].motion_axes_rate(q_.data() + model_.first_position[i].value, w + c).transpose() * mu[i];
+      if (J.varying)
+        dp_i +=
+            model_.joints[i].motion_axes_rate(q_.data() + model_.first_position[i].value, w + c).transpose() * mu[i];
       for (int r = 0; r < J.n; ++r) dp[c + r] = dp_i[r];
     } else if (c >= 0) {
       dp[c] = -A_[i].dot(omega_times(v[i], mu[i]));
@@ -157,4 +160,4 @@ void Sweep::gyroscopic(const std::vector<Vec6>& v, const std::vector<Vec6>& mu, 
   }
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -4,7 +4,7 @@
 
 #include "hermite.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 void Trajectory::coordinates_at(double t, std::vector<double>& q) const {
   q.resize(layout.nq);
@@ -22,7 +22,8 @@ void Trajectory::coordinates_at(double t, std::vector<double>& q) const {
   const Sample& b = *after;
   const Sample& a = *(after - 1);
   const Hermite span{a.t, b.t};
-  for (int c = 0; c < layout.nq; ++c) q[c] = span.value(a.y[layout.q() + c], a.q_dot[c], b.y[layout.q() + c], b.q_dot[c], t);
+  for (int c = 0; c < layout.nq; ++c)
+    q[c] = span.value(a.y[layout.q() + c], a.q_dot[c], b.y[layout.q() + c], b.q_dot[c], t);
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -4,35 +4,35 @@
 #include <cmath>
 #include <limits>
 
-namespace unfurl {
+namespace unfurl::studies {
 
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr std::size_t kOverlayPoints = 400;
 
-std::vector<std::string> latch_joints(const Scene& scene) {
+std::vector<std::string> latch_joints(const sim::Scene& scene) {
   std::vector<std::string> names;
-  for (const Latch* l : scene.latches()) names.push_back(scene.model.joints[l->joint].name);
+  for (const sim::Latch* l : scene.latches()) names.push_back(scene.model.joints[l->joint].name);
   return names;
 }
 
 // The case scene's latch on `joint` that the nominal scene also has (a
 // stuck hinge's stop comes after them), or -1.
-int case_latch(const Scene& scene, const std::string& joint) {
-  const std::vector<const Latch*> latches = scene.latches();
+int case_latch(const sim::Scene& scene, const std::string& joint) {
+  const std::vector<const sim::Latch*> latches = scene.latches();
   for (int l = 0; l < static_cast<int>(latches.size()); ++l)
     if (scene.model.joints[latches[l]->joint].name == joint) return l;
   return -1;
 }
 
-double engagement_time(const Trajectory& tr, int latch) {
-  for (const LatchEvent& e : tr.events)
+double engagement_time(const sim::Trajectory& tr, int latch) {
+  for (const sim::LatchEvent& e : tr.events)
     if (e.latch == latch) return e.t;
   return kNaN;
 }
 
-void record_overlay(const Study& study, const Scene& scene, const Trajectory& tr, CaseResult& r) {
+void record_overlay(const Study& study, const sim::Scene& scene, const sim::Trajectory& tr, CaseResult& r) {
   int joint = 0;
   while (scene.model.joints[joint].name != study.overlay_joint) ++joint;
   const int index = tr.layout.q() + scene.model.first_position[joint].value;
@@ -55,31 +55,31 @@ const char* case_status_name(CaseStatus status) {
 }
 
 const std::vector<std::string>& CaseColumns::headline() {
-  static const std::vector<std::string> names{"deployment_time", "peak_latch_torque", "peak_hinge_force",
-                                              "peak_hinge_moment", "max_closure_gap", "final_energy"};
+  static const std::vector<std::string> names{"deployment_time",   "peak_latch_torque", "peak_hinge_force",
+                                              "peak_hinge_moment", "max_closure_gap",   "final_energy"};
   return names;
 }
 
 std::string output_unit(const std::string& output) {
   const std::string quantity = output.substr(0, output.find('.'));
   static const std::vector<std::pair<std::string, std::string>> units{
-      {"deployment_time", "s"}, {"latch_time", "s"},         {"wall_time", "s"},
+      {"deployment_time", "s"},     {"latch_time", "s"},          {"wall_time", "s"},
       {"peak_latch_torque", "N m"}, {"peak_hinge_moment", "N m"}, {"peak_hinge_force", "N"},
-      {"max_closure_gap", "m"}, {"max_closure_angle", "rad"}, {"final_energy", "J"}};
+      {"max_closure_gap", "m"},     {"max_closure_angle", "rad"}, {"final_energy", "J"}};
   for (const auto& [name, unit] : units)
     if (quantity == name) return unit;
   return "";
 }
 
-CaseColumns case_columns(const Study& study, const Scene& nominal) {
+CaseColumns case_columns(const Study& study, const sim::Scene& nominal) {
   CaseColumns c;
   for (const StudyVariable& v : study.variables) c.inputs.push_back(v.label());
   c.outputs = CaseColumns::headline();
   c.outputs.push_back("max_closure_angle");
   for (const std::string& j : latch_joints(nominal)) c.outputs.push_back("latch_time." + j);
   for (const std::string& j : latch_joints(nominal)) c.outputs.push_back("peak_latch_torque." + j);
-  for (const Joint& j : nominal.model.joints) c.outputs.push_back("peak_hinge_force." + j.name);
-  for (const Joint& j : nominal.model.joints) c.outputs.push_back("peak_hinge_moment." + j.name);
+  for (const sim::Joint& j : nominal.model.joints) c.outputs.push_back("peak_hinge_force." + j.name);
+  for (const sim::Joint& j : nominal.model.joints) c.outputs.push_back("peak_hinge_moment." + j.name);
   c.outputs.push_back("steps");
   c.outputs.push_back("wall_time");
   return c;
@@ -87,16 +87,16 @@ CaseColumns case_columns(const Study& study, const Scene& nominal) {
 
 CaseRun simulate_case(const Study& study, const StudyCase& c, const std::atomic<bool>* cancel) {
   CaseRun out{case_scene(study, c), {}};
-  RunObserver observer;
+  sim::RunObserver observer;
   observer.cancel = cancel;
-  out.run = simulate(out.scene, out.scene.run, observer);
+  out.run = sim::simulate(out.scene, out.scene.run, observer);
   return out;
 }
 
-CaseResult case_result(const Study& study, const Scene& nominal, const StudyCase& c, const CaseRun& run) {
-  const Scene& scene = run.scene;
-  const RunResult& rr = run.run;
-  const Trajectory& tr = rr.trajectory;
+CaseResult case_result(const Study& study, const sim::Scene& nominal, const StudyCase& c, const CaseRun& run) {
+  const sim::Scene& scene = run.scene;
+  const sim::RunResult& rr = run.run;
+  const sim::Trajectory& tr = rr.trajectory;
   CaseResult r;
   r.id = c.id;
   r.failure = c.failure ? c.failure->describe() : "";
@@ -110,9 +110,9 @@ CaseResult case_result(const Study& study, const Scene& nominal, const StudyCase
     torques.push_back(l < 0 ? kNaN : rr.peaks.latch_torque[l].value);
     if (std::isnan(times.back())) unlatched += (unlatched.empty() ? "" : ", ") + joint;
   }
-  if (rr.status == RunStatus::failed) {
+  if (rr.status == sim::RunStatus::failed) {
     r.status = CaseStatus::failed;
-    r.reason = describe(rr.failure);
+    r.reason = sim::describe(rr.failure);
   } else if (!unlatched.empty()) {
     r.status = CaseStatus::not_deployed;
     r.reason = "never latched: " + unlatched;
@@ -156,4 +156,4 @@ double output_value(const CaseColumns& columns, const CaseResult& r, const std::
   return i < r.outputs.size() ? r.outputs[i] : kNaN;
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::studies

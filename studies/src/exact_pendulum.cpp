@@ -5,7 +5,7 @@
 
 #include "unfurl/sim/elements/gravity.hpp"
 
-namespace unfurl {
+namespace unfurl::studies {
 
 double jacobi_sn(double u, double m) {
   // Descending Landen / AGM (Abramowitz and Stegun 16.4): a_n, c_n until
@@ -31,23 +31,23 @@ double ExactPendulum::angle(double t) const {
   return q_eq + 2 * std::asin(k * jacobi_sn(K - omega * t, m));
 }
 
-std::optional<ExactPendulum> exact_pendulum(const Scene& scene) {
-  const Model& model = scene.model;
-  if (model.size() != 1 || model.joints[0].type != JointType::revolute || model.parent[0] != kBase) return {};
-  const Vec3 gravity = scene.gravity();
+std::optional<ExactPendulum> exact_pendulum(const sim::Scene& scene) {
+  const sim::Model& model = scene.model;
+  if (model.size() != 1 || model.joints[0].type != sim::JointType::revolute || model.parent[0] != sim::kBase) return {};
+  const sim::Vec3 gravity = scene.gravity();
   if (!model.base_velocity.isZero(0) || gravity.isZero(0)) return {};
   // Gravity alone acts.
-  if (scene.elements.size() != scene.elements_of<Gravity>().size() || !scene.loops.empty()) return {};
+  if (scene.elements.size() != scene.elements_of<sim::Gravity>().size() || !scene.loops.empty()) return {};
   const bool at_rest = scene.p0.empty() ? scene.dq0[0] == 0 : scene.p0[0] == 0;
   if (!at_rest) return {};
 
-  const Body& body = model.bodies[0];
-  const Joint& joint = model.joints[0];
-  const Vec3 a = joint.axis.normalized();
+  const sim::Body& body = model.bodies[0];
+  const sim::Joint& joint = model.joints[0];
+  const sim::Vec3 a = joint.axis.normalized();
   // The centre of mass from the hinge, across the axis, in the child frame;
   // at angle q it is turned by q about a (frames coincide at q = 0).
-  const Vec3 d = body.com - joint.child_point;
-  const Vec3 d_perp = d - d.dot(a) * a;
+  const sim::Vec3 d = body.com - joint.child_point;
+  const sim::Vec3 d_perp = d - d.dot(a) * a;
   const double I_axis = a.dot(body.inertia_com * a) + body.mass * d_perp.squaredNorm();
   // g . (R(q) d_perp) = alpha cos q + beta sin q, so V = -m rho cos(q - q_eq).
   const double alpha = gravity.dot(d_perp), beta = gravity.dot(a.cross(d_perp));
@@ -62,4 +62,4 @@ std::optional<ExactPendulum> exact_pendulum(const Scene& scene) {
   return p;
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::studies

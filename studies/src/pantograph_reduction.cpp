@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-namespace unfurl {
+namespace unfurl::studies {
 
 namespace {
 
@@ -125,9 +125,9 @@ ReductionPath integrate_reduction(const std::vector<double>& times) {
   return path;
 }
 
-ReductionError reduction_error(const Trajectory& trajectory) {
+ReductionError reduction_error(const sim::Trajectory& trajectory) {
   std::vector<double> times;
-  for (const Sample& s : trajectory.samples) times.push_back(s.t);
+  for (const sim::Sample& s : trajectory.samples) times.push_back(s.t);
   const ReductionPath path = integrate_reduction(times);
   ReductionError error;
   error.latch_time = path.latch_time;
@@ -141,4 +141,4 @@ ReductionError reduction_error(const Trajectory& trajectory) {
   return error;
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::studies

@@ -2,16 +2,16 @@
 
 #include <stdexcept>
 
-namespace unfurl {
+namespace unfurl::studies {
 
-RhsTimingStates rhs_timing_states(Dynamics& dynamics) {
+RhsTimingStates rhs_timing_states(sim::Dynamics& dynamics) {
   RhsTimingStates states;
   std::vector<double>& y = states.a;
   y = dynamics.initial_state();
   std::vector<double> ydot(y.size());
   for (double& x : y) x += 1e-3;
   states.b = y;
-  const StateLayout& L = dynamics.layout();
+  const sim::StateLayout& L = dynamics.layout();
   for (int c = 0; c < L.nq; ++c) states.b[L.q() + c] += 1e-9;
   for (const std::vector<double>* state : {&states.a, &states.b})
     if (!dynamics.rhs(0, state->data(), ydot.data()))
@@ -19,4 +19,4 @@ RhsTimingStates rhs_timing_states(Dynamics& dynamics) {
   return states;
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::studies

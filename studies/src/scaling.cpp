@@ -9,25 +9,25 @@
 #include "unfurl/sim/scene_file.hpp"
 #include "unfurl/sim/summary.hpp"
 
-namespace unfurl {
+namespace unfurl::studies {
 
 std::string family_label(const ScalingScene& s) {
   return s.family + (s.variant.empty() ? "" : " (" + s.variant + ")");
 }
 
-Scene load_scaling_scene(const ScalingScene& s) {
-  std::vector<Override> overrides;
+sim::Scene load_scaling_scene(const ScalingScene& s) {
+  std::vector<sim::Override> overrides;
   for (const auto& [path, value] : s.overrides) overrides.push_back({path, value});
-  const SceneFile file = s.family == "chain"   ? generate_chain(s.size)
-                         : s.family == "zfold" ? generate_zfold(s.size)
-                                               : generate_pantograph(s.size);
-  return apply_overrides(file, overrides).scene;
+  const sim::SceneFile file = s.family == "chain"   ? generate_chain(s.size)
+                              : s.family == "zfold" ? generate_zfold(s.size)
+                                                    : generate_pantograph(s.size);
+  return sim::apply_overrides(file, overrides).scene;
 }
 
 RhsTiming time_right_hand_side(const ScalingScene& s, double seconds) {
   using Clock = std::chrono::steady_clock;
-  const Scene scene = load_scaling_scene(s);
-  Dynamics dynamics(scene);
+  const sim::Scene scene = load_scaling_scene(s);
+  sim::Dynamics dynamics(scene);
   const RhsTimingStates y = rhs_timing_states(dynamics);
   std::vector<double> ydot(y.a.size());
   RhsTiming t;
@@ -56,10 +56,10 @@ RhsTiming time_right_hand_side(const ScalingScene& s, double seconds) {
   return t;
 }
 
-RunTiming time_whole_run(const ScalingScene& s, IntegratorKind integrator, LinearSolverKind linear_solver,
+RunTiming time_whole_run(const ScalingScene& s, sim::IntegratorKind integrator, sim::LinearSolverKind linear_solver,
                          double t_end, double budget_s) {
-  const Scene scene = load_scaling_scene(s);
-  RunSettings run = scene.run;
+  const sim::Scene scene = load_scaling_scene(s);
+  sim::RunSettings run = scene.run;
   run.integrator = integrator;
   run.linear_solver = linear_solver;
   run.t_end = t_end;
@@ -67,24 +67,24 @@ RunTiming time_whole_run(const ScalingScene& s, IntegratorKind integrator, Linea
   run.rtol = 1e-8;
   run.atol = 1e-10;
   run.max_wall_time = budget_s;
-  const RunResult result = simulate(scene, run);
+  const sim::RunResult result = sim::simulate(scene, run);
   RunTiming t;
   t.scene = s;
-  t.method = integrator_name(integrator);
-  if (integrator == IntegratorKind::cvode_bdf || integrator == IntegratorKind::arkode_dirk)
-    t.method += linear_solver == LinearSolverKind::krylov ? ", GMRES + sweep preconditioner" : ", dense Newton";
+  t.method = sim::integrator_name(integrator);
+  if (integrator == sim::IntegratorKind::cvode_bdf || integrator == sim::IntegratorKind::arkode_dirk)
+    t.method += linear_solver == sim::LinearSolverKind::krylov ? ", GMRES + sweep preconditioner" : ", dense Newton";
   t.bodies = scene.model.size();
   t.states = result.trajectory.layout.size();
   t.status = result.status;
-  if (result.status == RunStatus::failed) t.failure = describe(result.failure);
+  if (result.status == sim::RunStatus::failed) t.failure = sim::describe(result.failure);
   t.t_reached = result.trajectory.empty() ? 0 : result.trajectory.t_end();
   t.wall_time_s = result.wall_time_s;
   t.steps = result.stats.steps;
   t.rhs_calls = result.rhs_calls;
   t.jacobians = result.stats.jacobian_evals;
   t.linear_iterations = result.stats.linear_iterations;
-  t.max_closure_gap = summarize(scene, result).max_closure_gap;
+  t.max_closure_gap = sim::summarize(scene, result).max_closure_gap;
   return t;
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::studies

@@ -7,50 +7,51 @@
 #include "unfurl/sim/elements/all.hpp"
 #include "unfurl/sim/scene_builder.hpp"
 
-namespace unfurl {
+namespace unfurl::studies {
 
 namespace {
 
 // The geometry and loads of SCENES.md, shared by the pantograph and z-fold.
 constexpr double kFrameHalf = 0.30, kPanelHalf = 0.60, kChainX = 0.45, kPitch = 0.03;
 constexpr double kFrameMass = 1.2, kPanelMass = 4.0;
-const Vec3 kFrameInertia(0.03606, 0.08106, 0.11700);
-const Vec3 kPanelInertia(0.4802, 0.2702, 0.7500);
+const sim::Vec3 kFrameInertia(0.03606, 0.08106, 0.11700);
+const sim::Vec3 kPanelInertia(0.4802, 0.2702, 0.7500);
 constexpr double kSpring = 0.10, kSpringDamping = 0.02, kLatch = 1000, kLatchDamping = 10;
 const double kOpen = M_PI / 2 - 0.01;  // a(0): 0.01 rad off the stowed stack
 
 // Pivot-line offset of panel k (1-based) of chain A; chain B mirrors it.
 double pivot_offset(int k) { return (k % 2 == 1 ? 1 : -1) * kPitch * k; }
 
-Body box(const std::string& name, double mass, const Vec3& inertia, double share) {
-  Body b;
+sim::Body box(const std::string& name, double mass, const sim::Vec3& inertia, double share) {
+  sim::Body b;
   b.name = name;
   b.mass = mass * share;
   b.inertia_com = (inertia * share).asDiagonal();
   return b;
 }
 
-Visual mesh(const std::string& name) {
-  Visual v;
+sim::Visual mesh(const std::string& name) {
+  sim::Visual v;
   v.mesh = name;
   return v;
 }
 
-void bus(SceneBuilder& b) {
-  Visual v = mesh("bus");
-  v.scale = Vec3(1.6, 1.2, 1.2);
-  b.fixed_base("bus", Vec6::Zero(), v);
+void bus(sim::SceneBuilder& b) {
+  sim::Visual v = mesh("bus");
+  v.scale = sim::Vec3(1.6, 1.2, 1.2);
+  b.fixed_base("bus", sim::Vec6::Zero(), v);
 }
 
 std::string joint_name(int j) { return "j" + std::to_string(j); }
 
 // One chain of a frame and `panels` panels at x; joints named j<first>...
 // mirror = +1 for chain A, -1 for chain B; share: the mass share of panels.
-void chain(SceneBuilder& b, const std::string& label, double x, double mirror, int panels, int first_joint,
+void chain(sim::SceneBuilder& b, const std::string& label, double x, double mirror, int panels, int first_joint,
            double panel_share) {
   const std::string frame = "frame_" + label;
   b.body(box(frame, kFrameMass, kFrameInertia, 1.0), "bus",
-         joints::revolute(joint_name(first_joint), Vec3::UnitX(), Vec3(x, 0.75, 0), Vec3(0, -kFrameHalf, 0)),
+         sim::joints::revolute(joint_name(first_joint), sim::Vec3::UnitX(), sim::Vec3(x, 0.75, 0),
+                               sim::Vec3(0, -kFrameHalf, 0)),
          mesh("yoke"));
   std::string parent = frame;
   double parent_half = kFrameHalf, parent_p = 0;
@@ -58,8 +59,8 @@ void chain(SceneBuilder& b, const std::string& label, double x, double mirror, i
     const double p = mirror * pivot_offset(k);
     const std::string name = "panel_" + label + std::to_string(k);
     b.body(box(name, kPanelMass, kPanelInertia, panel_share), parent,
-           joints::revolute(joint_name(first_joint + k), Vec3::UnitX(), Vec3(0, parent_half, parent_p),
-                            Vec3(0, -kPanelHalf, p)),
+           sim::joints::revolute(joint_name(first_joint + k), sim::Vec3::UnitX(), sim::Vec3(0, parent_half, parent_p),
+                                 sim::Vec3(0, -kPanelHalf, p)),
            mesh("panel"));
     parent = name;
     parent_half = kPanelHalf;
@@ -70,10 +71,10 @@ void chain(SceneBuilder& b, const std::string& label, double x, double mirror, i
 // Springs and latches of joints j<first>..j<first + count - 1>, the first
 // starting on the side first_sign, the rest alternating: each spring's free
 // angle is pi/2 past the deployed angle 0, where its latch catches it.
-void chain_forces(SceneBuilder& b, int first, int count, double first_sign) {
+void chain_forces(sim::SceneBuilder& b, int first, int count, double first_sign) {
   for (int j = 0; j < count; ++j) {
     const double s = j == 0 ? first_sign : (j % 2 == 1 ? -first_sign : first_sign);
-    auto spring = std::make_shared<JointSpring>(b.joint_index(joint_name(first + j), "springs"));
+    auto spring = std::make_shared<sim::JointSpring>(b.joint_index(joint_name(first + j), "springs"));
     spring->stiffness = kSpring;
     spring->free_position = -s * M_PI / 2;
     spring->damping = kSpringDamping;
@@ -81,17 +82,17 @@ void chain_forces(SceneBuilder& b, int first, int count, double first_sign) {
   }
 }
 
-void chain_latches(SceneBuilder& b, int first, int count) {
+void chain_latches(sim::SceneBuilder& b, int first, int count) {
   for (int j = 0; j < count; ++j) {
-    auto latch = std::make_shared<Latch>(b.joint_index(joint_name(first + j), "latches"));
+    auto latch = std::make_shared<sim::Latch>(b.joint_index(joint_name(first + j), "latches"));
     latch->stiffness = kLatch;
     latch->damping = kLatchDamping;
     b.element(latch);
   }
 }
 
-RunSettings run(double t_end, double rtol, double atol) {
-  RunSettings r;
+sim::RunSettings run(double t_end, double rtol, double atol) {
+  sim::RunSettings r;
   r.t_end = t_end;
   r.rtol = rtol;
   r.atol = atol;
@@ -105,12 +106,11 @@ void check_count(int n, const char* what) {
 
 }  // namespace
 
-SceneFile generate_pantograph(int stages) {
+sim::SceneFile generate_pantograph(int stages) {
   check_count(stages, "the number of stages");
   const int N = stages;
-  SceneBuilder b("pantograph_" + std::to_string(N),
-                 "The pantograph solar array with " + std::to_string(N) + " panel pairs (" + std::to_string(N) +
-                     " loops).");
+  sim::SceneBuilder b("pantograph_" + std::to_string(N), "The pantograph solar array with " + std::to_string(N) +
+                                                             " panel pairs (" + std::to_string(N) + " loops).");
   b.source("generated");
   bus(b);
   chain(b, "A", -kChainX, 1, N, 1, 0.5);
@@ -118,8 +118,8 @@ SceneFile generate_pantograph(int stages) {
   for (int k = 1; k <= N; ++k) {
     const double p_child = pivot_offset(k), p_parent = -p_child;
     b.body(box("image_A" + std::to_string(k), kPanelMass, kPanelInertia, 0.5), "panel_B" + std::to_string(k),
-           joints::revolute(joint_name(2 * N + 2 + k), Vec3::UnitX(), Vec3(-kChainX, 0, p_parent),
-                            Vec3(kChainX, 0, p_child)));
+           sim::joints::revolute(joint_name(2 * N + 2 + k), sim::Vec3::UnitX(), sim::Vec3(-kChainX, 0, p_parent),
+                                 sim::Vec3(kChainX, 0, p_child)));
   }
   chain_forces(b, 1, N + 1, -1);
   chain_forces(b, N + 2, N + 1, 1);
@@ -127,7 +127,7 @@ SceneFile generate_pantograph(int stages) {
   chain_latches(b, N + 2, N + 1);
   for (int k = 1; k <= N; ++k)
     b.loop("A" + std::to_string(k), "panel_A" + std::to_string(k), "image_A" + std::to_string(k));
-  b.regulator(RegulatorSettings{});
+  b.regulator(sim::RegulatorSettings{});
   // On the lazy-tongs path: chain A (-a, 2a, -2a, ...), chain B its
   // negative, images (2a, -2a, ...).
   auto angle = [&](int j) {  // joint j (1-based) at a = kOpen
@@ -142,10 +142,10 @@ SceneFile generate_pantograph(int stages) {
   return b.build();
 }
 
-SceneFile generate_zfold(int panels) {
+sim::SceneFile generate_zfold(int panels) {
   check_count(panels, "the number of panels");
   const int N = panels;
-  SceneBuilder b("zfold_" + std::to_string(N), "A Z-folded wing of a frame and " + std::to_string(N) + " panels.");
+  sim::SceneBuilder b("zfold_" + std::to_string(N), "A Z-folded wing of a frame and " + std::to_string(N) + " panels.");
   b.source("generated");
   bus(b);
   chain(b, "A", -kChainX, 1, N, 1, 1.0);
@@ -157,26 +157,27 @@ SceneFile generate_zfold(int panels) {
   return b.build();
 }
 
-SceneFile generate_chain(int links) {
+sim::SceneFile generate_chain(int links) {
   check_count(links, "the number of links");
   const int N = links;
   const double length = 1.0 / N, mass = 1.0 / N;
   const double I = mass * length * length / 12;
-  SceneBuilder b("chain_" + std::to_string(N), "A hanging chain of " + std::to_string(N) + " links.");
+  sim::SceneBuilder b("chain_" + std::to_string(N), "A hanging chain of " + std::to_string(N) + " links.");
   b.source("generated");
-  b.fixed_base("ground").gravity(Vec3(0, 0, -9.81));
+  b.fixed_base("ground").gravity(sim::Vec3(0, 0, -9.81));
   // A thin rod: about its own axis a thousandth of I (the radius a
   // hundredth of the length), which keeps the principal moments a rigid
   // body can have at any N (a floor of 1e-12 did not, from 10,000 links).
-  const Vec3 inertia(I, I, 1e-3 * I);
+  const sim::Vec3 inertia(I, I, 1e-3 * I);
   for (int i = 1; i <= N; ++i) {
     const std::string parent = i == 1 ? "ground" : "link" + std::to_string(i - 1);
-    b.body(box("link" + std::to_string(i), mass, inertia, 1.0), parent,
-           joints::revolute(joint_name(i), Vec3::UnitX(), i == 1 ? Vec3::Zero() : Vec3(0, 0, -length / 2),
-                            Vec3(0, 0, length / 2)));
+    b.body(
+        box("link" + std::to_string(i), mass, inertia, 1.0), parent,
+        sim::joints::revolute(joint_name(i), sim::Vec3::UnitX(),
+                              i == 1 ? sim::Vec3::Zero() : sim::Vec3(0, 0, -length / 2), sim::Vec3(0, 0, length / 2)));
   }
   for (int i = 1; i <= N; ++i) {
-    auto damper = std::make_shared<JointDamper>(b.joint_index(joint_name(i), "dampers"));
+    auto damper = std::make_shared<sim::JointDamper>(b.joint_index(joint_name(i), "dampers"));
     damper->damping = 1e-4 * mass;
     b.element(damper);
   }
@@ -185,4 +186,4 @@ SceneFile generate_chain(int links) {
   return b.build();
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::studies

@@ -3,41 +3,43 @@
 #include "unfurl/sim/number_text.hpp"
 #include "unfurl/studies/scene_generators.hpp"
 
-namespace unfurl {
+namespace unfurl::studies {
 
 namespace {
 
 // Overrides that set one field of every latch (or spring) of a scene.
-std::vector<Override> for_each_joint(const std::string& list, const std::string& field, double value, int joints) {
-  std::vector<Override> out;
-  for (int j = 0; j < joints; ++j) out.push_back({list + "." + std::to_string(j) + "." + field, format_number(value)});
+std::vector<sim::Override> for_each_joint(const std::string& list, const std::string& field, double value, int joints) {
+  std::vector<sim::Override> out;
+  for (int j = 0; j < joints; ++j)
+    out.push_back({list + "." + std::to_string(j) + "." + field, sim::format_number(value)});
   return out;
 }
 
-StabilityCase make(std::string group, std::string label, std::string scene, std::vector<Override> overrides,
+StabilityCase make(std::string group, std::string label, std::string scene, std::vector<sim::Override> overrides,
                    double budget_s) {
   StabilityCase c;
   c.group = std::move(group);
   c.label = std::move(label);
   c.scene = std::move(scene);
   c.overrides = std::move(overrides);
-  c.overrides.push_back({"run.max_wall_time", format_number(budget_s)});
+  c.overrides.push_back({"run.max_wall_time", sim::format_number(budget_s)});
   return c;
 }
 
 void latch_stiffness_cases(std::vector<StabilityCase>& out, double budget_s) {
   // 1e3 .. 1e7 N m/rad, then on to 1e9 to find where each integrator stops.
-  for (IntegratorKind kind : all_integrators())
+  for (sim::IntegratorKind kind : sim::all_integrators())
     for (double k : {1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9}) {
-      std::vector<Override> o = for_each_joint("latches", "stiffness", k, 8);
-      o.push_back({"run.integrator", integrator_name(kind)});
+      std::vector<sim::Override> o = for_each_joint("latches", "stiffness", k, 8);
+      o.push_back({"run.integrator", sim::integrator_name(kind)});
       // The adaptive methods at rtol 1e-8; RK4 at 2e-4 s, near its limit
       // with the regulator at v_max = 2000.
       o.push_back({"run.rtol", "1e-8"});
       o.push_back({"run.atol", "1e-10"});
       o.push_back({"run.dt", "2e-4"});
-      StabilityCase c = make("latch stiffness", "k_L = " + format_number(k) + ", " + integrator_name(kind), "pantograph", o, budget_s);
-      c.small = kind == IntegratorKind::cvode_bdf && k <= 1e5;
+      StabilityCase c = make("latch stiffness", "k_L = " + sim::format_number(k) + ", " + sim::integrator_name(kind),
+                             "pantograph", o, budget_s);
+      c.small = kind == sim::IntegratorKind::cvode_bdf && k <= 1e5;
       c.probe = k > 1e7;
       out.push_back(c);
     }
@@ -49,8 +51,8 @@ void regulator_cases(std::vector<StabilityCase>& out, double budget_s) {
   // frequencies holds the loops (to the weak modes' share at the branch
   // points); the PID alone does not.
   for (double v : {1.0, 10.0, 100.0, 1e3, 2e3, 1e4, 1e5}) {
-    StabilityCase c = make("regulator v_max", "v_max = " + format_number(v) + " rad/s", "pantograph",
-                           {{"regulator.v_max", format_number(v)}}, budget_s);
+    StabilityCase c = make("regulator v_max", "v_max = " + sim::format_number(v) + " rad/s", "pantograph",
+                           {{"regulator.v_max", sim::format_number(v)}}, budget_s);
     c.small = v == 10 || v == 1e4;
     // Near the branch points the gap's curvature along the modes W loses,
     // times v_max^2, makes the Newton iterations fail step after step: the
@@ -74,9 +76,11 @@ void regulator_cases(std::vector<StabilityCase>& out, double budget_s) {
 void mass_ratio_cases(std::vector<StabilityCase>& out, double budget_s) {
   // Panel A2 of the z-fold scaled against its neighbours A1 and A3.
   for (double r : {1e-3, 1e-2, 1e-1, 10.0, 100.0, 1e3}) {
-    const std::string inertia = "[" + format_number(0.4802 * r) + ", " + format_number(0.2702 * r) + ", " + format_number(0.75 * r) + "]";
-    StabilityCase c = make("mass ratio", "panel A2 x " + format_number(r) + " (mass and inertia)", "zfold",
-                           {{"bodies.panel_A2.mass", format_number(4.0 * r)}, {"bodies.panel_A2.inertia", inertia}}, budget_s);
+    const std::string inertia = "[" + sim::format_number(0.4802 * r) + ", " + sim::format_number(0.2702 * r) + ", " +
+                                sim::format_number(0.75 * r) + "]";
+    StabilityCase c =
+        make("mass ratio", "panel A2 x " + sim::format_number(r) + " (mass and inertia)", "zfold",
+             {{"bodies.panel_A2.mass", sim::format_number(4.0 * r)}, {"bodies.panel_A2.inertia", inertia}}, budget_s);
     c.small = true;
     out.push_back(c);
   }
@@ -87,17 +91,17 @@ void singular_start_cases(std::vector<StabilityCase>& out, double budget_s) {
   stowed.branches = stowed.small = true;
   out.push_back(stowed);
 
-  std::vector<Override> at_zero;
+  std::vector<sim::Override> at_zero;
   for (int j = 1; j <= 11; ++j) at_zero.push_back({"initial.q.j" + std::to_string(j), "0"});
   StabilityCase deployed = make("singular start", "fully deployed state (q = 0)", "pantograph", at_zero, budget_s);
   deployed.branches = deployed.small = true;
   out.push_back(deployed);
 
   // The cross pivot of loop A1 turned by 1e-3 rad: the loop starts open.
-  const Scene reference = load_builtin_scene("pantograph");
+  const sim::Scene reference = sim::load_builtin_scene("pantograph");
   StabilityCase open = make("singular start", "loop A1 open by 1e-3 rad at the start", "pantograph",
                             {{"closure_tolerance", "0.01"},
-                             {"initial.q.j9", format_number(reference.q0[8] + 1e-3)},
+                             {"initial.q.j9", sim::format_number(reference.q0[8] + 1e-3)},
                              {"run.sample", "1e-4"}},
                             budget_s);
   open.closing_time = open.small = true;
@@ -141,12 +145,12 @@ std::vector<StabilityCase> stability_cases(double budget_s) {
   return out;
 }
 
-Scene stability_scene(const StabilityCase& c) {
+sim::Scene stability_scene(const StabilityCase& c) {
   const auto colon = c.scene.find(':');
-  if (colon == std::string::npos) return load_builtin_scene(c.scene, c.overrides);
+  if (colon == std::string::npos) return sim::load_builtin_scene(c.scene, c.overrides);
   const std::string kind = c.scene.substr(0, colon);
   const int n = std::stoi(c.scene.substr(colon + 1));
-  return apply_overrides(kind == "pantograph" ? generate_pantograph(n) : generate_zfold(n), c.overrides).scene;
+  return sim::apply_overrides(kind == "pantograph" ? generate_pantograph(n) : generate_zfold(n), c.overrides).scene;
 }
 
 std::string reproduce_command(const StabilityCase& c) {
@@ -158,11 +162,11 @@ std::string reproduce_command(const StabilityCase& c) {
     command = "unfurl generate " + kind + (kind == "zfold" ? " --panels " : " --stages ") + n + " -o " + scene + " && ";
   }
   command += "unfurl simulate " + scene;
-  for (const Override& o : c.overrides) {
+  for (const sim::Override& o : c.overrides) {
     const bool quote = o.value.find_first_of(" [,") != std::string::npos;
     command += " --set " + o.path + "=" + (quote ? "'" + o.value + "'" : o.value);
   }
   return command;
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::studies

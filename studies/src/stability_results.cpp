@@ -6,18 +6,18 @@
 #include "unfurl/sim/summary.hpp"
 #include "unfurl/studies/stability_verdicts.hpp"
 
-namespace unfurl {
+namespace unfurl::studies {
 
 StabilityResult run_stability_case(const StabilityCase& c) {
   StabilityResult r;
   r.spec = c;
-  const Scene scene = stability_scene(c);
-  RunResult run = simulate(scene, scene.run);
-  const RunSummary s = summarize(scene, run);
+  const sim::Scene scene = stability_scene(c);
+  sim::RunResult run = sim::simulate(scene, scene.run);
+  const sim::RunSummary s = sim::summarize(scene, run);
   r.status = run.status;
-  if (run.status == RunStatus::failed) {
+  if (run.status == sim::RunStatus::failed) {
     r.failed_check = run.failure.check;
-    r.failure = describe(run.failure);
+    r.failure = sim::describe(run.failure);
   }
   r.t_reached = s.t_reached;
   r.wall_time_s = run.wall_time_s;
@@ -34,7 +34,8 @@ StabilityResult run_stability_case(const StabilityCase& c) {
   r.latches_total = static_cast<int>(scene.latches().size());
   if (c.conservative) {
     double drift = 0;
-    for (const Sample& x : run.trajectory.samples) drift = std::max(drift, std::abs(x.energy.total() - s.energy_initial));
+    for (const sim::Sample& x : run.trajectory.samples)
+      drift = std::max(drift, std::abs(x.energy.total() - s.energy_initial));
     r.energy_drift = drift / std::abs(s.energy_initial);
   }
   if (c.branches) r.notes = describe_branches(scene, run.trajectory);
@@ -57,4 +58,4 @@ StabilityResult run_stability_case(const StabilityCase& c) {
   return r;
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::studies

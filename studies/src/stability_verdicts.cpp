@@ -4,37 +4,38 @@
 #include <cmath>
 #include <limits>
 
-namespace unfurl {
+namespace unfurl::studies {
 
 bool as_expected(const StabilityResult& r) {
-  if (r.spec.probe) return r.status == RunStatus::finished || (r.status == RunStatus::failed && !r.failed_check.empty());
-  if (r.spec.expected_check.empty()) return r.status == RunStatus::finished;
-  return r.status == RunStatus::failed && r.failed_check == r.spec.expected_check;
+  if (r.spec.probe)
+    return r.status == sim::RunStatus::finished || (r.status == sim::RunStatus::failed && !r.failed_check.empty());
+  if (r.spec.expected_check.empty()) return r.status == sim::RunStatus::finished;
+  return r.status == sim::RunStatus::failed && r.failed_check == r.spec.expected_check;
 }
 
-double closing_time(const Trajectory& tr, double level) {
-  for (const Sample& s : tr.samples)
+double closing_time(const sim::Trajectory& tr, double level) {
+  for (const sim::Sample& s : tr.samples)
     if (largest_gap(s) < level) return s.t;
   return std::numeric_limits<double>::quiet_NaN();
 }
 
-double largest_gap(const Sample& s) {
+double largest_gap(const sim::Sample& s) {
   double r = 0;
-  for (const ClosureError& c : s.closure) r = std::max({r, c.distance, c.angle});
+  for (const sim::ClosureError& c : s.closure) r = std::max({r, c.distance, c.angle});
   return r;
 }
 
-std::vector<std::string> describe_branches(const Scene& scene, const Trajectory& trajectory) {
-  const Model& model = scene.model;
+std::vector<std::string> describe_branches(const sim::Scene& scene, const sim::Trajectory& trajectory) {
+  const sim::Model& model = scene.model;
   std::vector<std::string> out;
   if (trajectory.empty()) return out;
-  const Sample &first = trajectory.samples.front(), &last = trajectory.samples.back();
-  for (const Loop& loop : scene.loops) {
+  const sim::Sample &first = trajectory.samples.front(), &last = trajectory.samples.back();
+  for (const sim::Loop& loop : scene.loops) {
     // The joints from the split body and from its image up to their common
     // ancestor: the loop's path through the tree.
     std::vector<int> a, b;
-    for (int i = loop.body; i != kBase; i = model.parent[i]) a.push_back(i);
-    for (int i = loop.image; i != kBase; i = model.parent[i]) b.push_back(i);
+    for (int i = loop.body; i != sim::kBase; i = model.parent[i]) a.push_back(i);
+    for (int i = loop.image; i != sim::kBase; i = model.parent[i]) b.push_back(i);
     while (!a.empty() && !b.empty() && a.back() == b.back()) a.pop_back(), b.pop_back();
     a.insert(a.end(), b.rbegin(), b.rend());
     std::string opened, held, between;
@@ -53,4 +54,4 @@ std::vector<std::string> describe_branches(const Scene& scene, const Trajectory&
   return out;
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::studies

@@ -9,7 +9,7 @@
 #include "unfurl/input/yaml_fields.hpp"
 #include "unfurl/sim/elements/joint_spring.hpp"
 
-namespace unfurl {
+namespace unfurl::studies {
 
 namespace {
 
@@ -72,10 +72,10 @@ class StudyReader {
       study.scene_source = path.string();
       return;
     }
-    const auto names = builtin_scene_names();
+    const auto names = sim::builtin_scene_names();
     if (std::find(names.begin(), names.end(), study.scene) == names.end())
       fields_.fail(node, "scene", "no scene file '" + path.string() + "' and no built-in scene of that name");
-    study.scene_text = builtin_scene_text(study.scene);
+    study.scene_text = sim::builtin_scene_text(study.scene);
     study.scene_source = "built-in:" + study.scene;
   }
 
@@ -100,11 +100,12 @@ class StudyReader {
       const YAML::Node path = fields_.require(item, "path", field + ".path");
       for (const std::string& concrete : concrete_paths(path, field + ".path", study)) {
         v.path = concrete;
-        if (std::any_of(study.settings.begin(), study.settings.end(), [&](const Override& o) { return o.path == concrete; }))
+        if (std::any_of(study.settings.begin(), study.settings.end(),
+                        [&](const sim::Override& o) { return o.path == concrete; }))
           fields_.fail(path, field + ".path", concrete + " is also fixed under `set`");
         for (const StudyVariable& other : study.variables)
           if (other.path == concrete) fields_.fail(path, field + ".path", concrete + " varies twice");
-        v.nominal = v.is_preload() ? 1.0 : scene_number(study.scene_text, study.scene_source, concrete);
+        v.nominal = v.is_preload() ? 1.0 : sim::scene_number(study.scene_text, study.scene_source, concrete);
         if (v.is_preload() && v.scale) fields_.fail(item["scale"], field + ".scale", "a preload is already a factor");
         check_values(item, field, v, study);
         study.variables.push_back(v);
@@ -121,7 +122,7 @@ class StudyReader {
       fields_.fail(node, field, "a preload factor is set on a spring: springs.JOINT.preload");
     std::vector<std::string> paths;
     try {
-      paths = expand_scene_path(study.scene_text, study.scene_source, probe);
+      paths = sim::expand_scene_path(study.scene_text, study.scene_source, probe);
     } catch (const input::InputError&) {
       fields_.fail(node, field, "the scene has no value at " + probe);
     }
@@ -190,9 +191,9 @@ class StudyReader {
       char text[64];
       std::snprintf(text, sizeof text, "%.17g", x);
       try {
-        std::vector<Override> overrides = study.settings;
+        std::vector<sim::Override> overrides = study.settings;
         overrides.push_back({v.path, text});
-        (void)load_scene_text(study.scene_text, study.scene_source, overrides);
+        (void)sim::load_scene_text(study.scene_text, study.scene_source, overrides);
       } catch (const input::InputError& e) {
         fields_.fail(item, field, std::string(v.path) + " = " + text + " is not a valid scene: " + e.what());
       }
@@ -282,15 +283,16 @@ class StudyReader {
   // The joints a failure names; "*" is every joint it can apply to.
   std::vector<std::string> failure_joints(const YAML::Node& node, const std::string& field, StudyFailure::Kind kind) {
     std::vector<std::string> candidates;
-    const Model& m = nominal_.model;
+    const sim::Model& m = nominal_.model;
     if (kind == StudyFailure::Kind::latch_fails)
-      for (const Latch* l : nominal_.latches()) candidates.push_back(m.joints[l->joint].name);
+      for (const sim::Latch* l : nominal_.latches()) candidates.push_back(m.joints[l->joint].name);
     else if (kind == StudyFailure::Kind::stuck || kind == StudyFailure::Kind::extra_friction)
-      for (const Joint& j : m.joints) {
+      for (const sim::Joint& j : m.joints) {
         if (j.dof() > 0) candidates.push_back(j.name);
       }
     else
-      for (const JointSpring* s : nominal_.elements_of<JointSpring>()) candidates.push_back(m.joints[s->joint].name);
+      for (const sim::JointSpring* s : nominal_.elements_of<sim::JointSpring>())
+        candidates.push_back(m.joints[s->joint].name);
     const std::string name = fields_.text(node, field);
     if (name == "*") return candidates;
     if (std::find(candidates.begin(), candidates.end(), name) == candidates.end()) {
@@ -304,21 +306,21 @@ class StudyReader {
   }
 
   void read_overlay(const YAML::Node& node, Study& study) {
-    const Model& m = nominal_.model;
+    const sim::Model& m = nominal_.model;
     if (!node) {
-      const std::vector<const Latch*> latches = nominal_.latches();
+      const std::vector<const sim::Latch*> latches = nominal_.latches();
       study.overlay_joint = latches.empty() ? m.joints.front().name : m.joints[latches.front()->joint].name;
       return;
     }
     study.overlay_joint = fields_.text(node, "overlay");
-    for (const Joint& j : m.joints)
+    for (const sim::Joint& j : m.joints)
       if (j.name == study.overlay_joint && j.dof() > 0) return;
     fields_.fail(node, "overlay", "'" + study.overlay_joint + "' is not a moving joint of the scene");
   }
 
   input::YamlFields fields_;
   std::string directory_;
-  Scene nominal_;
+  sim::Scene nominal_;
 };
 
 }  // namespace
@@ -357,8 +359,8 @@ std::string StudyFailure::describe() const {
   return "";
 }
 
-SceneFile nominal_scene(const Study& study) {
-  return read_scene_text(study.scene_text, study.scene_source, study.settings);
+sim::SceneFile nominal_scene(const Study& study) {
+  return sim::read_scene_text(study.scene_text, study.scene_source, study.settings);
 }
 
 Study read_study_text(const std::string& text, const std::string& source, const std::string& directory) {
@@ -373,4 +375,4 @@ Study read_study_file(const std::string& path) {
   return read_study_text(text.str(), path, std::filesystem::path(path).parent_path().string());
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::studies

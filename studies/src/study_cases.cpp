@@ -8,7 +8,7 @@
 #include "unfurl/sim/elements/joint_friction.hpp"
 #include "unfurl/sim/elements/joint_spring.hpp"
 
-namespace unfurl {
+namespace unfurl::studies {
 
 namespace {
 
@@ -80,7 +80,7 @@ void add_listed_cases(const Study& study, std::vector<StudyCase>& cases) {
   }
 }
 
-int joint_named(const Model& model, const std::string& name) {
+int joint_named(const sim::Model& model, const std::string& name) {
   for (int j = 0; j < static_cast<int>(model.joints.size()); ++j)
     if (model.joints[j].name == name) return j;
   throw input::InputError("no joint " + name + " in the scene");
@@ -88,28 +88,28 @@ int joint_named(const Model& model, const std::string& name) {
 
 // The scene's (first) spring on the joint, to change: a copy that replaces
 // it in the scene (elements are shared between a scene's copies).
-JointSpring& spring_of(Scene& scene, int joint) {
+sim::JointSpring& spring_of(sim::Scene& scene, int joint) {
   for (auto& e : scene.elements) {
-    const auto* s = dynamic_cast<const JointSpring*>(e.get());
+    const auto* s = dynamic_cast<const sim::JointSpring*>(e.get());
     if (!s || s->joint != joint) continue;
-    auto copy = std::make_shared<JointSpring>(*s);
+    auto copy = std::make_shared<sim::JointSpring>(*s);
     e = copy;
     return *copy;
   }
   throw input::InputError("no spring on joint " + scene.model.joints[joint].name);
 }
 
-double initial_q(const Scene& scene, int joint) { return scene.q0[scene.model.position_of(joint).value]; }
+double initial_q(const sim::Scene& scene, int joint) { return scene.q0[scene.model.position_of(joint).value]; }
 
 // The spring's twist at the start scaled by `factor`: the preload torque
 // k (q_free - q(0)) scales with it at the same stiffness.
-void scale_preload(Scene& scene, int joint, double factor) {
-  JointSpring& s = spring_of(scene, joint);
+void scale_preload(sim::Scene& scene, int joint, double factor) {
+  sim::JointSpring& s = spring_of(scene, joint);
   if (s.curve) {
     // A measured curve: its torque at every angle scales.
     std::vector<double> tau = s.curve->torques();
     for (double& t : tau) t *= factor;
-    s.curve = std::make_shared<const SpringCurve>(s.curve->angles(), tau);
+    s.curve = std::make_shared<const sim::SpringCurve>(s.curve->angles(), tau);
     return;
   }
   const double q0 = initial_q(scene, joint);
@@ -119,29 +119,29 @@ void scale_preload(Scene& scene, int joint, double factor) {
 // A stuck hinge is held where it starts by a stop as stiff as the scene's
 // stiffest latch, engaged from t = 0 (it starts at its position). It acts
 // after the scene's latches.
-void make_stuck(Scene& scene, int joint) {
-  auto stop = std::make_shared<Latch>(joint);
+void make_stuck(sim::Scene& scene, int joint) {
+  auto stop = std::make_shared<sim::Latch>(joint);
   stop->position = initial_q(scene, joint);
   stop->stiffness = 1000.0;
   stop->damping = 10.0;
-  for (const Latch* l : scene.latches())
+  for (const sim::Latch* l : scene.latches())
     if (l->stiffness > stop->stiffness) stop->stiffness = l->stiffness, stop->damping = l->damping;
   scene.elements.push_back(stop);
 }
 
-void apply_failure(Scene& scene, const StudyFailure& f) {
+void apply_failure(sim::Scene& scene, const StudyFailure& f) {
   const int joint = joint_named(scene.model, f.joint);
   switch (f.kind) {
     case StudyFailure::Kind::latch_fails:
       scene.elements.erase(std::remove_if(scene.elements.begin(), scene.elements.end(),
                                           [&](const auto& e) {
-                                            const auto* l = dynamic_cast<const Latch*>(e.get());
+                                            const auto* l = dynamic_cast<const sim::Latch*>(e.get());
                                             return l && l->joint == joint;
                                           }),
                            scene.elements.end());
       break;
     case StudyFailure::Kind::spring_breaks: {
-      JointSpring& s = spring_of(scene, joint);
+      sim::JointSpring& s = spring_of(scene, joint);
       s.stiffness = 0;
       s.curve.reset();
       break;
@@ -149,12 +149,12 @@ void apply_failure(Scene& scene, const StudyFailure& f) {
     case StudyFailure::Kind::preload_loss: scale_preload(scene, joint, 1 - f.fraction); break;
     case StudyFailure::Kind::stuck: make_stuck(scene, joint); break;
     case StudyFailure::Kind::extra_friction: {
-      auto friction = std::make_shared<JointFriction>(joint);
+      auto friction = std::make_shared<sim::JointFriction>(joint);
       friction->coulomb = f.coulomb;
       friction->viscous = f.viscous;
       // With the scene's own friction, ahead of the latches.
       const auto first_latch = std::find_if(scene.elements.begin(), scene.elements.end(),
-                                            [](const auto& e) { return dynamic_cast<const Latch*>(e.get()); });
+                                            [](const auto& e) { return dynamic_cast<const sim::Latch*>(e.get()); });
       scene.elements.insert(first_latch, friction);
       break;
     }
@@ -178,21 +178,21 @@ std::vector<StudyCase> study_cases(const Study& study) {
   return cases;
 }
 
-Scene case_scene(const Study& study, const StudyCase& c) { return case_scene_file(study, c).scene; }
+sim::Scene case_scene(const Study& study, const StudyCase& c) { return case_scene_file(study, c).scene; }
 
-SceneFile case_scene_file(const Study& study, const StudyCase& c, const std::vector<Override>& edits) {
+sim::SceneFile case_scene_file(const Study& study, const StudyCase& c, const std::vector<sim::Override>& edits) {
   const auto number = [](double x) {
     char text[64];
     std::snprintf(text, sizeof text, "%.17g", x);
     return std::string(text);
   };
-  std::vector<Override> overrides = study.settings;
+  std::vector<sim::Override> overrides = study.settings;
   for (std::size_t i = 0; i < study.variables.size(); ++i)
     if (!study.variables[i].is_preload()) overrides.push_back({study.variables[i].path, number(c.inputs[i])});
-  const auto preload_joint = [&](const Scene& scene, std::size_t i) {
+  const auto preload_joint = [&](const sim::Scene& scene, std::size_t i) {
     return joint_named(scene.model, spring_joint_of_preload(study.variables[i].path));
   };
-  SceneFile file = read_scene_text(study.scene_text, study.scene_source, overrides);
+  sim::SceneFile file = sim::read_scene_text(study.scene_text, study.scene_source, overrides);
   for (std::size_t i = 0; i < study.variables.size(); ++i)
     if (study.variables[i].is_preload()) scale_preload(file.scene, preload_joint(file.scene, i), c.inputs[i]);
   if (!edits.empty()) {
@@ -203,14 +203,14 @@ SceneFile case_scene_file(const Study& study, const StudyCase& c, const std::vec
     for (std::size_t i = 0; i < study.variables.size(); ++i) {
       if (!study.variables[i].is_preload()) continue;
       const int joint = preload_joint(file.scene, i);
-      const JointSpring& spring = spring_of(file.scene, joint);  // a copy in file.scene, read only
+      const sim::JointSpring& spring = spring_of(file.scene, joint);  // a copy in file.scene, read only
       if (spring.curve) continue;
       overrides.push_back({"springs." + file.scene.model.joints[joint].name + ".free_position",
                            number(spring.free_position)});
       in_text[i] = true;
     }
     overrides.insert(overrides.end(), edits.begin(), edits.end());
-    file = read_scene_text(study.scene_text, study.scene_source, overrides);
+    file = sim::read_scene_text(study.scene_text, study.scene_source, overrides);
     for (std::size_t i = 0; i < study.variables.size(); ++i)
       if (study.variables[i].is_preload() && !in_text[i])
         scale_preload(file.scene, preload_joint(file.scene, i), c.inputs[i]);
@@ -219,4 +219,4 @@ SceneFile case_scene_file(const Study& study, const StudyCase& c, const std::vec
   return file;
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::studies

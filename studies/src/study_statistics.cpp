@@ -5,7 +5,7 @@
 #include <limits>
 #include <numeric>
 
-namespace unfurl {
+namespace unfurl::studies {
 
 namespace {
 
@@ -111,4 +111,4 @@ StudyStatistics study_statistics(const CaseColumns& columns, const std::vector<C
   return st;
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::studies

@@ -8,7 +8,7 @@
 
 #include "unfurl/studies/exact_pendulum.hpp"
 
-namespace unfurl {
+namespace unfurl::studies {
 
 namespace {
 
@@ -20,15 +20,15 @@ struct Reference {
   double first_latch = std::numeric_limits<double>::infinity();
 };
 
-std::vector<double> latch_times(const Trajectory& trajectory, int latches) {
+std::vector<double> latch_times(const sim::Trajectory& trajectory, int latches) {
   std::vector<double> t(latches, kNotMeasured);
-  for (const LatchEvent& e : trajectory.events) t[e.latch] = e.t;
+  for (const sim::LatchEvent& e : trajectory.events) t[e.latch] = e.t;
   return t;
 }
 
-Reference from_trajectory(const Trajectory& trajectory, int latches) {
+Reference from_trajectory(const sim::Trajectory& trajectory, int latches) {
   Reference r;
-  for (const Sample& s : trajectory.samples) {
+  for (const sim::Sample& s : trajectory.samples) {
     r.times.push_back(s.t);
     r.q.emplace_back(s.y.begin(), s.y.begin() + trajectory.layout.nq);
   }
@@ -39,7 +39,7 @@ Reference from_trajectory(const Trajectory& trajectory, int latches) {
   return r;
 }
 
-Reference from_exact(const ExactPendulum& exact, const RunSettings& run) {
+Reference from_exact(const ExactPendulum& exact, const sim::RunSettings& run) {
   Reference r;
   for (long k = 0;; ++k) {
     const double t = std::min(k * run.sample, run.t_end);
@@ -51,20 +51,20 @@ Reference from_exact(const ExactPendulum& exact, const RunSettings& run) {
 }
 
 // Compares a run with the reference sample by sample.
-void measure_errors(const Scene& scene, const RunResult& run, const Reference& ref, PrecisionPoint& p) {
-  const Trajectory& tr = run.trajectory;
+void measure_errors(const sim::Scene& scene, const sim::RunResult& run, const Reference& ref, PrecisionPoint& p) {
+  const sim::Trajectory& tr = run.trajectory;
   const int nq = scene.model.nq;
   const std::size_t n = std::min(tr.samples.size(), ref.times.size());
   double before = 0, whole = 0, gap = 0;
   for (std::size_t k = 0; k < n; ++k) {
-    const Sample& s = tr.samples[k];
+    const sim::Sample& s = tr.samples[k];
     double e = 0;
     for (int c = 0; c < nq; ++c) e = std::max(e, std::abs(s.y[c] - ref.q[k][c]));
     whole = std::max(whole, e);
     if (ref.times[k] <= ref.first_latch) before = std::max(before, e);
-    for (const ClosureError& c : s.closure) gap = std::max(gap, c.distance);
+    for (const sim::ClosureError& c : s.closure) gap = std::max(gap, c.distance);
   }
-  if (run.status != RunStatus::finished || n != ref.times.size()) return;
+  if (run.status != sim::RunStatus::finished || n != ref.times.size()) return;
   p.angle_error = before;
   p.angle_error_whole_run = whole;
   double final_error = 0;
@@ -83,28 +83,28 @@ void measure_errors(const Scene& scene, const RunResult& run, const Reference& r
 }
 
 // Runs one setting (repeated for the wall time) and measures it.
-PrecisionPoint measure_point(const Scene& scene, RunSettings run, const Reference& ref,
+PrecisionPoint measure_point(const sim::Scene& scene, sim::RunSettings run, const Reference& ref,
                              const WorkPrecisionSettings& settings) {
   PrecisionPoint p;
   p.integrator = run.integrator;
   p.rtol = run.rtol;
   p.atol = run.atol;
-  p.dt = run.integrator == IntegratorKind::rk4 ? run.dt : 0;
+  p.dt = run.integrator == sim::IntegratorKind::rk4 ? run.dt : 0;
   std::vector<double> walls;
   double spent = 0;
-  RunResult result;
+  sim::RunResult result;
   while (static_cast<int>(walls.size()) < std::max(1, settings.repeats) &&
          (walls.empty() || spent < settings.repeat_budget_s)) {
-    result = simulate(scene, run);
+    result = sim::simulate(scene, run);
     walls.push_back(result.wall_time_s);
     spent += result.wall_time_s;
-    if (result.status != RunStatus::finished) break;
+    if (result.status != sim::RunStatus::finished) break;
   }
   std::sort(walls.begin(), walls.end());
   p.runs = static_cast<int>(walls.size());
   p.wall_time_s = walls[walls.size() / 2];
   p.status = result.status;
-  if (result.status == RunStatus::failed) p.failure = describe(result.failure);
+  if (result.status == sim::RunStatus::failed) p.failure = sim::describe(result.failure);
   p.stats = result.stats;
   p.rhs_calls = result.rhs_calls;
   measure_errors(scene, result, ref, p);
@@ -112,14 +112,14 @@ PrecisionPoint measure_point(const Scene& scene, RunSettings run, const Referenc
 }
 
 // CVODE BDF at the tightest tolerance that runs to the end.
-std::optional<RunResult> tight_reference(const Scene& scene, std::string& description) {
+std::optional<sim::RunResult> tight_reference(const sim::Scene& scene, std::string& description) {
   for (double rtol : {1e-13, 1e-12, 1e-11, 1e-10}) {
-    RunSettings run = scene.run;
-    run.integrator = IntegratorKind::cvode_bdf;
+    sim::RunSettings run = scene.run;
+    run.integrator = sim::IntegratorKind::cvode_bdf;
     run.rtol = rtol;
     run.atol = rtol / 100;
-    RunResult result = simulate(scene, run);
-    if (result.status != RunStatus::finished) continue;
+    sim::RunResult result = sim::simulate(scene, run);
+    if (result.status != sim::RunStatus::finished) continue;
     std::ostringstream s;
     s << "cvode-bdf at rtol " << rtol << ", atol " << run.atol
       << " (the tightest tolerance of 1e-13, 1e-12, ... that runs to the end; " << result.stats.steps << " steps, "
@@ -132,16 +132,16 @@ std::optional<RunResult> tight_reference(const Scene& scene, std::string& descri
 
 }  // namespace
 
-WorkPrecision measure_work_precision(const Scene& scene, const WorkPrecisionSettings& settings,
+WorkPrecision measure_work_precision(const sim::Scene& scene, const WorkPrecisionSettings& settings,
                                      const ReportProgress& progress) {
   WorkPrecision report;
   report.scene = scene.name;
   const int latches = static_cast<int>(scene.latches().size());
-  std::vector<RunSettings> runs;
-  for (IntegratorKind kind : settings.integrators) {
-    RunSettings run = scene.run;
+  std::vector<sim::RunSettings> runs;
+  for (sim::IntegratorKind kind : settings.integrators) {
+    sim::RunSettings run = scene.run;
     run.integrator = kind;
-    if (kind == IntegratorKind::rk4) {
+    if (kind == sim::IntegratorKind::rk4) {
       for (double dt : settings.rk4_steps) {
         if (run.t_end / dt > static_cast<double>(settings.max_rk4_steps)) continue;
         run.dt = dt;
@@ -177,11 +177,11 @@ WorkPrecision measure_work_precision(const Scene& scene, const WorkPrecisionSett
   report.compared_until = std::min(ref.first_latch, scene.run.t_end);
 
   int done = 1;
-  for (const RunSettings& run : runs) {
+  for (const sim::RunSettings& run : runs) {
     if (progress) {
       std::ostringstream what;
-      what << integrator_name(run.integrator) << " ";
-      if (run.integrator == IntegratorKind::rk4)
+      what << sim::integrator_name(run.integrator) << " ";
+      if (run.integrator == sim::IntegratorKind::rk4)
         what << "dt " << run.dt;
       else
         what << "rtol " << run.rtol;
@@ -217,4 +217,4 @@ std::vector<CheapestRun> cheapest_by_accuracy(const WorkPrecision& report) {
   return out;
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::studies

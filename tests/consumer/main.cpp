@@ -6,8 +6,9 @@
 #include "unfurl/sim/simulation.hpp"
 
 int main() {
-  const unfurl::Scene scene = unfurl::load_builtin_scene("pantograph", {{"run.t_end", "8"}});
-  const unfurl::RunResult run = unfurl::simulate(scene, scene.run);
-  std::printf("status: %s\nlatches engaged: %zu\n", unfurl::run_status_name(run.status), run.trajectory.events.size());
-  return run.status == unfurl::RunStatus::finished ? 0 : 1;
+  const unfurl::sim::Scene scene = unfurl::sim::load_builtin_scene("pantograph", {{"run.t_end", "8"}});
+  const unfurl::sim::RunResult run = unfurl::sim::simulate(scene, scene.run);
+  std::printf("status: %s\nlatches engaged: %zu\n", unfurl::sim::run_status_name(run.status),
+              run.trajectory.events.size());
+  return run.status == unfurl::sim::RunStatus::finished ? 0 : 1;
 }

@@ -15,11 +15,11 @@
 
 namespace {
 
-std::vector<unfurl::Override> overrides_in(const std::string& text) {
-  std::vector<unfurl::Override> overrides;
+std::vector<unfurl::sim::Override> overrides_in(const std::string& text) {
+  std::vector<unfurl::sim::Override> overrides;
   std::istringstream lines(text);
   for (std::string line; std::getline(lines, line);)
-    if (line.rfind("#set ", 0) == 0) overrides.push_back(unfurl::parse_override(line.substr(5)));
+    if (line.rfind("#set ", 0) == 0) overrides.push_back(unfurl::sim::parse_override(line.substr(5)));
   return overrides;
 }
 
@@ -28,7 +28,7 @@ std::vector<unfurl::Override> overrides_in(const std::string& text) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   try {
-    const unfurl::SceneFile file = unfurl::read_scene_text(text, "fuzz.yaml", overrides_in(text));
+    const unfurl::sim::SceneFile file = unfurl::sim::read_scene_text(text, "fuzz.yaml", overrides_in(text));
     if (file.scene.model.nq <= 0) std::abort();  // the loader promises something to integrate
   } catch (const unfurl::input::InputError&) {
     // The answer to bad input.

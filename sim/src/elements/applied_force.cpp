@@ -3,7 +3,7 @@
 #include "unfurl/sim/scene.hpp"
 #include "unfurl/sim/scene_validation.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 Vec6 wrench_at_origin(const Vec3& force, const Vec3& torque, const Vec3& point) {
   Vec6 F;
@@ -39,4 +39,4 @@ void AppliedForce::validate(const Scene& scene, const std::string& field) const 
     throw SceneInvalid(field + ".frame", "base-frame loads need a base that does not rotate");
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

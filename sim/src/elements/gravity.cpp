@@ -5,7 +5,7 @@
 #include "unfurl/sim/scene.hpp"
 #include "unfurl/sim/scene_validation.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 void Gravity::add_forces(const ElementState& s, ElementForces& out) const {
   for (int i = 0; i < s.model.size(); ++i) {
@@ -24,7 +24,8 @@ double Gravity::potential_energy(const ElementState& s) const {
 }
 
 void Gravity::validate(const Scene& scene, const std::string&) const {
-  if (!g.isZero(0) && scene.model.base_rotates()) throw SceneInvalid("gravity", "gravity needs a base that does not rotate");
+  if (!g.isZero(0) && scene.model.base_rotates())
+    throw SceneInvalid("gravity", "gravity needs a base that does not rotate");
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

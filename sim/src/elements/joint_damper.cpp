@@ -3,7 +3,7 @@
 #include "unfurl/sim/scene.hpp"
 #include "unfurl/sim/scene_validation.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 void JointDamper::add_forces(const ElementState& s, ElementForces& out) const {
   out.Q[w_index(s.model)] += -damping * s.w[w_index(s.model)];
@@ -33,4 +33,4 @@ void JointDamper::validate(const Scene& scene, const std::string& field) const {
   check_non_negative(damping, field + ".damping");
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -2,7 +2,7 @@
 
 #include "unfurl/sim/scene_validation.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 std::string JointElement::torque_unit(const Model& model, int joint) {
   return model.joints[joint].type == JointType::prismatic ? "N" : "N m";
@@ -17,8 +17,9 @@ void JointElement::validate(const Scene& scene, const std::string& field) const 
   const Joint& j = scene.model.joints[joint];
   if (j.dof() == 0) throw SceneInvalid(field + ".joint", "joint '" + j.name + "' is fixed: it has no coordinate");
   if (!j.is_scalar())
-    throw SceneInvalid(field + ".joint", "joint '" + j.name + "' is " + joint_type_name(j.type) +
-                                             ": springs, dampers, friction and latches act on revolute and prismatic joints");
+    throw SceneInvalid(field + ".joint",
+                       "joint '" + j.name + "' is " + joint_type_name(j.type) +
+                           ": springs, dampers, friction and latches act on revolute and prismatic joints");
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -3,7 +3,7 @@
 #include "unfurl/sim/scene.hpp"
 #include "unfurl/sim/scene_validation.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 void JointFriction::add_forces(const ElementState& s, ElementForces& out) const {
   out.Q[w_index(s.model)] += torque(s.w[w_index(s.model)]);
@@ -38,7 +38,8 @@ void JointFriction::validate(const Scene& scene, const std::string& field) const
   check_non_negative(viscous, field + ".viscous");
   check_positive(velocity_scale, field + ".velocity_scale");
   if (velocity_scale < 1e-9)
-    throw SceneInvalid(field + ".velocity_scale", "below 1e-9 rad/s the smoothed friction is a step no integrator can follow");
+    throw SceneInvalid(field + ".velocity_scale",
+                       "below 1e-9 rad/s the smoothed friction is a step no integrator can follow");
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -5,7 +5,7 @@
 #include "unfurl/sim/scene.hpp"
 #include "unfurl/sim/scene_validation.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 void JointSpring::add_forces(const ElementState& s, ElementForces& out) const {
   out.Q[w_index(s.model)] += torque(s.q[q_index(s.model)], s.w[w_index(s.model)]);
@@ -57,4 +57,4 @@ void JointSpring::validate(const Scene& scene, const std::string& field) const {
   check_non_negative(damping, field + ".damping");
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

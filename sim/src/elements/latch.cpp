@@ -5,16 +5,14 @@
 #include "unfurl/sim/scene.hpp"
 #include "unfurl/sim/scene_validation.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 void Latch::add_forces(const ElementState& s, ElementForces& out) const {
   if (!s.engaged) return;
   out.Q[w_index(s.model)] += torque(s.q[q_index(s.model)], s.w[w_index(s.model)]);
 }
 
-double Latch::potential_energy(const ElementState& s) const {
-  return s.engaged ? energy(s.q[q_index(s.model)]) : 0.0;
-}
+double Latch::potential_energy(const ElementState& s) const { return s.engaged ? energy(s.q[q_index(s.model)]) : 0.0; }
 
 double Latch::dissipated_power(const ElementState& s) const {
   if (!s.engaged) return 0.0;
@@ -44,7 +42,8 @@ std::vector<ElementParameter> Latch::parameters() const {
   return {{"stiffness", "stiffness [N m/rad]", stiffness, 10, 1e-9, 1e12,
            "k_L of the engaged latch: tau = -k_L (q - position) - c_L dq"},
           {"damping", "damping [N m s/rad]", damping, 0.1, 0, 1e12, "c_L of the engaged latch"},
-          {"free_play", "free play [rad]", free_play, 1e-4, 0, 1, "backlash: the latch bites beyond position +- free play / 2"}};
+          {"free_play", "free play [rad]", free_play, 1e-4, 0, 1,
+           "backlash: the latch bites beyond position +- free play / 2"}};
 }
 
 LatchState::LatchState(const std::vector<const Latch*>& latches, const std::vector<double>& q0_of_latch)
@@ -57,9 +56,7 @@ LatchState::LatchState(const std::vector<const Latch*>& latches, const std::vect
   }
 }
 
-double LatchState::switching_value(int l, double q) const {
-  return engaged_[l] ? 1.0 : side_[l] * (q - position_[l]);
-}
+double LatchState::switching_value(int l, double q) const { return engaged_[l] ? 1.0 : side_[l] * (q - position_[l]); }
 
 int LatchState::engaged_count() const {
   int n = 0;
@@ -78,4 +75,4 @@ void Latch::validate(const Scene& scene, const std::string& field) const {
   }
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

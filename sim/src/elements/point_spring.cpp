@@ -3,7 +3,7 @@
 #include "unfurl/sim/scene.hpp"
 #include "unfurl/sim/scene_validation.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 namespace {
 
@@ -75,8 +75,9 @@ std::vector<ElementParameter> PointSpring::parameters() const {
 
 void PointSpring::validate(const Scene& scene, const std::string& field) const {
   if (named && !is_valid_name(name))
-    throw SceneInvalid(field + ".name", "the name '" + name +
-                                            "' has characters other than letters, digits, '_' and '-' (or is empty or over 64)");
+    throw SceneInvalid(
+        field + ".name",
+        "the name '" + name + "' has characters other than letters, digits, '_' and '-' (or is empty or over 64)");
   for (const PointSpring* other : scene.elements_of<PointSpring>()) {
     if (other == this) break;
     if (other->name == name) throw SceneInvalid(field + ".name", "a point spring named '" + name + "' already exists");
@@ -94,4 +95,4 @@ void PointSpring::validate(const Scene& scene, const std::string& field) const {
     throw SceneInvalid(field, "its two points coincide at the initial state: the line of the force has no direction");
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace unfurl {
+namespace unfurl::sim {
 
 namespace {
 
@@ -18,7 +18,8 @@ struct Hermite {
   }
   double slope(double s) const {
     const double s2 = s * s;
-    return ((6 * s2 - 6 * s) * y0 + (3 * s2 - 4 * s + 1) * h * m0 + (-6 * s2 + 6 * s) * y1 + (3 * s2 - 2 * s) * h * m1) /
+    return ((6 * s2 - 6 * s) * y0 + (3 * s2 - 4 * s + 1) * h * m0 + (-6 * s2 + 6 * s) * y1 +
+            (3 * s2 - 2 * s) * h * m1) /
            h;
   }
   // Integral of the value from 0 to s h.
@@ -33,7 +34,8 @@ struct Hermite {
 
 SpringCurve::SpringCurve(std::vector<double> q, std::vector<double> tau) : q_(std::move(q)), tau_(std::move(tau)) {
   const std::size_t n = q_.size();
-  if (n < 2 || tau_.size() != n) throw std::invalid_argument("a spring curve needs at least two (angle, torque) points");
+  if (n < 2 || tau_.size() != n)
+    throw std::invalid_argument("a spring curve needs at least two (angle, torque) points");
   for (std::size_t k = 0; k + 1 < n; ++k)
     if (!(q_[k + 1] > q_[k])) throw std::invalid_argument("the angles of a spring curve must increase");
   // Fritsch-Carlson: secant slopes d_k; interior slopes their harmonic-type
@@ -102,4 +104,4 @@ double SpringCurve::energy(double q) const {
   return -W;
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -59,7 +59,8 @@ class YamlFields {
   bool flag(const YAML::Node& node, const std::string& field) const;
   std::vector<double> numbers(const YAML::Node& node, const std::string& field) const;
   Eigen::Vector3d vec3(const YAML::Node& node, const std::string& field) const;
-  Eigen::Vector3d vec3_or(const YAML::Node& map, const char* key, const Eigen::Vector3d& fallback, const std::string& field) const;
+  Eigen::Vector3d vec3_or(const YAML::Node& map, const char* key, const Eigen::Vector3d& fallback,
+                          const std::string& field) const;
 
  private:
   std::string source_;

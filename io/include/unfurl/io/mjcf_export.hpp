@@ -39,6 +39,6 @@ struct MjcfModel {
 
 // Throws std::runtime_error for a mechanism MJCF cannot hold (an image
 // with children of its own, a loop closed at a joint other than a hinge).
-MjcfModel export_mjcf(const Scene& scene);
+MjcfModel export_mjcf(const sim::Scene& scene);
 
 }  // namespace unfurl::io

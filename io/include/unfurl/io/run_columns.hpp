@@ -19,10 +19,10 @@ struct RunColumn {
   std::string name;   // "q.j1"
   std::string unit;   // "rad"; "" for a pure number
   std::string frame;  // "child body frame"; "" where none applies
-  std::function<double(const Sample&)> value;
+  std::function<double(const sim::Sample&)> value;
   // Sets the value on a sample being read back; empty for a column derived
   // from the others (not read back).
-  std::function<void(Sample&, double)> set;
+  std::function<void(sim::Sample&, double)> set;
 };
 
 // "q.j1 [rad]", "hinge_force.j1.x [N; child body frame]", "t [s]".
@@ -32,11 +32,11 @@ std::string column_name(const std::string& header_cell);
 
 // The columns for a scene's run (the trajectory gives the layout, the loop
 // components and the load columns).
-std::vector<RunColumn> trajectory_columns(const Scene& scene, const Trajectory& trajectory);
-std::vector<RunColumn> load_file_columns(const Scene& scene, const Trajectory& trajectory);
+std::vector<RunColumn> trajectory_columns(const sim::Scene& scene, const sim::Trajectory& trajectory);
+std::vector<RunColumn> load_file_columns(const sim::Scene& scene, const sim::Trajectory& trajectory);
 
 // A sample sized for the trajectory's columns (state, rates, gaps, loads),
 // to be filled by set().
-Sample empty_sample(const Scene& scene, const Trajectory& trajectory);
+sim::Sample empty_sample(const sim::Scene& scene, const sim::Trajectory& trajectory);
 
 }  // namespace unfurl::io

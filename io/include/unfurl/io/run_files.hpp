@@ -12,16 +12,16 @@
 
 namespace unfurl::io {
 
-void write_trajectory_csv(const Scene& scene, const Trajectory& trajectory, const std::string& path);
-void write_loads_csv(const Scene& scene, const Trajectory& trajectory, const std::string& path);
-void write_events_csv(const Scene& scene, const Trajectory& trajectory, const std::string& path);
-void write_summary_json(const Scene& scene, const RunResult& result, const RunSummary& summary,
+void write_trajectory_csv(const sim::Scene& scene, const sim::Trajectory& trajectory, const std::string& path);
+void write_loads_csv(const sim::Scene& scene, const sim::Trajectory& trajectory, const std::string& path);
+void write_events_csv(const sim::Scene& scene, const sim::Trajectory& trajectory, const std::string& path);
+void write_summary_json(const sim::Scene& scene, const sim::RunResult& result, const sim::RunSummary& summary,
                         const std::string& path);
 
 // A trajectory.csv for the scene it came from, with the events.csv and
 // loads.csv beside it where they are. Throws std::runtime_error naming the
 // file, line and column on a mismatch (a joint of the scene missing from
 // the file, a malformed number).
-Trajectory read_trajectory_csv(const Scene& scene, const std::string& path);
+sim::Trajectory read_trajectory_csv(const sim::Scene& scene, const std::string& path);
 
 }  // namespace unfurl::io

@@ -17,28 +17,29 @@ namespace unfurl::io {
 std::string read_text_file(const std::string& path);
 
 // The header line of cases.csv (and of each case record).
-std::string cases_header(const CaseColumns& columns);
+std::string cases_header(const studies::CaseColumns& columns);
 // One row of cases.csv; numbers round-trip exactly, NaN is empty.
-std::string case_row(const CaseResult& r);
+std::string case_row(const studies::CaseResult& r);
 
 // A case's record as text (its case.csv, then a form feed, then its
 // angle.csv), for a file or a message between processes.
-std::string case_record(const CaseColumns& columns, const CaseResult& r);
+std::string case_record(const studies::CaseColumns& columns, const studies::CaseResult& r);
 // Parses a record; nullopt when it was written for other columns.
-std::optional<CaseResult> parse_case_record(const CaseColumns& columns, const std::string& record);
+std::optional<studies::CaseResult> parse_case_record(const studies::CaseColumns& columns, const std::string& record);
 
 // Writes the record under dir/cases/ID/.
 void write_case_record(const std::string& dir, const std::string& id, const std::string& record);
 // The record of a finished case, if dir holds one for these columns.
-std::optional<CaseResult> read_case_record(const CaseColumns& columns, const std::string& dir, const std::string& id);
+std::optional<studies::CaseResult> read_case_record(const studies::CaseColumns& columns, const std::string& dir,
+                                                    const std::string& id);
 
 struct StudyReport {
-  const Study& study;
-  const CaseColumns& columns;
-  const std::vector<CaseResult>& results;  // in case order
+  const studies::Study& study;
+  const studies::CaseColumns& columns;
+  const std::vector<studies::CaseResult>& results;  // in case order
   long total_cases = 0;
   long resumed = 0;  // cases read back from an earlier, interrupted run
-  StudyStatistics statistics;
+  studies::StudyStatistics statistics;
   double wall_time_s = 0;
   int processes = 1, jobs = 1;
   std::string command;

@@ -19,6 +19,6 @@ const char* camera_frame_name(CameraFrame frame);
 
 // The bodies' poses at q, seen from `frame` (the bus frame only for a
 // free-floating model; otherwise the base frame).
-void poses_in_camera_frame(CameraFrame frame, const Model& model, const double* q, std::vector<Pose>& poses);
+void poses_in_camera_frame(CameraFrame frame, const sim::Model& model, const double* q, std::vector<sim::Pose>& poses);
 
 }  // namespace unfurl::render

@@ -17,7 +17,7 @@ namespace unfurl::render {
 class FrameRenderer {
  public:
   // Throws std::runtime_error when a mesh is missing or GL fails.
-  FrameRenderer(const Scene& scene, const SceneVisuals& visuals, int width, int height,
+  FrameRenderer(const sim::Scene& scene, const sim::SceneVisuals& visuals, int width, int height,
                 std::vector<std::string> mesh_directories);
 
   const SceneView& view() const { return *view_; }
@@ -25,7 +25,7 @@ class FrameRenderer {
   int height() const { return framebuffer_.height(); }
 
   // The scene at these poses, labelled with the scene name and time.
-  void frame(const std::vector<Pose>& poses, double t, const Camera& camera, Image& out);
+  void frame(const std::vector<sim::Pose>& poses, double t, const Camera& camera, Image& out);
 
  private:
   std::string scene_name_;

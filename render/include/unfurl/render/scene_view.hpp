@@ -22,31 +22,31 @@ class SceneView {
  public:
   // Loads the meshes the scene names (throws std::runtime_error when one is
   // missing). Needs a current GL context.
-  SceneView(const Scene& scene, const SceneVisuals& visuals, MeshLibrary& meshes);
+  SceneView(const sim::Scene& scene, const sim::SceneVisuals& visuals, MeshLibrary& meshes);
   ~SceneView();
 
   // Draws into the bound framebuffer of size width x height.
-  void draw(const std::vector<Pose>& poses, const Camera& camera, int width, int height) const;
+  void draw(const std::vector<sim::Pose>& poses, const Camera& camera, int width, int height) const;
 
   // The base-frame bounds of everything drawn at these poses.
-  Eigen::AlignedBox3f bounds(const std::vector<Pose>& poses) const;
+  Eigen::AlignedBox3f bounds(const std::vector<sim::Pose>& poses) const;
 
  private:
   struct Item {
-    int body = kBase;           // whose pose places it (kBase: body 0)
+    int body = sim::kBase;  // whose pose places it (kBase: body 0)
     const MeshModel* mesh = nullptr;
     Eigen::Affine3f local;      // mesh units -> body frame
   };
 
-  Eigen::Affine3f placement(const Item& item, const std::vector<Pose>& poses) const;
-  void add_pins(const Scene& scene, const SceneVisuals& visuals, MeshLibrary& meshes);
+  Eigen::Affine3f placement(const Item& item, const std::vector<sim::Pose>& poses) const;
+  void add_pins(const sim::Scene& scene, const sim::SceneVisuals& visuals, MeshLibrary& meshes);
   // A mesh placed by T; `colour` replaces its materials' when given.
   void draw_mesh(const MeshModel& mesh, const Eigen::Affine3f& T, const Eigen::Vector3f* colour) const;
   // An element's link (a point spring) as a thin rod between its two points.
-  Eigen::Affine3f link_placement(const ElementLink& link, const std::vector<Pose>& poses) const;
+  Eigen::Affine3f link_placement(const sim::ElementLink& link, const std::vector<sim::Pose>& poses) const;
 
   std::vector<Item> items_;
-  std::vector<ElementLink> links_;
+  std::vector<sim::ElementLink> links_;
   const MeshModel* link_mesh_ = nullptr;
   std::unique_ptr<Shader> shader_, background_;
   unsigned background_vao_ = 0;

@@ -23,7 +23,7 @@ const char* plot_kind_name(PlotKind kind);
 
 // The plots a scene's runs have: no gap plot for a tree; the bus's attitude
 // for a free-floating one.
-std::vector<PlotKind> plot_kinds(const Scene& scene);
+std::vector<PlotKind> plot_kinds(const sim::Scene& scene);
 
 struct NamedPlot {
   PlotKind kind;
@@ -34,13 +34,14 @@ struct NamedPlot {
 // Every plot of plot_kinds() with its file name (angles.png, rates.png,
 // residuals.png, loads.png, energy.png, bus.png). At most `max_joints` joints are
 // drawn, in scene order.
-std::vector<NamedPlot> trajectory_plots(const Scene& scene, const Trajectory& trajectory, int max_joints = 12);
+std::vector<NamedPlot> trajectory_plots(const sim::Scene& scene, const sim::Trajectory& trajectory,
+                                        int max_joints = 12);
 
 // Another run drawn with the current one: the previous run (colour 0: each
 // curve faint in its own colour) or a pinned run (a translucent colour of
 // its own, its name in the legend).
 struct ComparedRun {
-  const Trajectory* trajectory = nullptr;
+  const sim::Trajectory* trajectory = nullptr;
   std::string name;
   ImU32 color = 0;
 };
@@ -54,9 +55,10 @@ struct PlotChoice {
   std::optional<std::pair<double, double>> time_range;  // a zoom
 };
 
-PlotSpec trajectory_plot(PlotKind kind, const Scene& scene, const Trajectory& trajectory, const PlotChoice& choice = {});
+PlotSpec trajectory_plot(PlotKind kind, const sim::Scene& scene, const sim::Trajectory& trajectory,
+                         const PlotChoice& choice = {});
 
 // The coordinates a plot of joints draws under `choice`.
-std::vector<int> chosen_coordinates(const Model& model, const PlotChoice& choice);
+std::vector<int> chosen_coordinates(const sim::Model& model, const PlotChoice& choice);
 
 }  // namespace unfurl::render

@@ -17,7 +17,7 @@
 #include "unfurl/sim/regulator_settings.hpp"
 #include "unfurl/sim/sweep.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 class ClosureSolver {
  public:
@@ -44,4 +44,4 @@ std::unique_ptr<ClosureSolver> make_dense_closure_solver(const Model& model, con
 std::unique_ptr<ClosureSolver> make_sparse_closure_solver(const Model& model, const std::vector<Loop>& loops,
                                                           const std::vector<LoopComponent>& components);
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

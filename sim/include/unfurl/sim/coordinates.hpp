@@ -7,7 +7,7 @@
 // length and order as soon as a ball or free joint appears.
 #pragma once
 
-namespace unfurl {
+namespace unfurl::sim {
 
 struct PositionIndex {
   int value = -1;
@@ -40,4 +40,4 @@ using Positions = CoordinateArray<PositionIndex, const double>;
 using Rates = CoordinateArray<VelocityIndex, const double>;
 using RatesOut = CoordinateArray<VelocityIndex, double>;
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -35,7 +35,7 @@
 #include "unfurl/sim/state_layout.hpp"
 #include "unfurl/sim/sweep.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 class NewtonPreconditioner;
 
@@ -162,4 +162,4 @@ class Dynamics {
   std::vector<double> dissipation_w_;
 };
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -1,7 +1,7 @@
 // The mechanism's energy at one instant, by where it is stored.
 #pragma once
 
-namespace unfurl {
+namespace unfurl::sim {
 
 struct EnergyParts {
   double kinetic = 0;
@@ -18,4 +18,4 @@ struct EnergyParts {
   double balance() const { return total() + dissipated; }
 };
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -18,7 +18,7 @@
 #include "unfurl/sim/loads.hpp"
 #include "unfurl/sim/model.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 struct Scene;
 
@@ -112,4 +112,4 @@ class ForceElement {
   virtual std::vector<ElementLink> links() const { return {}; }
 };
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -12,7 +12,7 @@
 #include "unfurl/sim/dynamics.hpp"
 #include "unfurl/sim/scene.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 struct SolverStats {
   long steps = 0;
@@ -77,4 +77,4 @@ std::unique_ptr<Integrator> make_integrator(IntegratorKind kind, Dynamics& dynam
                                             const RunSettings& settings, double t0,
                                             const std::vector<double>& y0);
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -25,7 +25,7 @@
 
 #include "unfurl/sim/spatial.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 enum class JointType { revolute, prismatic, fixed, spherical, planar, free, universal };
 
@@ -88,4 +88,4 @@ struct Joint {
 // The rotation of a quaternion (w, x, y, z), normalized, child to parent.
 Mat3 quaternion_rotation(const double* q);
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

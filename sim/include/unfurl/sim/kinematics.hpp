@@ -7,7 +7,7 @@
 
 #include "unfurl/sim/model.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 struct Pose {
   Vec3 position = Vec3::Zero();     // body origin, base frame
@@ -28,4 +28,4 @@ void position_rates(const Model& model, const double* q, const double* w, double
 // The inverse: the rates w from q and q' (Joint::rates).
 void rates_from_position_rates(const Model& model, const double* q, const double* dq, double* w);
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -11,7 +11,7 @@
 
 #include "unfurl/sim/spatial.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 // A column of loads.csv (and of the GUI's loads): what a force element
 // reports at each sample. Elements that report the same name share the
@@ -62,4 +62,4 @@ struct RunPeaks {
 // The name of loop component axis a: fx, fy, fz, mx, my, mz.
 const char* wrench_component_name(int axis);
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

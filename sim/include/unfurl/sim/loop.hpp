@@ -9,7 +9,7 @@
 
 #include "unfurl/sim/kinematics.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 struct Loop {
   std::string name;
@@ -38,4 +38,4 @@ ClosureError closure_error(const Pose& body, const Pose& image);
 // function of q, so an integration error in q cannot hide from it.
 Vec6 closure_mismatch(const Pose& body, const Pose& image);
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -10,7 +10,7 @@
 #include "unfurl/sim/model.hpp"
 #include "unfurl/sim/sweep.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 // eps v on the active components, from body velocities (8).
 void residual_rate(const std::vector<Loop>& loops, const std::vector<LoopComponent>& components,
@@ -30,4 +30,4 @@ std::vector<LoopComponent> active_loop_components(const Model& model, const std:
 void geometric_gap(const std::vector<Loop>& loops, const std::vector<LoopComponent>& components,
                    const std::vector<Pose>& poses, double* g);
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -9,7 +9,7 @@
 #include "unfurl/sim/loop_components.hpp"
 #include "unfurl/sim/sweep.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 // Forming all of W costs O(N m) and the dense solver O(m^3); beyond this
 // many components only the sparse solver is used. Bounding the size keeps
@@ -50,4 +50,4 @@ class Mobility {
   Coordinates x_m_, dq_m_;
 };
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

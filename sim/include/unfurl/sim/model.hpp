@@ -11,7 +11,7 @@
 #include "unfurl/sim/joint.hpp"
 #include "unfurl/sim/spatial.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 struct Body {
   std::string name;
@@ -80,4 +80,4 @@ struct Model {
   bool free_floating() const { return !joints.empty() && joints[0].type == JointType::free; }
 };
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -8,7 +8,7 @@
 #include "unfurl/sim/kinematics.hpp"
 #include "unfurl/sim/model.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 struct SystemMomentum {
   Vec3 linear = Vec3::Zero();
@@ -39,4 +39,4 @@ inline JointOrientation bus_motion(const Model& model, const double* q, const do
 // The angle of the rotation from attitude a to attitude b (unit quaternions).
 double rotation_angle_between(const Eigen::Vector4d& a, const Eigen::Vector4d& b);
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -4,9 +4,9 @@
 
 #include <string>
 
-namespace unfurl {
+namespace unfurl::sim {
 
 // The shortest text that reads back as the same double; "nan"/"inf" kept.
 std::string format_number(double x);
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -46,7 +46,7 @@
 #include "unfurl/sim/regulator_settings.hpp"
 #include "unfurl/sim/sweep.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 class Regulator {
  public:
@@ -125,4 +125,4 @@ class Regulator {
   Eigen::Matrix<double, Eigen::Dynamic, 2> rhs_, solved_;
 };
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -3,7 +3,7 @@
 // settings a scene file sets.
 #pragma once
 
-namespace unfurl {
+namespace unfurl::sim {
 
 enum class GainTuning { full, paper };
 
@@ -26,4 +26,4 @@ struct RegulatorSettings {
   double k_v() const { return 2 * p0 * p1; }
 };
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace unfurl {
+namespace unfurl::sim {
 
 enum class IntegratorKind { cvode_bdf, cvode_adams, arkode_erk, arkode_dirk, rk4 };
 
@@ -45,4 +45,4 @@ struct RunSettings {
   double event_window = 1e-6;
 };
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

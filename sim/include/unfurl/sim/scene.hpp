@@ -14,7 +14,7 @@
 #include "unfurl/sim/regulator_settings.hpp"
 #include "unfurl/sim/run_settings.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 struct Scene {
   std::string name;
@@ -53,4 +53,4 @@ struct Scene {
   std::vector<std::string> element_paths(std::size_t k) const;
 };
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

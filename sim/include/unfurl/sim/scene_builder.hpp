@@ -19,7 +19,7 @@
 #include "unfurl/sim/scene_file.hpp"
 #include "unfurl/sim/visuals.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 class SceneBuilder {
  public:
@@ -84,4 +84,4 @@ Joint revolute(std::string name, const Vec3& axis, const Vec3& parent_point, con
 Joint prismatic(std::string name, const Vec3& axis, const Vec3& parent_point, const Vec3& child_point);
 }  // namespace joints
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

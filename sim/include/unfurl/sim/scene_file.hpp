@@ -11,8 +11,7 @@
 #include "unfurl/sim/scene.hpp"
 #include "unfurl/sim/visuals.hpp"
 
-namespace unfurl {
-
+namespace unfurl::sim {
 
 // A "--set path=value" override: path is the key path in the file, with
 // list elements chosen by index or by their name (or joint, or body).
@@ -66,4 +65,4 @@ SceneFile read_builtin_scene(const std::string& name, const std::vector<Override
 Scene load_builtin_scene(const std::string& name, const std::vector<Override>& overrides = {});
 const std::string& builtin_scene_text(const std::string& name);
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -11,12 +11,14 @@
 #include "unfurl/input/input_error.hpp"
 #include "unfurl/sim/scene.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 class SceneInvalid : public input::InputError {
  public:
   SceneInvalid(std::string field, std::string reason)
-      : InputError(field.empty() ? reason : field + ": " + reason), field_(std::move(field)), reason_(std::move(reason)) {}
+      : InputError(field.empty() ? reason : field + ": " + reason),
+        field_(std::move(field)),
+        reason_(std::move(reason)) {}
   // The path of the field, and what is wrong with its value.
   const std::string& field() const { return field_; }
   const std::string& reason() const { return reason_; }
@@ -55,4 +57,4 @@ void check_non_negative(double x, const std::string& field);
 inline constexpr double kLargestClosureTolerance = 0.05;  // m or rad
 inline constexpr long kMostSteps = 1'000'000'000'000;
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -13,7 +13,7 @@
 #include "unfurl/sim/scene.hpp"
 #include "unfurl/sim/trajectory.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 enum class RunStatus { finished, failed, cancelled };
 
@@ -61,4 +61,4 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
 
 const char* run_status_name(RunStatus status);
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

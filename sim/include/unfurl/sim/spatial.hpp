@@ -5,7 +5,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-namespace unfurl {
+namespace unfurl::sim {
 
 using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
@@ -93,4 +93,4 @@ inline Vec6 omega_times(const Vec6& v, const Vec6& mu) {
   return out;
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -2,7 +2,7 @@
 // with loops (u: the regulator's state on the active loop components).
 #pragma once
 
-namespace unfurl {
+namespace unfurl::sim {
 
 // Where each kind of state sits in the state vector.
 // q has nq positions, p one momentum per velocity coordinate (nv); they
@@ -17,4 +17,4 @@ struct StateLayout {
   int size() const { return nq + nv + m; }
 };
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -10,12 +10,12 @@
 
 #include "unfurl/sim/simulation.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 struct RunSummary {
   std::vector<std::pair<std::string, double>> latch_times;  // joint name, time
   std::vector<std::string> unlatched;                       // joints whose latch never engaged
-  double max_closure_gap = 0;    // the largest gap over loops and steps
+  double max_closure_gap = 0;                               // the largest gap over loops and steps
   double max_closure_angle = 0;
   double max_closure_gap_before_latch = 0;  // the same up to the first latch
   double max_closure_angle_before_latch = 0;
@@ -51,4 +51,4 @@ RunSummary::FreeBus summarize_free_bus(const Model& model, const Trajectory& tra
 
 RunSummary summarize(const Scene& scene, const RunResult& result);
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -19,7 +19,7 @@
 #include "unfurl/sim/model.hpp"
 #include "unfurl/sim/spatial.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 class Sweep {
  public:
@@ -132,7 +132,7 @@ class Sweep {
   std::vector<double> D_;       // D_i = (A_i^T M*_i A_i)^-1
   std::vector<int> multi_;      // index into multi_axes_, -1 for n_i <= 1
   std::vector<MultiAxis> multi_axes_;
-  std::vector<double> q_;       // the q of the quantities above
+  std::vector<double> q_;  // the q of the quantities above
 };
 
 template <class S, class P>
@@ -192,4 +192,4 @@ void Sweep::force_pass(std::vector<S>& F, Pout& Q) const {
   }
 }
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -13,7 +13,7 @@
 #include "unfurl/sim/momentum.hpp"
 #include "unfurl/sim/state_layout.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 struct Sample {
   double t = 0;
@@ -46,4 +46,4 @@ struct Trajectory {
   void coordinates_at(double t, std::vector<double>& q) const;
 };
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -7,7 +7,7 @@
 
 #include "unfurl/sim/spatial.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 // What the renderer draws for a body: a mesh from assets/meshes, scaled,
 // then turned about an axis, then offset, in the body frame.
@@ -24,4 +24,4 @@ struct SceneVisuals {
   std::vector<Visual> bodies;  // per body
 };
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

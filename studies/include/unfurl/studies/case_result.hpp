@@ -10,7 +10,7 @@
 #include "unfurl/sim/simulation.hpp"
 #include "unfurl/studies/study_cases.hpp"
 
-namespace unfurl {
+namespace unfurl::studies {
 
 enum class CaseStatus { deployed, not_deployed, failed };
 const char* case_status_name(CaseStatus status);  // "deployed", "not deployed", "failed"
@@ -25,7 +25,7 @@ struct CaseColumns {
 };
 // The unit of an output ("peak_hinge_force.j3": "N"; "steps": "").
 std::string output_unit(const std::string& output);
-CaseColumns case_columns(const Study& study, const Scene& nominal);
+CaseColumns case_columns(const Study& study, const sim::Scene& nominal);
 
 struct CaseResult {
   std::string id;
@@ -39,17 +39,17 @@ struct CaseResult {
 };
 
 struct CaseRun {
-  Scene scene;
-  RunResult run;
+  sim::Scene scene;
+  sim::RunResult run;
 };
 
 // Runs one case; `cancel` stops it early (the result is then not recorded).
 CaseRun simulate_case(const Study& study, const StudyCase& c, const std::atomic<bool>* cancel = nullptr);
 // The case's row, from its run. `nominal` gives the latches and joints the
 // columns name (a failed latch is missing from the case's own scene).
-CaseResult case_result(const Study& study, const Scene& nominal, const StudyCase& c, const CaseRun& run);
+CaseResult case_result(const Study& study, const sim::Scene& nominal, const StudyCase& c, const CaseRun& run);
 
 // The value of output `name` in a row, NaN when absent.
 double output_value(const CaseColumns& columns, const CaseResult& r, const std::string& name);
 
-}  // namespace unfurl
+}  // namespace unfurl::studies

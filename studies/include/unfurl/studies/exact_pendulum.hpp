@@ -11,7 +11,7 @@
 
 #include "unfurl/sim/scene.hpp"
 
-namespace unfurl {
+namespace unfurl::studies {
 
 // Jacobi's sn(u | m), m = k^2 in [0, 1), by the arithmetic-geometric mean.
 double jacobi_sn(double u, double m);
@@ -24,6 +24,6 @@ struct ExactPendulum {
 };
 
 // The exact solution, if the scene is such a pendulum; nullopt otherwise.
-std::optional<ExactPendulum> exact_pendulum(const Scene& scene);
+std::optional<ExactPendulum> exact_pendulum(const sim::Scene& scene);
 
-}  // namespace unfurl
+}  // namespace unfurl::studies

@@ -6,7 +6,7 @@
 
 #include "unfurl/sim/simulation.hpp"
 
-namespace unfurl {
+namespace unfurl::studies {
 
 // The paper's diagonal tuning (16) against the full-matrix gains on the
 // pantograph: the largest geometric loop gap of each along the run (the paper's run is
@@ -17,10 +17,10 @@ struct GainComparison {
   std::vector<double> t_full, residual_full, t_paper, residual_paper;
   std::vector<double> t_eigen, smallest_eigen;
   double routh_bound = 0;
-  RunStatus paper_status = RunStatus::finished;
+  sim::RunStatus paper_status = sim::RunStatus::finished;
   std::string paper_failure;
   int paper_latches = 0, full_latches = 0;
 };
 GainComparison compare_gain_tunings(double budget_s);
 
-}  // namespace unfurl
+}  // namespace unfurl::studies

@@ -12,7 +12,7 @@
 
 #include "unfurl/sim/trajectory.hpp"
 
-namespace unfurl {
+namespace unfurl::studies {
 
 struct PantographReduction {
   static constexpr std::array<double, 8> c{-1, 2, -2, 2, 1, -2, 2, -2};
@@ -44,6 +44,6 @@ struct ReductionError {
   double angle = 0, at = 0;  // rad, s
   double latch_time = 0;     // the reduction's
 };
-ReductionError reduction_error(const Trajectory& trajectory);
+ReductionError reduction_error(const sim::Trajectory& trajectory);
 
-}  // namespace unfurl
+}  // namespace unfurl::studies

@@ -7,7 +7,7 @@
 
 #include "unfurl/sim/dynamics.hpp"
 
-namespace unfurl {
+namespace unfurl::studies {
 
 // Two timing states, their angles 1e-9 rad apart: timed calls alternate
 // between them, because at a repeated q the sweep and the regulator keep
@@ -18,6 +18,6 @@ struct RhsTimingStates {
   std::vector<double> a, b;
   const std::vector<double>& operator[](long call) const { return call % 2 ? b : a; }
 };
-RhsTimingStates rhs_timing_states(Dynamics& dynamics);
+RhsTimingStates rhs_timing_states(sim::Dynamics& dynamics);
 
-}  // namespace unfurl
+}  // namespace unfurl::studies

@@ -9,7 +9,7 @@
 
 #include "unfurl/sim/simulation.hpp"
 
-namespace unfurl {
+namespace unfurl::studies {
 
 // A generated mechanism: "chain", "zfold" or "pantograph" of a size (links,
 // panels or stages), with optional overrides.
@@ -19,7 +19,7 @@ struct ScalingScene {
   std::string variant;  // "" or a label for the overrides ("dense gains")
   std::vector<std::pair<std::string, std::string>> overrides;
 };
-Scene load_scaling_scene(const ScalingScene& s);
+sim::Scene load_scaling_scene(const ScalingScene& s);
 // "pantograph" or "pantograph (dense gains)": the family and its variant.
 std::string family_label(const ScalingScene& s);
 
@@ -37,14 +37,14 @@ struct RunTiming {
   ScalingScene scene;
   std::string method;  // "cvode-bdf, dense Newton" ...
   int bodies = 0, states = 0;
-  RunStatus status = RunStatus::finished;
+  sim::RunStatus status = sim::RunStatus::finished;
   std::string failure;
   double t_reached = 0, wall_time_s = 0;
   long steps = 0, rhs_calls = 0, jacobians = 0, linear_iterations = 0;
   double max_closure_gap = 0;
 };
 
-RunTiming time_whole_run(const ScalingScene& s, IntegratorKind integrator, LinearSolverKind linear_solver,
+RunTiming time_whole_run(const ScalingScene& s, sim::IntegratorKind integrator, sim::LinearSolverKind linear_solver,
                          double t_end, double budget_s);
 
-}  // namespace unfurl
+}  // namespace unfurl::studies

@@ -5,18 +5,18 @@
 
 #include "unfurl/sim/scene_file.hpp"
 
-namespace unfurl {
+namespace unfurl::studies {
 
 // Two chains of a frame and N panels cross-linked into a lazy-tongs with N
 // loops; N = 3 is the reference `pantograph` (same bodies, joints, forces,
 // numbering and initial state).
-SceneFile generate_pantograph(int stages);
+sim::SceneFile generate_pantograph(int stages);
 
 // Chain A of the pantograph with N panels: a tree; N = 3 is `zfold`.
-SceneFile generate_zfold(int panels);
+sim::SceneFile generate_zfold(int panels);
 
 // N identical links hinged end to end about x, hanging under gravity with
 // light damping, released from a bent shape: a tree for scaling runs.
-SceneFile generate_chain(int links);
+sim::SceneFile generate_chain(int links);
 
-}  // namespace unfurl
+}  // namespace unfurl::studies

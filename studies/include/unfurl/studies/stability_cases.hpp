@@ -12,13 +12,13 @@
 
 #include "unfurl/sim/scene_file.hpp"
 
-namespace unfurl {
+namespace unfurl::studies {
 
 struct StabilityCase {
   std::string group;  // "latch stiffness", "regulator v_max", ...
   std::string label;  // "k_L = 1e7, cvode-bdf"
   std::string scene;  // a built-in scene, or "pantograph:N" / "zfold:N" (generated)
-  std::vector<Override> overrides;
+  std::vector<sim::Override> overrides;
   bool small = false;           // cheap: part of the test suite
   std::string expected_check;   // "" = finishes; else the check it fails ("closure", ...)
   bool probe = false;           // looking for a limit: finishing and failing a check are both fine
@@ -31,9 +31,9 @@ struct StabilityCase {
 std::vector<StabilityCase> stability_cases(double budget_s);
 
 // The scene of a case, overrides applied.
-Scene stability_scene(const StabilityCase& c);
+sim::Scene stability_scene(const StabilityCase& c);
 
 // The command line that reproduces a case.
 std::string reproduce_command(const StabilityCase& c);
 
-}  // namespace unfurl
+}  // namespace unfurl::studies

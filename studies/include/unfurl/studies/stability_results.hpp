@@ -10,11 +10,11 @@
 #include "unfurl/sim/simulation.hpp"
 #include "unfurl/studies/stability_cases.hpp"
 
-namespace unfurl {
+namespace unfurl::studies {
 
 struct StabilityResult {
   StabilityCase spec;
-  RunStatus status = RunStatus::finished;
+  sim::RunStatus status = sim::RunStatus::finished;
   std::string failed_check, failure;
   double t_reached = 0, wall_time_s = 0, min_step = 0;
   long steps = 0, rhs_calls = 0;
@@ -25,9 +25,9 @@ struct StabilityResult {
   int latches_engaged = 0, latches_total = 0;
   bool energy_rose = false;        // a passive, non-conservative run that gained energy: not physical
   std::vector<std::string> notes;  // branches, closing time
-  Trajectory trajectory;           // kept for the conservative (long) run's plot
+  sim::Trajectory trajectory;      // kept for the conservative (long) run's plot
 };
 
 StabilityResult run_stability_case(const StabilityCase& c);
 
-}  // namespace unfurl
+}  // namespace unfurl::studies

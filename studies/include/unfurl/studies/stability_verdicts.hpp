@@ -8,19 +8,19 @@
 #include "unfurl/sim/trajectory.hpp"
 #include "unfurl/studies/stability_results.hpp"
 
-namespace unfurl {
+namespace unfurl::studies {
 
 // Finished, or failed the expected check (a probe: either).
 bool as_expected(const StabilityResult& r);
 
 // Which way each loop went: the joints on the loop's path that opened
 // (moved by more than 0.1 rad) and those that held (within 0.01 rad).
-std::vector<std::string> describe_branches(const Scene& scene, const Trajectory& trajectory);
+std::vector<std::string> describe_branches(const sim::Scene& scene, const sim::Trajectory& trajectory);
 
 // The largest geometric gap of any loop in a sample, metres or radians.
-double largest_gap(const Sample& s);
+double largest_gap(const sim::Sample& s);
 
 // The first time the largest loop gap is below `level` (NaN: never).
-double closing_time(const Trajectory& tr, double level);
+double closing_time(const sim::Trajectory& tr, double level);
 
-}  // namespace unfurl
+}  // namespace unfurl::studies

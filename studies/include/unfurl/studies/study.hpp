@@ -9,7 +9,7 @@
 
 #include "unfurl/sim/scene_file.hpp"
 
-namespace unfurl {
+namespace unfurl::studies {
 
 // One varied scene value. Lists and grids give its values; distributions
 // draw it per case. A `scale` variable multiplies the scene's value.
@@ -51,7 +51,7 @@ struct Study {
   std::string scene;         // as the file names it
   std::string scene_text;    // the scene's YAML
   std::string scene_source;  // where it came from (a path, or "built-in NAME")
-  std::vector<Override> settings;  // the study's fixed --set values (run settings, ...)
+  std::vector<sim::Override> settings;   // the study's fixed --set values (run settings, ...)
   std::vector<StudyVariable> variables;  // `*` paths expanded
   bool zip = false;          // lists and grids: element by element, not every combination
   unsigned long seed = 1;
@@ -66,6 +66,6 @@ Study read_study_file(const std::string& path);
 Study read_study_text(const std::string& text, const std::string& source, const std::string& directory);
 
 // The nominal scene with the study's settings.
-SceneFile nominal_scene(const Study& study);
+sim::SceneFile nominal_scene(const Study& study);
 
-}  // namespace unfurl
+}  // namespace unfurl::studies

@@ -11,7 +11,7 @@
 
 #include "unfurl/studies/study.hpp"
 
-namespace unfurl {
+namespace unfurl::studies {
 
 struct StudyCase {
   std::string id;              // "nominal", "case-0042", "fail-latch-j3"
@@ -23,9 +23,9 @@ std::vector<StudyCase> study_cases(const Study& study);
 
 // The scene of one case: the study's scene with its settings, the case's
 // values and its failure applied.
-Scene case_scene(const Study& study, const StudyCase& c);
+sim::Scene case_scene(const Study& study, const StudyCase& c);
 // The same with the scene's visuals, and `edits` (--set overrides) applied
 // over the case's values: the workbench's edits of a case it shows.
-SceneFile case_scene_file(const Study& study, const StudyCase& c, const std::vector<Override>& edits = {});
+sim::SceneFile case_scene_file(const Study& study, const StudyCase& c, const std::vector<sim::Override>& edits = {});
 
-}  // namespace unfurl
+}  // namespace unfurl::studies

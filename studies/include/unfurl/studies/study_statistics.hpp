@@ -9,7 +9,7 @@
 
 #include "unfurl/studies/case_result.hpp"
 
-namespace unfurl {
+namespace unfurl::studies {
 
 struct OutputStatistics {
   std::string output;
@@ -38,4 +38,4 @@ double percentile(const std::vector<double>& sorted, double p);
 // either side is constant or there are fewer than three pairs.
 double spearman(const std::vector<double>& x, const std::vector<double>& y);
 
-}  // namespace unfurl
+}  // namespace unfurl::studies

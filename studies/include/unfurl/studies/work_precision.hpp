@@ -17,10 +17,10 @@
 
 #include "unfurl/sim/simulation.hpp"
 
-namespace unfurl {
+namespace unfurl::studies {
 
 struct WorkPrecisionSettings {
-  std::vector<IntegratorKind> integrators = all_integrators();
+  std::vector<sim::IntegratorKind> integrators = sim::all_integrators();
   std::vector<double> tolerances{1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10};  // rtol; atol = rtol / 100
   std::vector<double> rk4_steps{1e-2, 5e-3, 2e-3, 1e-3, 5e-4, 2e-4, 1e-4, 5e-5};
   int repeats = 3;                   // wall time: the median of this many runs...
@@ -32,13 +32,13 @@ constexpr double kNotMeasured = std::numeric_limits<double>::quiet_NaN();
 
 // One integrator at one setting.
 struct PrecisionPoint {
-  IntegratorKind integrator = IntegratorKind::cvode_bdf;
+  sim::IntegratorKind integrator = sim::IntegratorKind::cvode_bdf;
   double rtol = 0, atol = 0, dt = 0;  // dt: RK4 only
-  RunStatus status = RunStatus::finished;
+  sim::RunStatus status = sim::RunStatus::finished;
   std::string failure;
   int runs = 0;
   double wall_time_s = 0;  // median
-  SolverStats stats;
+  sim::SolverStats stats;
   long rhs_calls = 0;
   double angle_error = kNotMeasured;  // max |q - q_ref| over joints and samples (up to the first latch)
   double angle_error_whole_run = kNotMeasured;
@@ -59,7 +59,7 @@ struct WorkPrecision {
 // Called before each run: what is being run, and how many of all are done.
 using ReportProgress = std::function<void(const std::string& what, int done, int total)>;
 
-WorkPrecision measure_work_precision(const Scene& scene, const WorkPrecisionSettings& settings,
+WorkPrecision measure_work_precision(const sim::Scene& scene, const WorkPrecisionSettings& settings,
                                      const ReportProgress& progress = {});
 
 // For each accuracy 10^-k (k >= 1) reached by some run: the fastest run whose angle
@@ -70,4 +70,4 @@ struct CheapestRun {
 };
 std::vector<CheapestRun> cheapest_by_accuracy(const WorkPrecision& report);
 
-}  // namespace unfurl
+}  // namespace unfurl::studies

@@ -5,7 +5,7 @@
 
 #include "unfurl/sim/force_element.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 class AppliedForce : public ForceElement {
  public:
@@ -27,4 +27,4 @@ class AppliedForce : public ForceElement {
 // (f, m) at a body's origin of a force f at `point` and a torque m.
 Vec6 wrench_at_origin(const Vec3& force, const Vec3& torque, const Vec3& point);
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -4,7 +4,7 @@
 
 #include "unfurl/sim/force_element.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 class Gravity : public ForceElement {
  public:
@@ -24,4 +24,4 @@ class Gravity : public ForceElement {
   void validate(const Scene& scene, const std::string& field) const override;
 };
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

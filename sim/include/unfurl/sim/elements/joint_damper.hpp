@@ -3,7 +3,7 @@
 
 #include "unfurl/sim/elements/joint_element.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 class JointDamper : public JointElement {
  public:
@@ -23,4 +23,4 @@ class JointDamper : public JointElement {
   std::vector<ElementParameter> parameters() const override;
 };
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

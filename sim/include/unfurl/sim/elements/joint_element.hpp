@@ -7,7 +7,7 @@
 
 #include "unfurl/sim/force_element.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 class JointElement : public ForceElement {
  public:
@@ -32,4 +32,4 @@ class JointElement : public ForceElement {
   }
 };
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

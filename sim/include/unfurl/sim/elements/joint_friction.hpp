@@ -7,7 +7,7 @@
 
 #include "unfurl/sim/elements/joint_element.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 // tau_f = -coulomb tanh(dq / velocity_scale) - viscous dq on one joint.
 // Within |dq| < velocity_scale the Coulomb torque ramps through zero (its
@@ -40,4 +40,4 @@ class JointFriction : public JointElement {
   std::vector<ElementParameter> parameters() const override;
 };
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -8,7 +8,7 @@
 #include "unfurl/sim/elements/joint_element.hpp"
 #include "unfurl/sim/elements/spring_curve.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 class JointSpring : public JointElement {
  public:
@@ -42,4 +42,4 @@ class JointSpring : public JointElement {
   std::string note() const override;
 };
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

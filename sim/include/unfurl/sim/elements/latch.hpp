@@ -8,7 +8,7 @@
 
 #include "unfurl/sim/elements/joint_element.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 class Latch : public JointElement {
  public:
@@ -78,4 +78,4 @@ class LatchState {
   std::vector<char> engaged_;
 };
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

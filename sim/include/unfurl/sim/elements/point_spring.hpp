@@ -7,7 +7,7 @@
 
 #include "unfurl/sim/force_element.hpp"
 
-namespace unfurl {
+namespace unfurl::sim {
 
 // Where a point spring is: its length, its rate, and the unit vector from
 // a to b (zero at zero length, where the line has no direction), base frame.
@@ -22,12 +22,12 @@ struct PointSpringGeometry {
 class PointSpring : public ForceElement {
  public:
   std::string name;
-  bool named = false;  // the name was given (else it is made up and the element is addressed by index)
+  bool named = false;                  // the name was given (else it is made up and the element is addressed by index)
   int body_a = kBase, body_b = kBase;  // kBase: a point fixed on the base
   Vec3 point_a = Vec3::Zero(), point_b = Vec3::Zero();  // in each body's frame
-  double stiffness = 0;    // N/m
-  double rest_length = 0;  // m: the preload is stiffness (L0 - rest_length)
-  double damping = 0;      // N s/m
+  double stiffness = 0;                                 // N/m
+  double rest_length = 0;                               // m: the preload is stiffness (L0 - rest_length)
+  double damping = 0;                                   // N s/m
   bool tension_only = false;
 
   bool slack(double L) const { return tension_only && L <= rest_length; }
@@ -62,4 +62,4 @@ class PointSpring : public ForceElement {
   }
 };
 
-}  // namespace unfurl
+}  // namespace unfurl::sim

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-namespace unfurl {
+namespace unfurl::sim {
 
 // tau(q) through the points (q_k, tau_k), q increasing: piecewise cubic
 // Hermite with Fritsch-Carlson slopes, so the curve is C1 and never
@@ -27,9 +27,9 @@ class SpringCurve {
   const std::vector<double>& torques() const { return tau_; }
 
  private:
-  int segment(double q) const;  // k with q_k <= q < q_{k+1}, clamped
+  int segment(double q) const;       // k with q_k <= q < q_{k+1}, clamped
   std::vector<double> q_, tau_, m_;  // points and slopes at them
   std::vector<double> work_;         // integral of tau from q_0 to q_k
 };
 
-}  // namespace unfurl
+}  // namespace unfurl::sim
