@@ -1,3 +1,5 @@
+// The workbench's window and frame loop: the panels laid out, their
+// requests applied, input awaited while nothing changes.
 #include "gui_app.hpp"
 
 #include <imgui.h>
@@ -9,34 +11,18 @@
 #include <cstdio>
 #include <thread>
 
-#include "unfurl/render/frame_renderer.hpp"
+#include "gui_clock.hpp"
+#include "gui_panels.hpp"
+#include "scene_options.hpp"
+#include "unfurl/io/output_file.hpp"
+#include "unfurl/io/run_files.hpp"
 #include "unfurl/render/imgui_layer.hpp"
 #include "unfurl/render/window_surface.hpp"
-#include "unfurl/io/output_file.hpp"
-#include "unfurl/io/png_file.hpp"
-#include "gui_panels.hpp"
-#include "unfurl/io/run_files.hpp"
-#include "scene_options.hpp"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
 namespace unfurl::app {
-
-namespace {
-
-double now_seconds() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-std::optional<std::filesystem::file_time_type> modification_time(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) return std::nullopt;
-  const auto t = std::filesystem::last_write_time(path, ec);
-  return ec ? std::nullopt : std::optional(t);
-}
-
-}  // namespace
 
 GuiApp::GuiApp(const std::string& scene_name, std::vector<sim::Override> command_line_set,
                std::vector<ScriptCommand> script, std::optional<StudyToOpen> study, int width, int height,
@@ -77,272 +63,6 @@ GuiApp::~GuiApp() {
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
-}
-
-void GuiApp::apply_ui_scale() {
-  // The font is rasterized at its size (a scaled bitmap would blur): the
-  // atlas is rebuilt when the scale changes, between frames.
-  const float scale = std::clamp(state_.ui_scale * window_.content_scale(), 0.5f, 4.0f);
-  if (scale == state_.applied_scale) return;
-  ImGuiIO& io = ImGui::GetIO();
-  io.Fonts->Clear();
-  render::load_font(std::round(17 * scale));
-  ImGui_ImplOpenGL3_DestroyFontsTexture();
-  ImGui_ImplOpenGL3_CreateFontsTexture();
-  ImGui::GetStyle() = ImGuiStyle();
-  ImGui::StyleColorsDark();
-  ImGui::GetStyle().ScaleAllSizes(scale);
-  state_.applied_scale = scale;
-  plots_layer_.reset();  // its own font, made again at the new size
-  plots_.reset();
-}
-
-bool GuiApp::show_case(const std::string& id) {
-  const std::string shown = state_.study->shown;
-  const std::vector<sim::Override> edits = state_.edits;
-  state_.study->shown = id;
-  if (shown != id) state_.edits.clear();
-  if (load_and_run(state_.study->study.scene)) {
-    if (shown != id) state_.undo.clear(), state_.redo.clear();
-    return true;
-  }
-  state_.study->shown = shown;
-  state_.edits = edits;
-  return false;
-}
-
-namespace {
-
-// Whether a run of `a` can be drawn as the ghost of `b`: the same bodies,
-// coordinates, latches and loops (a study's failure cases add or remove
-// latches).
-bool same_structure(const sim::Scene& a, const sim::Scene& b) {
-  return a.name == b.name && a.model.size() == b.model.size() && a.model.nq == b.model.nq &&
-         a.latches().size() == b.latches().size() && a.loops.size() == b.loops.size();
-}
-
-}  // namespace
-
-bool GuiApp::load_and_run(const std::string& name) {
-  try {
-    std::vector<sim::Override> overrides = state_.command_line_set;
-    overrides.insert(overrides.end(), state_.edits.begin(), state_.edits.end());
-    const studies::StudyCase* shown_case =
-        state_.study && !state_.study->shown.empty() ? state_.study->find_case(state_.study->shown) : nullptr;
-    sim::SceneFile file = shown_case ? studies::case_scene_file(state_.study->study, *shown_case, overrides)
-                                     : read_scene_named(name, overrides);
-    sim::Scene& scene = file.scene;
-    std::vector<std::string> injected;
-    if (shown_case && shown_case->failure) injected = failure_elements(scene, *shown_case->failure);
-    auto meshes = std::make_unique<render::MeshLibrary>(mesh_directories(scene));
-    auto view = std::make_unique<render::SceneView>(scene, file.visuals, *meshes);
-    const bool same_scene = name == state_.scene_name && same_structure(scene, state_.scene);
-    const SceneShape previous_shape = scene_shape(state_.scene);
-    state_.scene = std::move(scene);
-    state_.visuals = std::move(file.visuals);
-    state_.scene_name = name;
-    state_.scene_mtime = modification_time(name);
-    state_.scene_error.clear();
-    state_.failure_elements = std::move(injected);
-    state_.failure_text = shown_case && shown_case->failure ? shown_case->failure->describe() : "";
-    view_ = std::move(view);
-    meshes_ = std::move(meshes);
-    start_run();
-    if (!same_scene) {
-      state_.camera_fitted = false;
-      state_.play_time = 0;
-      state_.scene_first_generation = state_.requested_generation;
-      state_.trajectory = sim::Trajectory{};
-      state_.ghost = sim::Trajectory{};
-      keep_comparable_pins(previous_shape);
-    }
-    return true;
-  } catch (const std::exception& e) {
-    state_.scene_error = e.what();
-    return false;
-  }
-}
-
-void GuiApp::keep_comparable_pins(const SceneShape& previous) {
-  // Pinned runs stay with runs of the same shape (a study's cases, an
-  // edited scene); another scene's would be read with the wrong indices.
-  const SceneShape shape = scene_shape(state_.scene);
-  const std::size_t before = state_.pinned.size();
-  state_.pinned.erase(std::remove_if(state_.pinned.begin(), state_.pinned.end(),
-                                     [&](const PinnedRun& p) { return !(p.shape == shape); }),
-                      state_.pinned.end());
-  if (state_.pinned.size() < before)
-    state_.notice = std::to_string(before - state_.pinned.size()) + " pinned run(s) of another scene dropped";
-  if (!(shape == previous)) state_.plot_coordinates.clear(), state_.time_zoom.reset();
-  ++state_.plots_version;
-}
-
-void GuiApp::pin_current_run(const std::string& name) {
-  if (!state_.run_pinnable()) {
-    state_.notice = "not pinned: the run has not finished";
-    return;
-  }
-  PinnedRun p;
-  p.name = name.empty() ? "run " + std::to_string(state_.generation) : name;
-  std::snprintf(p.name_field, sizeof p.name_field, "%s", p.name.c_str());
-  p.shape = scene_shape(state_.scene);
-  p.trajectory = state_.trajectory;
-  p.summary = state_.progress.summary;
-  // The first colour no pinned run has.
-  int k = 0;
-  while (k < 6 && std::any_of(state_.pinned.begin(), state_.pinned.end(),
-                              [&](const PinnedRun& q) { return q.color == pinned_color(k); }))
-    ++k;
-  p.color = pinned_color(k < 6 ? k : static_cast<int>(state_.pinned.size()));
-  state_.pinned.push_back(std::move(p));
-  state_.select_runs_tab = true;
-  ++state_.plots_version;
-  state_.notice = "pinned " + state_.pinned.back().name;
-}
-
-void GuiApp::start_run() { state_.requested_generation = worker_.run(state_.scene); }
-
-void GuiApp::sync_run() {
-  const long before = state_.generation;
-  state_.progress = worker_.sync(state_.generation, state_.trajectory, state_.ghost);
-  if (state_.generation < state_.scene_first_generation) {
-    // The previous scene's run, still winding down: not this scene's.
-    state_.trajectory = sim::Trajectory{};
-    state_.ghost = sim::Trajectory{};
-    return;
-  }
-  if (state_.generation != before && state_.ghost.samples.size() < 2) state_.ghost = sim::Trajectory{};
-}
-
-void GuiApp::advance_playback(double dt) {
-  if (!state_.playing) return;
-  const double t_end = state_.scene.run.t_end, next = state_.play_time + dt * state_.speed;
-  // While the run computes, playback waits at what is known; the play-head
-  // itself keeps any time it was given (a re-run keeps it).
-  if (state_.progress.running && next > state_.progress.t_reached) return;
-  if (next <= t_end) {
-    state_.play_time = next;
-    follow_play_head();
-  } else if (state_.loop) {
-    state_.play_time = 0;
-  } else {
-    state_.play_time = t_end;
-    state_.playing = false;
-  }
-}
-
-void GuiApp::follow_play_head() {
-  // Playback past a zoomed span turns the page: the span moves on and keeps
-  // its width, so the plots show what the 3D view shows.
-  if (!state_.time_zoom) return;
-  auto& [t0, t1] = *state_.time_zoom;
-  if (state_.play_time >= t0 && state_.play_time <= t1) return;
-  const double width = t1 - t0;
-  t0 = std::clamp(state_.play_time, 0.0, std::max(0.0, state_.scene.run.t_end - width));
-  t1 = t0 + width;
-  ++state_.plots_version;
-}
-
-void GuiApp::watch_scene_file() {
-  const double now = now_seconds();
-  if (now - last_file_check_ < 1.0) return;
-  last_file_check_ = now;
-  const auto mtime = modification_time(state_.scene_name);
-  if (mtime && state_.scene_mtime && *mtime != *state_.scene_mtime) {
-    state_.scene_mtime = mtime;
-    if (load_and_run(state_.scene_name)) state_.notice = "reloaded " + state_.scene_name + " (the file changed)";
-  }
-}
-
-void GuiApp::current_poses(std::vector<sim::Pose>& poses) const {
-  std::vector<double> q = state_.scene.q0;
-  if (!state_.trajectory.empty()) state_.trajectory.coordinates_at(state_.play_time, q);
-  render::poses_in_camera_frame(state_.camera_frame, state_.scene.model, q.data(), poses);
-}
-
-Eigen::AlignedBox3f GuiApp::swept_bounds() const {
-  Eigen::AlignedBox3f bounds;
-  std::vector<sim::Pose> poses;
-  render::poses_in_camera_frame(state_.camera_frame, state_.scene.model, state_.scene.q0.data(), poses);
-  bounds.extend(view_->bounds(poses));
-  const sim::Trajectory& tr = state_.trajectory;
-  const std::size_t stride = std::max<std::size_t>(1, tr.samples.size() / 100);
-  std::vector<double> q;
-  for (std::size_t k = 0; k < tr.samples.size(); k += stride) {
-    q.assign(tr.samples[k].y.begin(), tr.samples[k].y.begin() + state_.scene.model.nq);
-    render::poses_in_camera_frame(state_.camera_frame, state_.scene.model, q.data(), poses);
-    bounds.extend(view_->bounds(poses));
-  }
-  return bounds;
-}
-
-void GuiApp::draw_viewport_texture() {
-  const int w = std::max(16, state_.viewport_width), h = std::max(16, state_.viewport_height);
-  if (!viewport_ || viewport_->width() != w || viewport_->height() != h) {
-    viewport_ = std::make_unique<render::Framebuffer>(w, h);
-    viewport_drawn_ = false;
-  }
-  // Frame the whole motion until the first run is done (or after "reset"),
-  // twice a second while it streams in: each refit redraws the view.
-  const bool run_done = state_.run_settled();
-  if (!state_.camera_fitted && (run_done || now_seconds() - camera_fitted_at_ >= 0.5)) {
-    camera_fitted_at_ = now_seconds();
-    const bool orthographic = state_.camera.orthographic;
-    state_.camera = *render::camera_preset("iso", swept_bounds(), float(w) / h);
-    state_.camera.orthographic = orthographic;
-    state_.camera_name = "iso";
-    state_.camera_fitted = run_done;
-  }
-  // Redrawn only when what it shows changed: while a run computes, a
-  // software renderer would otherwise spend a core redrawing a still view.
-  const render::Camera& c = state_.camera;
-  const sim::Trajectory& tr = state_.trajectory;
-  const bool past_computed = tr.empty() || state_.play_time > tr.t_end();
-  const ViewportKey key{view_.get(), w, h, state_.generation,
-                        past_computed ? static_cast<long>(tr.samples.size()) : -1L, state_.play_time,
-                        {c.target.x(), c.target.y(), c.target.z(), c.azimuth_deg, c.elevation_deg, c.distance,
-                         c.fov_deg, c.orthographic ? 1.0f : 0.0f, static_cast<float>(state_.camera_frame)}};
-  if (key == viewport_key_ && viewport_drawn_) return;
-  viewport_key_ = key;
-  viewport_drawn_ = true;
-  std::vector<sim::Pose> poses;
-  current_poses(poses);
-  viewport_->bind();
-  view_->draw(poses, state_.camera, w, h);
-  viewport_->resolve();
-}
-
-void GuiApp::draw_plots_texture() {
-  // Plots are the costliest thing to draw in software GL: redraw them only
-  // when their data or size changed, at most twice a second while a
-  // run streams in. The play-head is drawn over them by the panel.
-  const int w = std::max(16, state_.plots_width), h = std::max(16, state_.plots_height);
-  const PlotsKey key{state_.generation, state_.trajectory.samples.size(), state_.ghost.samples.size(), w, h,
-                     state_.plot_tab, state_.plots_version};
-  const double now = now_seconds();
-  if (plots_ && key == plots_key_) return;
-  if (plots_ && state_.progress.running && now - plots_drawn_at_ < 0.5) return;
-  if (!plots_ || plots_->width() != w || plots_->height() != h) plots_ = std::make_unique<render::Framebuffer>(w, h, 1);
-  if (!plots_layer_) plots_layer_ = std::make_unique<render::ImGuiLayer>(std::round(15 * state_.applied_scale));
-  plots_key_ = key;
-  plots_drawn_at_ = now;
-  plot_frames_.clear();
-  plots_->bind();
-  const ImVec4 background = ImGui::GetStyle().Colors[ImGuiCol_WindowBg];
-  render::clear_bound_framebuffer(background.x, background.y, background.z);
-  plots_layer_->begin_frame(w, h);
-  const std::vector<render::PlotKind> kinds = shown_plots(state_);
-  const render::PlotChoice choice = plot_choice(state_);
-  for (std::size_t k = 0; k < kinds.size(); ++k) {
-    const ImVec4 cell = plot_cell(k, kinds.size(), ImVec2(static_cast<float>(w), static_cast<float>(h)));
-    if (state_.trajectory.empty()) continue;
-    const render::PlotSpec spec = render::trajectory_plot(kinds[k], state_.scene, state_.trajectory, choice);
-    plot_frames_.push_back(render::draw_plot(plots_layer_->draw_list(), ImVec2(cell.x, cell.y), ImVec2(cell.z, cell.w),
-                                             spec, false));
-  }
-  plots_layer_->end_frame();
-  plots_->resolve();
-  if (state_.run_settled() && state_.edited_at > state_.curves_at) state_.curves_at = now_seconds();
 }
 
 void GuiApp::keyboard_shortcuts(Requests& requests) {
@@ -449,14 +169,6 @@ void GuiApp::layout_and_panels(Requests& requests) {
   file_dialog_panel(state_, requests);
 }
 
-bool GuiApp::set_edits(std::vector<sim::Override> edits) {
-  std::vector<sim::Override> before = std::move(state_.edits);
-  state_.edits = std::move(edits);
-  if (load_and_run(state_.scene_name)) return true;
-  state_.edits = std::move(before);
-  return false;
-}
-
 void GuiApp::apply(const Requests& r) {
   // An edit (or a reset) is undoable; undo and redo move whole sets of
   // edits between the two stacks. A set that does not load changes nothing.
@@ -534,85 +246,6 @@ void GuiApp::apply(const Requests& r) {
     } catch (const std::exception& e) {
       state_.export_progress = {false, 0, 0, std::string("export failed: ") + e.what()};
     }
-  }
-}
-
-void GuiApp::save_scene(const std::string& path, bool overwrite) {
-  try {
-    if (state_.study && !state_.study->shown.empty())
-      throw std::runtime_error("a study case is saved by its study file (its injected failure is not a scene value)");
-    std::error_code ec;
-    if (!overwrite && std::filesystem::exists(path, ec)) {
-      state_.confirm_overwrite = path;
-      state_.ask_overwrite = true;
-      state_.notice = path + " exists: replace it? (Parameters tab)";
-      return;
-    }
-    std::vector<sim::Override> overrides = state_.command_line_set;
-    overrides.insert(overrides.end(), state_.edits.begin(), state_.edits.end());
-    const std::string text = sim::scene_text_with(scene_text_named(state_.scene_name), state_.scene.source, overrides);
-    sim::read_scene_text(text, path);  // it must read back
-    const std::string dir = std::filesystem::path(path).parent_path().string();
-    if (!dir.empty()) io::make_directory(dir);
-    io::OutputFile file(path);
-    file.stream() << text;
-    file.commit();
-    state_.notice = "saved " + path;
-  } catch (const std::exception& e) {
-    state_.notice = std::string("not saved: ") + e.what();
-  }
-}
-
-void GuiApp::save_view_png(const std::string& path) {
-  try {
-    const std::string dir = std::filesystem::path(path).parent_path().string();
-    if (!dir.empty()) io::make_directory(dir);
-    // At the export form's size, not the viewport's: the same camera and
-    // play-head, drawn again off screen.
-    const int w = std::clamp(state_.export_form.size[0], 16, 8192), h = std::clamp(state_.export_form.size[1], 16, 8192);
-    render::FrameRenderer renderer(state_.scene, state_.visuals, w, h, mesh_directories(state_.scene));
-    std::vector<sim::Pose> poses;
-    current_poses(poses);
-    render::Image image;
-    renderer.frame(poses, state_.play_time, state_.camera, image);
-    io::write_png(image, path);
-    state_.notice = "saved " + path + " (" + std::to_string(w) + "x" + std::to_string(h) + ")";
-  } catch (const std::exception& e) {
-    state_.notice = e.what();
-  }
-}
-
-void GuiApp::screenshot(const std::string& path) {
-  int W = 0, H = 0;
-  window_.framebuffer_size(W, H);
-  render::Image image;
-  render::read_window(W, H, image);
-  const std::string dir = std::filesystem::path(path).parent_path().string();
-  if (!dir.empty()) io::make_directory(dir);
-  io::write_png(image, path, 6);
-}
-
-void GuiApp::camera_preset(const std::string& name) {
-  if (const auto cam = render::camera_preset(name, swept_bounds(),
-                                             float(state_.viewport_width) / std::max(1, state_.viewport_height))) {
-    const bool orthographic = state_.camera.orthographic;
-    state_.camera = *cam;
-    state_.camera.orthographic = orthographic;
-    state_.camera_name = name;
-    state_.camera_fitted = true;
-  }
-}
-
-void GuiApp::record_frame_time(double seconds) {
-  state_.frame_seconds.push_back(seconds);
-  if (state_.frame_seconds.size() > 60) state_.frame_seconds.pop_front();
-  double total = 0;
-  for (double s : state_.frame_seconds) total += s;
-  state_.fps = total > 0 ? state_.frame_seconds.size() / total : 0;
-  if (state_.progress.running) {
-    ++state_.frames_while_running;
-    state_.seconds_while_running += seconds;
-    state_.worst_frame_while_running = std::max(state_.worst_frame_while_running, seconds);
   }
 }
 

@@ -1,0 +1,66 @@
+// The 3D view and its camera controls.
+#include "gui_panels.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "panel_widgets.hpp"
+#include "unfurl/io/output_file.hpp"
+#include "unfurl/render/trajectory_plots.hpp"
+#include "unfurl/sim/number_text.hpp"
+
+namespace unfurl::app {
+
+void viewport_panel(GuiState& state, unsigned texture, const Eigen::AlignedBox3f& bounds) {
+  // The presets, the active one highlighted (until the view is orbited).
+  for (const std::string& name : render::camera_preset_names()) {
+    const bool active = name == state.camera_name;
+    if (active) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyle().Colors[ImGuiCol_ButtonActive]);
+    if (ImGui::SmallButton(name.c_str())) {
+      const bool orthographic = state.camera.orthographic;
+      state.camera =
+          *render::camera_preset(name, bounds, float(state.viewport_width) / std::max(1, state.viewport_height));
+      state.camera.orthographic = orthographic;
+      state.camera_name = name;
+    }
+    if (active) ImGui::PopStyleColor();
+    ImGui::SameLine();
+  }
+  if (ImGui::SmallButton("reset view")) state.camera_fitted = false;
+  ImGui::SameLine();
+  ImGui::Checkbox("orthographic", &state.camera.orthographic);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("parallel projection: with side, a true view along the hinge axes");
+  if (state.scene.model.free_floating()) {
+    ImGui::SameLine();
+    bool ride = state.camera_frame == render::CameraFrame::bus;
+    if (ImGui::Checkbox("ride with the bus", &ride)) {
+      state.camera_frame = ride ? render::CameraFrame::bus : render::CameraFrame::inertial;
+      state.camera_fitted = false;
+    }
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip(
+          "on: the camera moves with the free-floating bus; off: it stays in the inertial frame, where "
+          "the bus turns and drifts");
+  }
+  const ImVec2 size = ImGui::GetContentRegionAvail();
+  state.viewport_width = std::max(16, static_cast<int>(size.x));
+  state.viewport_height = std::max(16, static_cast<int>(size.y));
+  ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture)), size, ImVec2(0, 1), ImVec2(1, 0));
+  if (!ImGui::IsItemHovered()) return;
+  const ImGuiIO& io = ImGui::GetIO();
+  render::Camera& c = state.camera;
+  if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
+    state.camera_name.clear();
+    c.azimuth_deg -= 0.3f * io.MouseDelta.x;
+    c.elevation_deg = std::clamp(c.elevation_deg + 0.3f * io.MouseDelta.y, -89.9f, 89.9f);
+  }
+  if (ImGui::IsMouseDragging(ImGuiMouseButton_Right) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle)) {
+    const Eigen::Matrix4f V = c.view();
+    const float scale = c.distance * 0.0015f;
+    c.target -= scale * io.MouseDelta.x * V.block<1, 3>(0, 0).transpose();
+    c.target += scale * io.MouseDelta.y * V.block<1, 3>(1, 0).transpose();
+  }
+  if (io.MouseWheel != 0) c.distance *= std::pow(0.9f, io.MouseWheel);
+}
+
+}  // namespace unfurl::app
