@@ -343,7 +343,7 @@ TEST(Gui, StudyCasesOpenFromTheStudyTab) {
   const fs::path& dir = scratch.path;
   const std::string study = std::string(UNFURL_SOURCE_DIR) + "/tests/studies/small_monte_carlo.yaml";
   const test::CommandOutcome sweep =
-      test::run_command(std::string(UNFURL_BINARY) + " sweep " + study + " --out " + (dir / "study").string() + " --quiet");
+      test::run_command(std::string(UNFURL_BINARY) + " study " + study + " --out " + (dir / "study").string() + " --quiet");
   ASSERT_EQ(sweep.code, 0) << sweep.output;
   std::ofstream(dir / "session.txt") << "wait_run\n"
                                         "report " << (dir / "nominal.json").string() << "\n"
@@ -400,7 +400,7 @@ TEST(Gui, AFailureCasesInjectedElementsAreReadOnly) {
   const fs::path& dir = scratch.path;
   const std::string study = std::string(UNFURL_SOURCE_DIR) + "/tests/studies/gui_failures.yaml";
   const test::CommandOutcome sweep =
-      test::run_command(std::string(UNFURL_BINARY) + " sweep " + study + " --out " + (dir / "study").string() + " --quiet");
+      test::run_command(std::string(UNFURL_BINARY) + " study " + study + " --out " + (dir / "study").string() + " --quiet");
   ASSERT_EQ(sweep.code, 0) << sweep.output;
   std::ofstream(dir / "session.txt") << "case fail-hinge-j4-friction-0.05Nm\n"
                                         "wait_run\n"

@@ -1,4 +1,4 @@
-// `unfurl sweep` end to end: the tables, a resumed study, an interrupted
+// `unfurl study` end to end: the tables, a resumed study, an interrupted
 // one, and the same study over two MPI ranks, each giving the same
 // cases.csv (but for the wall times) as one uninterrupted local run.
 #include <gtest/gtest.h>
@@ -23,8 +23,8 @@ fs::path fresh_dir(const std::string& name) {
   return dir;
 }
 
-test::CommandOutcome sweep(const std::string& study, const fs::path& out, const std::string& more = "") {
-  return test::run_command(std::string(UNFURL_BINARY) + " sweep " + study + " --out " + out.string() + " --quiet " + more);
+test::CommandOutcome run_study(const std::string& study, const fs::path& out, const std::string& more = "") {
+  return test::run_command(std::string(UNFURL_BINARY) + " study " + study + " --out " + out.string() + " --quiet " + more);
 }
 
 // cases.csv without its last column (the wall time, which differs run to run).
@@ -42,9 +42,9 @@ std::string text_of(const fs::path& path) {
   return s.str();
 }
 
-TEST(SweepCommand, WritesTheTablesTheReportAndThePlots) {
+TEST(StudyCommand, WritesTheTablesTheReportAndThePlots) {
   const fs::path out = fresh_dir("tables");
-  const test::CommandOutcome o = sweep(kSmall, out, "--jobs 2");
+  const test::CommandOutcome o = run_study(kSmall, out, "--jobs 2");
   ASSERT_EQ(o.code, 0) << o.output;
   const auto rows = table_without_wall_time(out / "cases.csv");
   ASSERT_EQ(rows.size(), 7u);  // header + nominal + 4 draws + 1 failure
@@ -67,17 +67,17 @@ TEST(SweepCommand, WritesTheTablesTheReportAndThePlots) {
 #endif
 }
 
-TEST(SweepCommand, ResumesWhereItStoppedAndRefusesAnotherStudysDirectory) {
+TEST(StudyCommand, ResumesWhereItStoppedAndRefusesAnotherStudysDirectory) {
   const fs::path whole = fresh_dir("whole"), resumed = fresh_dir("resumed");
-  ASSERT_EQ(sweep(kSmall, whole, "--jobs 1").code, 0);
+  ASSERT_EQ(run_study(kSmall, whole, "--jobs 1").code, 0);
   fs::copy(whole, resumed, fs::copy_options::recursive);
   fs::remove_all(resumed / "cases" / "case-0002");
   fs::remove_all(resumed / "cases" / "fail-latch-j3-fails");
   fs::remove(resumed / "cases.csv");
-  const test::CommandOutcome again = sweep(kSmall, resumed, "--jobs 1");
+  const test::CommandOutcome again = run_study(kSmall, resumed, "--jobs 1");
   ASSERT_EQ(again.code, 0) << again.output;
   EXPECT_EQ(table_without_wall_time(resumed / "cases.csv"), table_without_wall_time(whole / "cases.csv"));
-  const test::CommandOutcome other = sweep(kOther, resumed);
+  const test::CommandOutcome other = run_study(kOther, resumed);
   EXPECT_EQ(other.code, 64) << other.output;
   EXPECT_NE(other.output.find("another study"), std::string::npos) << other.output;
 }
@@ -85,10 +85,10 @@ TEST(SweepCommand, ResumesWhereItStoppedAndRefusesAnotherStudysDirectory) {
 // SIGINT stops the study within a second, once its first case is done:
 // the finished cases are kept (and their table written), and the same
 // command then finishes the rest.
-TEST(SweepCommand, InterruptedStudyKeepsFinishedCasesAndResumes) {
+TEST(StudyCommand, InterruptedStudyKeepsFinishedCasesAndResumes) {
   const fs::path whole = fresh_dir("uninterrupted"), cut = fresh_dir("interrupted");
-  ASSERT_EQ(sweep(kSmall, whole, "--jobs 1").code, 0);
-  const std::string run = std::string(UNFURL_BINARY) + " sweep " + kSmall + " --jobs 1 --quiet --out " + cut.string();
+  ASSERT_EQ(run_study(kSmall, whole, "--jobs 1").code, 0);
+  const std::string run = std::string(UNFURL_BINARY) + " study " + kSmall + " --jobs 1 --quiet --out " + cut.string();
   const test::InterruptedOutcome o =
       test::interrupt_after(run, 0, "ls " + (cut / "cases" / "*" / "case.csv").string() + " >/dev/null 2>&1");
   EXPECT_EQ(o.code, 130) << o.output;
@@ -97,23 +97,33 @@ TEST(SweepCommand, InterruptedStudyKeepsFinishedCasesAndResumes) {
   EXPECT_GT(partial.size(), 1u) << o.output;
   EXPECT_LT(partial.size(), 7u) << o.output;
   for (const std::string& row : partial) EXPECT_EQ(row.find("nan"), std::string::npos) << row;
-  ASSERT_EQ(sweep(kSmall, cut, "--jobs 1").code, 0);
+  ASSERT_EQ(run_study(kSmall, cut, "--jobs 1").code, 0);
   EXPECT_EQ(table_without_wall_time(cut / "cases.csv"), table_without_wall_time(whole / "cases.csv"));
 }
 
-TEST(SweepCommand, TwoMpiRanksGiveTheSameTableAsOneLocalRun) {
+TEST(StudyCommand, TwoMpiRanksGiveTheSameTableAsOneLocalRun) {
 #ifndef UNFURL_WITH_MPI
   GTEST_SKIP() << "built without MPI";
 #else
   const fs::path local = fresh_dir("local"), ranks = fresh_dir("mpi");
-  ASSERT_EQ(sweep(kSmall, local, "--jobs 1").code, 0);
+  ASSERT_EQ(run_study(kSmall, local, "--jobs 1").code, 0);
   const test::CommandOutcome o = test::run_command(
       "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 mpirun -n 2 " +
-      std::string(UNFURL_BINARY) + " sweep " + kSmall + " --quiet --out " + ranks.string());
+      std::string(UNFURL_BINARY) + " study " + kSmall + " --quiet --out " + ranks.string());
   ASSERT_EQ(o.code, 0) << o.output;
   EXPECT_EQ(table_without_wall_time(ranks / "cases.csv"), table_without_wall_time(local / "cases.csv"));
   EXPECT_NE(text_of(ranks / "STUDY.md").find("2 processes"), std::string::npos);
 #endif
+}
+
+// The command's old name still runs a study, and says it was renamed.
+TEST(StudyCommand, OldNameSweepStillRunsAndSaysSo) {
+  const fs::path out = fresh_dir("old_name");
+  const test::CommandOutcome o =
+      test::run_command(std::string(UNFURL_BINARY) + " sweep " + kSmall + " --jobs 1 --quiet --out " + out.string());
+  EXPECT_EQ(o.code, 0) << o.output;
+  EXPECT_NE(o.output.find("`sweep` is now `unfurl study`"), std::string::npos) << o.output;
+  EXPECT_TRUE(fs::exists(out / "cases.csv"));
 }
 
 }  // namespace

@@ -21,7 +21,7 @@ const char* kHelp =
     "frames or video of a time range, and of the trajectory. The scene file is reloaded when it\n"
     "changes. Needs a display (DISPLAY; Xvfb works).\n"
     "\n"
-    "With --study, it opens a study that `unfurl sweep STUDY.yaml --out DIR` ran: the Study\n"
+    "With --study, it opens a study that `unfurl study STUDY.yaml --out DIR` ran: the Study\n"
     "tab shows the counts, histograms of deployment time and peak latch torque, and the table\n"
     "of cases (sortable by any column); a click on a case re-runs it here, where it plays,\n"
     "plots and takes edits like any scene.\n"
@@ -53,7 +53,7 @@ int command_gui(const std::vector<std::string>& argv) {
   if (const auto file = args.get("--script")) script = read_gui_script(*file);
   std::optional<StudyToOpen> study;
   if (const auto file = args.get("--study")) {
-    if (!args.get("--out")) throw UsageError("--study needs --out DIR, the directory unfurl sweep wrote");
+    if (!args.get("--out")) throw UsageError("--study needs --out DIR, the directory unfurl study wrote");
     if (!args.positionals().empty()) throw UsageError("--study shows the study's own scene: give no SCENE");
     study = StudyToOpen{*file, *args.get("--out"), args.get("--case").value_or("")};
   } else if (args.get("--out") || args.get("--case")) {

@@ -14,6 +14,6 @@ int command_gui(const std::vector<std::string>& args);
 int command_generate(const std::vector<std::string>& args);
 int command_report(const std::vector<std::string>& args);
 int command_export(const std::vector<std::string>& args);
-int command_sweep(const std::vector<std::string>& args);
+int command_study(const std::vector<std::string>& args);
 
 }  // namespace unfurl::app

@@ -21,7 +21,7 @@ StudyBrowser open_study(const std::string& study_path, const std::string& dir) {
   for (const studies::StudyCase& c : b.cases)
     if (auto row = io::read_case_record(b.columns, dir, c.id)) b.rows.push_back(std::move(*row));
   if (b.rows.empty())
-    throw std::runtime_error(dir + " holds no finished case of " + study_path + " (run: unfurl sweep " + study_path +
+    throw std::runtime_error(dir + " holds no finished case of " + study_path + " (run: unfurl study " + study_path +
                              " --out " + dir + ")");
   const int n_inputs = static_cast<int>(b.columns.inputs.size());
   b.table_columns = {0, 1};

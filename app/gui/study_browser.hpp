@@ -1,5 +1,5 @@
 // A finished study opened in the workbench (`unfurl gui --study STUDY
-// --out DIR`): the rows of its cases as `unfurl sweep` recorded them in
+// --out DIR`): the rows of its cases as `unfurl study` recorded them in
 // DIR, a table order, and which case is on show. Picking a case re-runs it
 // on the simulation thread (study_cases.hpp: the case's scene), so it can
 // be played, plotted and edited like any scene.

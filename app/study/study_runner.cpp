@@ -80,7 +80,7 @@ void StudyRun::show_progress() {
   drawn_ = true;
   const double elapsed = std::chrono::duration<double>(now - start_).count();
   const double left = elapsed / static_cast<double>(done_now_) * static_cast<double>(total - done_now_);
-  std::fprintf(stderr, "%ssweep: %ld of %ld cases, %ld failed, %.0f s elapsed, about %.0f s left%s",
+  std::fprintf(stderr, "%sstudy: %ld of %ld cases, %ld failed, %.0f s elapsed, about %.0f s left%s",
                terminal ? "\r" : "", done_now_, total, failed_now_, elapsed, left, terminal ? "   " : "\n");
   std::fflush(stderr);
 }

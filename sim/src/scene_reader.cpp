@@ -59,7 +59,7 @@ class SceneReader : private input::YamlFields {
   void read_friction(const YAML::Node& list, SceneBuilder& b) const;
   std::shared_ptr<const SpringCurve> spring_curve(const YAML::Node& table, const std::string& field) const;
   void read_point_springs(const YAML::Node& list, SceneBuilder& b) const;
-  void read_loads(const YAML::Node& list, SceneBuilder& b) const;
+  void read_applied_forces(const YAML::Node& list, SceneBuilder& b) const;
   void read_latches(const YAML::Node& list, SceneBuilder& b) const;
   void read_loops(const YAML::Node& list, SceneBuilder& b) const;
   RegulatorSettings read_regulator(const YAML::Node& node) const;
@@ -285,8 +285,8 @@ void SceneReader::read_point_springs(const YAML::Node& list, SceneBuilder& b) co
        });
 }
 
-void SceneReader::read_loads(const YAML::Node& list, SceneBuilder& b) const {
-  each(list, "loads", {"body", "force", "torque", "point", "frame"},
+void SceneReader::read_applied_forces(const YAML::Node& list, SceneBuilder& b) const {
+  each(list, "applied_forces", {"body", "force", "torque", "point", "frame"},
        [&](const YAML::Node& l, const std::string& field, std::size_t) {
          auto load = std::make_shared<AppliedForce>();
          load->body = b.body_index(text(require(l, "body", field), field + ".body"), field + ".body");
@@ -419,9 +419,12 @@ SceneFile SceneReader::read(const std::string& text_in, const std::vector<Overri
   if (!root.IsMap()) throw input::InputError(source() + ": a scene file is a YAML mapping (name, bodies, ...)");
   for (const Override& o : overrides) apply_override(root, o, *this);
 
+  // "loads" named both applied forces and the loads a run reports: the
+  // former are applied_forces since 0.3.
+  if (root["loads"]) fail(root["loads"], "loads", "renamed: the constant forces on bodies are `applied_forces:`");
   check_keys(root,
              {"name", "description", "base", "gravity", "bodies", "springs", "dampers", "friction", "point_springs",
-              "loads", "latches", "loops", "regulator", "initial", "closure_tolerance", "run"},
+              "applied_forces", "latches", "loops", "regulator", "initial", "closure_tolerance", "run"},
              "");
   SceneBuilder b(root["name"] ? text(root["name"], "name") : "scene",
                  root["description"] ? text(root["description"], "description") : "");
@@ -437,7 +440,7 @@ SceneFile SceneReader::read(const std::string& text_in, const std::vector<Overri
     if (root["dampers"]) read_dampers(root["dampers"], b);
     if (root["friction"]) read_friction(root["friction"], b);
     if (root["latches"]) read_latches(root["latches"], b);
-    if (root["loads"]) read_loads(root["loads"], b);
+    if (root["applied_forces"]) read_applied_forces(root["applied_forces"], b);
     if (root["point_springs"]) read_point_springs(root["point_springs"], b);
     if (root["loops"]) read_loops(root["loops"], b);
     if (root["regulator"]) b.regulator(read_regulator(root["regulator"]));

@@ -99,7 +99,7 @@ void elements(std::ostream& out, const Scene& scene) {
            ", stiffness: " + format_number(l.stiffness) + ", damping: " + format_number(l.damping) +
            ", free_play: " + format_number(l.free_play);
   });
-  list("loads", scene.elements_of<AppliedForce>(), [&](const AppliedForce& l) {
+  list("applied_forces", scene.elements_of<AppliedForce>(), [&](const AppliedForce& l) {
     return "body: " + body(l.body) + ", force: " + vec(l.force) + ", torque: " + vec(l.torque) +
            ", point: " + vec(l.point) + ", frame: " + (l.in_base_frame ? "base" : "body");
   });

@@ -1,4 +1,4 @@
-// What `unfurl sweep` writes into its directory: per case a record
+// What `unfurl study` writes into its directory: per case a record
 // (cases/ID/case.csv, cases/ID/angle.csv) written as the case finishes, so
 // an interrupted study resumes; and once all are done cases.csv,
 // summary.json and STUDY.md. Every file is complete or absent.

@@ -1,4 +1,4 @@
-// A deployment study (`unfurl sweep`): one scene, the values that vary (by
+// A deployment study (`unfurl study`): one scene, the values that vary (by
 // their --set paths) and the failures to inject, each case one independent
 // run. The file format is documented in assets/studies/README.md.
 #pragma once

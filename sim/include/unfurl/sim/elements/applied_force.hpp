@@ -16,7 +16,7 @@ class AppliedForce : public ForceElement {
   bool in_base_frame = false;
 
   std::string kind() const override { return "applied force"; }
-  std::string list() const override { return "loads"; }
+  std::string list() const override { return "applied_forces"; }
   std::string handle(const Model& model) const override { return model.bodies[body].name; }
   void add_forces(const ElementState& s, ElementForces& out) const override;
   bool needs_poses() const override { return in_base_frame; }

@@ -1,4 +1,4 @@
-// unfurl sweep: run a study (off-nominal values, Monte Carlo draws, injected
+// unfurl study: run a study (off-nominal values, Monte Carlo draws, injected
 // failures) and write its tables, statistics and plots.
 #include <chrono>
 #include <cstdio>
@@ -17,8 +17,8 @@ namespace unfurl::app {
 namespace {
 
 const char* kHelp =
-    "usage: unfurl sweep STUDY.yaml --out DIR [--jobs N] [--keep-runs] [--quiet]\n"
-    "       mpirun -n K unfurl sweep STUDY.yaml --out DIR\n"
+    "usage: unfurl study STUDY.yaml --out DIR [--jobs N] [--keep-runs] [--quiet]\n"
+    "       mpirun -n K unfurl study STUDY.yaml --out DIR\n"
     "\n"
     "Runs every case of a study (assets/studies/README.md describes the file) and\n"
     "writes into DIR:\n"
@@ -60,21 +60,21 @@ void claim_directory(const std::string& dir, const std::string& study_text) {
 }
 
 std::string command_line(const std::vector<std::string>& argv) {
-  std::string s = "unfurl sweep";
+  std::string s = "unfurl study";
   for (const std::string& a : argv) s += " " + a;
   return s;
 }
 
 }  // namespace
 
-int command_sweep(const std::vector<std::string>& argv) {
+int command_study(const std::vector<std::string>& argv) {
   const Args args(argv, {"--out", "--jobs"}, {"--help", "-h", "--keep-runs", "--quiet"});
   if (args.has("--help") || args.has("-h")) {
     std::printf("%s", kHelp);
     return 0;
   }
-  if (args.positionals().size() != 1) throw UsageError("sweep takes one STUDY file (see --help)");
-  if (!args.get("--out")) throw UsageError("sweep needs --out DIR");
+  if (args.positionals().size() != 1) throw UsageError("study takes one STUDY file (see --help)");
+  if (!args.get("--out")) throw UsageError("study needs --out DIR");
   const bool mpi = launched_by_mpirun();
   const double jobs = args.number("--jobs", mpi ? 1.0 : std::max(1u, std::thread::hardware_concurrency()));
   if (jobs < 1 || jobs > 1024 || jobs != static_cast<int>(jobs))
@@ -123,7 +123,7 @@ int command_sweep(const std::vector<std::string>& argv) {
         path.c_str(), st.cases, report.total_cases, report.wall_time_s, processes, processes == 1 ? "" : "es",
         options.jobs, options.jobs == 1 ? "" : "s", st.deployed, st.not_deployed, st.failed, options.dir.c_str());
   if (interrupt.signal()) {
-    std::fprintf(stderr, "unfurl sweep: interrupted by %s: %ld of %ld cases are finished and kept; rerun to go on\n",
+    std::fprintf(stderr, "unfurl study: interrupted by %s: %ld of %ld cases are finished and kept; rerun to go on\n",
                  interrupt.signal_name(), st.cases, report.total_cases);
     return interrupt.exit_status();
   }
