@@ -20,7 +20,8 @@ inline void expect_closure_solve_matches_dense(const sim::Scene& scene, sim::Clo
   const auto solver = sim::make_closure_solver(kind, scene.model, scene.loops, components);
   sim::Sweep sweep(scene.model);
   sweep.set_configuration(q.data());
-  ASSERT_TRUE(solver->factorize(sweep, delta));
+  const VectorXd deltas = VectorXd::Constant(m, delta);
+  ASSERT_TRUE(solver->factorize(sweep, deltas.data()));
   // Two right-hand sides at once, as the regulator solves them.
   MatrixXd B(m, 2);
   B.col(0) = VectorXd::LinSpaced(m, -1, 1) + VectorXd::Constant(m, 0.25);

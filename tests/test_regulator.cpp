@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "unfurl/sim/dynamics.hpp"
+#include "unfurl/sim/mechanism_scales.hpp"
 #include "unfurl/sim/summary.hpp"
 
 namespace unfurl {
@@ -34,14 +35,15 @@ TEST(LoopRegulator, ResidualOfAnOpenStartDecays) {
 
 TEST(LoopRegulator, MaxClosureFailsARunOnTheGeometricGap) {
   // The pantograph's gap, held at the integrator's tolerance, reaches about
-  // 1e-11 m: a limit below that stops the run where it is first exceeded,
-  // at a step's end, with what was computed kept.
+  // 1e-11 of its length: a limit below that stops the run where it is
+  // first exceeded, at a step's end, with what was computed kept. The limit
+  // is dimensionless (rad, or a distance over the mechanism's length).
   const sim::Scene scene = test::scene_file("pantograph", {{"run.max_closure", "5e-12"}});
   const sim::RunResult run = sim::simulate(scene, scene.run);
   ASSERT_EQ(run.status, sim::RunStatus::failed);
   EXPECT_EQ(run.failure.check, "closure");
   EXPECT_GT(run.failure.t, 0.0);
-  EXPECT_GT(run.peaks.gap_m.value, 5e-12);
+  EXPECT_GT(std::max(run.peaks.gap_m.value / sim::mechanism_length(scene.model), run.peaks.gap_rad.value), 5e-12);
   EXPECT_NE(run.failure.reason.find("a loop opened by"), std::string::npos);
   EXPECT_LE(run.trajectory.t_end(), run.failure.t);
 }

@@ -51,6 +51,25 @@ void elements_section(GuiState& state, Requests& requests) {
   }
 }
 
+// The regulator's bandwidth: automatic (chosen from the mechanism's own
+// rate; the last run's choice shown) or set by the scene.
+void bandwidth_field(const GuiState& state, Requests& requests) {
+  const std::optional<double>& v_max = state.scene.regulator.v_max;
+  const std::optional<sim::ClosureTuning>& last = state.progress.closure;
+  bool automatic = !v_max;
+  if (ImGui::Checkbox("automatic bandwidth", &automatic))
+    requests.edit = sim::Override{"regulator.v_max", automatic ? "auto" : sim::format_number(last ? last->v_max : 2000)};
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("v_max chosen from the mechanism's fastest own rate (%g x that rate)",
+                      sim::Regulator::kBandwidthPerRate);
+  if (v_max) {
+    value_field("v_max [rad/s]", "regulator.v_max", *v_max, 10, requests, 1e-3, 1e9, "%.6g",
+                "the regulator's bandwidth: how fast it closes a loop's gap");
+  } else if (last) {
+    ImGui::TextDisabled("v_max %.4g rad/s (rate %.3g rad/s, length %.3g m)", last->v_max, last->rate, last->length);
+  }
+}
+
 }  // namespace
 
 void parameters_panel(GuiState& state, Requests& requests) {
@@ -101,8 +120,7 @@ void parameters_panel(GuiState& state, Requests& requests) {
     ImGui::SetNextItemWidth(em(160));
     if (ImGui::Combo("gains", &gains, "full (current W)\0paper (16), diagonal\0"))
       requests.edit = sim::Override{"regulator.gains", gains == 0 ? "full" : "paper"};
-    value_field("v_max [rad/s]", "regulator.v_max", r.v_max, 10, requests, 1e-3, 1e9, "%.6g",
-                "the regulator's bandwidth: how fast it closes a loop's gap");
+    bandwidth_field(state, requests);
     value_field("p0", "regulator.p0", r.p0, 0.01, requests, 1e-3, 100, "%.6g", "pole placement of the PID gains (16)");
     value_field("p1", "regulator.p1", r.p1, 0.01, requests, 1e-3, 0.999, "%.6g",
                 "pole placement of the PID gains (16)");

@@ -98,6 +98,7 @@ void SimulationWorker::loop() {
       summary = std::make_shared<const sim::RunSummary>(sim::summarize(scene, result));
     std::lock_guard<std::mutex> lock(mutex_);
     progress_.summary = std::move(summary);
+    progress_.closure = result.closure;
     buffer_.layout = result.trajectory.layout;
     progress_.running = false;
     progress_.status = result.status;

@@ -31,6 +31,7 @@ struct RunProgress {
   long rhs_calls = 0;
   // The finished (or failed) run's figures; null while it runs.
   std::shared_ptr<const sim::RunSummary> summary;
+  std::optional<sim::ClosureTuning> closure;  // the last run's (a scene with loops)
 };
 
 class SimulationWorker {

@@ -192,6 +192,8 @@ void write_summary_units(JsonWriter& json, const sim::Scene& scene, const sim::R
   for (const char* key : {"t_end", "sample", "dt", "t_reached", "wall_time", "min_step", "min_step_after_restart"})
     json.value(key, "s");
   json.value("latch_time", "s");
+  if (!scene.loops.empty())
+    json.begin_object("closure").value("length", "m").value("rate", "rad/s").value("v_max", "rad/s").end_object();
   json.value("max_closure_gap", "m").value("max_closure_angle", "rad");
   json.value("max_closure_gap_before_latch", "m").value("max_closure_angle_before_latch", "rad");
   const auto per_joint = [&](const char* key, const std::vector<sim::RunSummary::NamedPeak>& peaks, bool moment) {
@@ -249,6 +251,13 @@ void write_summary_json(const sim::Scene& scene, const sim::RunResult& result, c
   json.value("grazes", result.stats.grazes);
   json.value("state_size", result.trajectory.layout.size());
   json.value("loop_components", result.trajectory.layout.m);
+  if (const auto& c = result.closure) {
+    json.begin_object("closure");
+    json.value("length", c->length).value("rate", c->rate);
+    json.value("v_max", c->v_max).value("v_max_source", c->v_max_automatic ? "automatic" : "scene");
+    json.value("regularization", c->regularization);
+    json.end_object();
+  }
   json.begin_object("latch_time");
   for (const auto& [joint, t] : summary.latch_times) json.value(joint, t);
   json.end_object();

@@ -13,7 +13,7 @@ ArkodeIntegrator::ArkodeIntegrator(IntegratorKind kind, Dynamics& dynamics, cons
     : api_(kind == IntegratorKind::arkode_erk ? erk_api() : dirk_api()),
       dynamics_(dynamics),
       y_(y0, ctx_),
-      atol_(absolute_tolerances(dynamics.layout(), settings.atol), ctx_),
+      atol_(absolute_tolerances(dynamics, settings.atol), ctx_),
       scratch_(y0, ctx_) {
   mem_ = api_.create(sundials::rhs, t0, y_, ctx_);
   sundials::check_ptr(mem_, "ARKODE create");

@@ -22,9 +22,9 @@ class DenseClosureSolver : public ClosureSolver {
     R_.resize(m_, m_);
   }
 
-  bool factorize(const Sweep& sweep, double delta) override {
+  bool factorize(const Sweep& sweep, const double* delta) override {
     R_ = mobility_.matrix(sweep);
-    R_.diagonal().array() += delta;
+    R_.diagonal() += Eigen::Map<const Eigen::VectorXd>(delta, m_);
     llt_.compute(R_);
     return llt_.info() == Eigen::Success;
   }

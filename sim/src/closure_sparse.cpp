@@ -109,7 +109,7 @@ class SparseClosureSolver : public ClosureSolver {
     ldlt_.analyzePattern(K_);
   }
 
-  bool factorize(const Sweep& sweep, double delta) override {
+  bool factorize(const Sweep& sweep, const double* delta) override {
     double** varying_slot = varying_block_.data();
     for (int i : varying_) {
       N_[i] = constrained_directions(sweep.motion_axes(i), model_.joints[i].dof());
@@ -124,7 +124,7 @@ class SparseClosureSolver : public ClosureSolver {
       for (int r = 0; r < block.rows(); ++r)
         for (int c = 0; c < 6; ++c) **slot++ = block(r, c);
     }
-    for (double* d : delta_slot_) *d = -delta;
+    for (int c = 0; c < m_; ++c) *delta_slot_[c] = -delta[c];
     ldlt_.factorize(K_);
     D_ = ldlt_.vectorD();  // a copy: Eigen hands D out by value
     return ldlt_.info() == Eigen::Success;

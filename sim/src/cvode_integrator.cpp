@@ -13,7 +13,7 @@ CvodeIntegrator::CvodeIntegrator(IntegratorKind kind, Dynamics& dynamics, const 
                                  double t0, const std::vector<double>& y0)
     : dynamics_(dynamics),
       y_(y0, ctx_),
-      atol_(absolute_tolerances(dynamics.layout(), settings.atol), ctx_),
+      atol_(absolute_tolerances(dynamics, settings.atol), ctx_),
       scratch_(y0, ctx_) {
   const bool bdf = kind == IntegratorKind::cvode_bdf;
   mem_ = CVodeCreate(bdf ? CV_BDF : CV_ADAMS, ctx_);

@@ -21,6 +21,7 @@ std::vector<double> latch_start_positions(const Scene& scene, const std::vector<
 Dynamics::Dynamics(const Scene& scene)
     : scene_(scene),
       sweep_(scene_.model),
+      scales_(mechanism_scales(scene_, sweep_)),
       latches_(scene_.latches()),
       latch_of_element_(scene_.elements.size(), -1),
       latch_state_(latches_, latch_start_positions(scene_, latches_)),
@@ -59,9 +60,10 @@ Dynamics::Dynamics(const Scene& scene)
   }
   dissipation_w_.resize(scene_.model.nv);
   if (!scene_.loops.empty()) {
-    auto components = active_loop_components(scene_.model, scene_.loops, scene_.q0, sweep_);
+    auto components = active_loop_components(scene_.model, scene_.loops, scene_.q0, scales_.length, sweep_);
     layout_.m = static_cast<int>(components.size());
-    regulator_.emplace(scene_.model, scene_.loops, std::move(components), scene_.regulator);
+    const double v_max = scene_.regulator.v_max.value_or(Regulator::automatic_bandwidth(scales_.rate));
+    regulator_.emplace(scene_.model, scene_.loops, std::move(components), scene_.regulator, v_max, scales_.length);
     configure(scene_.q0.data());
     regulator_->calibrate(sweep_);
     lambda_.resize(layout_.m);
@@ -69,6 +71,7 @@ Dynamics::Dynamics(const Scene& scene)
     g_dot_.resize(layout_.m);
     d_.resize(layout_.m);
   }
+  state_scale_ = state_scale_of(scene_.model, layout_, scales_, regulator());
   ydot_.resize(layout_.size());
   jv_y_.resize(layout_.size());
   jv_f_.resize(layout_.size());
@@ -76,6 +79,20 @@ Dynamics::Dynamics(const Scene& scene)
 }
 
 Dynamics::~Dynamics() = default;
+
+std::vector<double> state_scale_of(const Model& model, const StateLayout& layout, const MechanismScales& scales,
+                                   const Regulator* regulator) {
+  std::vector<double> scale(layout.size());
+  for (int c = 0; c < layout.nq; ++c) scale[layout.q() + c] = model.position_unit(c) == "m" ? scales.length : 1.0;
+  // The momentum that drifts its coordinate by one radian (one length) over
+  // half a period of the mechanism's fastest own motion, pi / rate: as
+  // long as an error of p drifts q one way before the motion turns.
+  for (int c = 0; c < layout.nv; ++c)
+    scale[layout.p() + c] =
+        scales.inertia[c] * scales.rate / M_PI * (model.velocity_unit(c) == "m/s" ? scales.length : 1.0);
+  for (int c = 0; c < layout.m; ++c) scale[layout.u() + c] = regulator->component_scale(c);
+  return scale;
+}
 
 NewtonPreconditioner& Dynamics::preconditioner() {
   if (!preconditioner_) preconditioner_ = std::make_unique<NewtonPreconditioner>(*this);
@@ -205,11 +222,13 @@ bool Dynamics::jacobian_times(const double* y, const double* v, double* Jv) {
     ok = ok && evaluate(y, jv_f_.data(), Regulator::Gains::held);
     ++jacobian_product_evals_;
   }
-  // Half the digits for the step, half for the difference.
-  Eigen::Map<const Eigen::VectorXd> y_(y, n), v_(v, n);
-  const double v_norm = v_.norm();
+  // Half the digits for the step, half for the difference; sizes measured
+  // in the state's own scales, so the step is the same for any units.
+  Eigen::Map<const Eigen::VectorXd> y_(y, n), v_(v, n), s_(state_scale_.data(), n);
+  const double v_norm = v_.cwiseQuotient(s_).norm();
   if (ok && v_norm > 0) {
-    const double sigma = std::sqrt(std::numeric_limits<double>::epsilon()) * std::max(1.0, y_.norm()) / v_norm;
+    const double sigma =
+        std::sqrt(std::numeric_limits<double>::epsilon()) * std::max(1.0, y_.cwiseQuotient(s_).norm()) / v_norm;
     Eigen::Map<Eigen::VectorXd>(jv_y1_.data(), n) = y_ + sigma * v_;
     ok = evaluate(jv_y1_.data(), Jv, Regulator::Gains::held);
     ++jacobian_product_evals_;

@@ -1,6 +1,7 @@
 #include "unfurl/sim/integrator.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "arkode_integrators.hpp"
 #include "cvode_integrator.hpp"
@@ -24,11 +25,9 @@ SolverStats& SolverStats::operator+=(const SolverStats& segment) {
   return *this;
 }
 
-std::vector<double> absolute_tolerances(const StateLayout& layout, double atol) {
-  std::vector<double> tol(layout.size());
-  for (int k = 0; k < layout.nq; ++k) tol[layout.q() + k] = atol;
-  for (int k = 0; k < layout.nv; ++k) tol[layout.p() + k] = 100 * atol;
-  for (int k = 0; k < layout.m; ++k) tol[layout.u() + k] = atol;
+std::vector<double> absolute_tolerances(const Dynamics& dynamics, double atol) {
+  std::vector<double> tol = dynamics.state_scale();
+  for (double& t : tol) t *= atol;
   return tol;
 }
 

@@ -6,7 +6,7 @@
 namespace unfurl::sim {
 
 std::vector<LoopComponent> active_loop_components(const Model& model, const std::vector<Loop>& loops,
-                                                  const std::vector<double>& q0, Sweep& sweep) {
+                                                  const std::vector<double>& q0, double length, Sweep& sweep) {
   const int N = model.size();
   const int L = static_cast<int>(loops.size());
   std::vector<std::vector<double>> samples{q0};
@@ -42,7 +42,7 @@ std::vector<LoopComponent> active_loop_components(const Model& model, const std:
         F[loops[l].image][a] = -1;
         sweep.generalized_forces(F, x.data());
         for (int c = 0; c < model.nv; ++c)
-          if (!shared[l][c]) row_norm[6 * l + a] = std::max(row_norm[6 * l + a], std::abs(x[c]));
+          if (!shared[l][c]) row_norm[6 * l + a] = std::max(row_norm[6 * l + a], std::abs(x[c]) / (a < 3 ? length : 1.0));
       }
     }
   }

@@ -52,7 +52,7 @@ const LoopMatrix& Mobility::matrix(const Sweep& sweep) {
   return W_;
 }
 
-double Mobility::largest_eigenvalue(const Sweep& sweep) {
+double Mobility::largest_eigenvalue(const Sweep& sweep, const Eigen::VectorXd& scale) {
   // W is symmetric positive semidefinite: the Rayleigh quotient of the
   // iterates rises to the largest eigenvalue. A fixed start keeps it
   // deterministic; it only sets a scale, so a few digits suffice.
@@ -60,7 +60,9 @@ double Mobility::largest_eigenvalue(const Sweep& sweep) {
   Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(size(), 1, size()).normalized(), Wx(size());
   double lambda = 0;
   for (int k = 0; k < 200; ++k) {
-    product(sweep, x.data(), Wx.data());
+    const Eigen::VectorXd Sx = scale.cwiseProduct(x);
+    product(sweep, Sx.data(), Wx.data());
+    Wx = scale.cwiseProduct(Wx);
     const double next = x.dot(Wx);
     const double norm = Wx.norm();
     if (norm == 0) return 0;

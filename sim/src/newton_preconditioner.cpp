@@ -76,8 +76,7 @@ void NewtonPreconditioner::solve(const double* r, double* z) {
   }
   Regulator* regulator = dynamics_.regulator();
   if (!regulator) return;
-  const RegulatorSettings& s = regulator->settings();
-  const double k_pi = s.k_pi(), k_v = s.k_v();  // (16)
+  const double k_pi = regulator->k_pi(), k_v = regulator->k_v();  // (16)
   // J (k_pi zq + k_v x) by one kinematic pass: J is linear in the rates.
   for (int c = 0; c < L.nv; ++c) {
     const int at = spring_position_[c];

@@ -5,11 +5,14 @@
 namespace unfurl::sim {
 
 Regulator::Regulator(const Model& model, const std::vector<Loop>& loops, std::vector<LoopComponent> components,
-                     const RegulatorSettings& settings)
+                     const RegulatorSettings& settings, double v_max, double length)
     : loops_(loops),
       components_(std::move(components)),
       settings_(settings),
+      v_max_(v_max),
+      length_(length),
       mobility_(model, loops_, components_),
+      Delta_(Eigen::VectorXd::Zero(size())),
       diagonal_W0_(Eigen::VectorXd::Ones(size())),
       rhs_(size(), 2),
       solved_(size(), 2) {
@@ -20,7 +23,7 @@ Regulator::Regulator(const Model& model, const std::vector<Loop>& loops, std::ve
 bool Regulator::factorize(const Sweep& sweep, long configuration) {
   if (settings_.gains != GainTuning::full) return true;
   if (configuration == factorized_configuration_) return factorized_ok_;
-  factorized_ok_ = solver_->factorize(sweep, delta_);
+  factorized_ok_ = solver_->factorize(sweep, Delta_.data());
   ++factorizations_;
   factorized_configuration_ = configuration;
   return factorized_ok_;
@@ -29,7 +32,10 @@ bool Regulator::factorize(const Sweep& sweep, long configuration) {
 void Regulator::calibrate(const Sweep& sweep) {
   factorized_configuration_ = -1;  // delta changes
   if (settings_.gains == GainTuning::full) {
-    delta_ = settings_.regularization * mobility_.largest_eigenvalue(sweep);
+    Eigen::VectorXd scale(size());
+    for (int c = 0; c < size(); ++c) scale[c] = 1 / component_scale(c);
+    delta_ = settings_.regularization * mobility_.largest_eigenvalue(sweep, scale);
+    for (int c = 0; c < size(); ++c) Delta_[c] = delta_ * component_scale(c) * component_scale(c);
     return;
   }
   Eigen::VectorXd unit = Eigen::VectorXd::Zero(size()), column(size());
@@ -51,8 +57,8 @@ void Regulator::gap(const std::vector<Pose>& poses, double* g) const {
 
 void Regulator::control(const double* g, const double* u, const double* g_dot, const double* d, Gains gains,
                         double* lambda, double* u_dot) {
-  const double v = settings_.v_max, p0 = settings_.p0, p1 = settings_.p1;
-  const double k_pi = settings_.k_pi(), k_v = settings_.k_v();  // (16)
+  const double v = v_max_, p0 = settings_.p0, p1 = settings_.p1;
+  const double k_pi = this->k_pi(), k_v = this->k_v();  // (16)
   const int m = size();
   Eigen::Map<const Eigen::VectorXd> g_(g, m), u_(u, m), gd_(g_dot, m);
   Eigen::Map<Eigen::VectorXd> lambda_(lambda, m), ud_(u_dot, m);
@@ -68,7 +74,7 @@ void Regulator::control(const double* g, const double* u, const double* g_dot, c
   }
   solver_->solve(rhs_.data(), solved_.data(), 2, gains == Gains::current);
   lambda_ = solved_.col(0);               // R^-1 (v^2 (g + u) + (p0 + 2 p1) v g' + d)
-  ud_ = b - delta_ * solved_.col(1);      // W R^-1 b = b - delta R^-1 b
+  ud_ = b - Delta_.cwiseProduct(solved_.col(1));  // W R^-1 b = b - Delta R^-1 b
 }
 
 void Regulator::apply(const double* lambda, std::vector<Vec6>& F) const {
@@ -77,7 +83,7 @@ void Regulator::apply(const double* lambda, std::vector<Vec6>& F) const {
 
 double Regulator::energy(const double* g, const double* u) {
   const int m = size();
-  const double v2 = settings_.v_max * settings_.v_max;
+  const double v2 = v_max_ * v_max_;
   Eigen::Map<const Eigen::VectorXd> g_(g, m), u_(u, m);
   auto s = rhs_.col(0);
   s = g_ + u_;

@@ -29,7 +29,7 @@ std::optional<double> RunMonitor::observe(double t, const double* y) {
       peaks_.gap_m_before_latch.update(c.distance, t);
       peaks_.gap_rad_before_latch.update(c.angle, t);
     }
-    largest = std::max({largest, c.distance, c.angle});
+    largest = std::max({largest, dynamics_.scales().relative_length(c.distance), c.angle});
   }
   return largest;
 }

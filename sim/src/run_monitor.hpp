@@ -19,8 +19,8 @@ class RunMonitor {
   explicit RunMonitor(Dynamics& dynamics);
 
   // At a step's end (t, y), latches as engaged there. Returns the largest
-  // gap of any loop, metres or radians; nothing where the loads at y could
-  // not be evaluated.
+  // gap of any loop, radians or a distance over the mechanism's length;
+  // nothing where the loads at y could not be evaluated.
   std::optional<double> observe(double t, const double* y);
 
   // Step-size bookkeeping: after each (re)start the step grows from a tiny

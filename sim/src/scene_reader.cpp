@@ -334,7 +334,9 @@ RegulatorSettings SceneReader::read_regulator(const YAML::Node& node) const {
     else
       fail(gains, "regulator.gains", "expected 'full' or 'paper', got '" + g + "'");
   }
-  r.v_max = number_or(node, "v_max", r.v_max, "regulator");
+  // "auto" (or absent): chosen from the mechanism's own rate.
+  if (const YAML::Node v = node["v_max"]; v && !(v.IsScalar() && v.Scalar() == "auto"))
+    r.v_max = number(v, "regulator.v_max");
   r.p0 = number_or(node, "p0", r.p0, "regulator");
   r.p1 = number_or(node, "p1", r.p1, "regulator");
   r.regularization = number_or(node, "regularization", r.regularization, "regulator");

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "unfurl/sim/kinematics.hpp"
+#include "unfurl/sim/mechanism_scales.hpp"
 #include "unfurl/sim/number_text.hpp"
 
 namespace unfurl::sim {
@@ -130,6 +131,7 @@ void check_initial_state(Scene& scene) {
 
 void check_loops(const Scene& scene) {
   const Model& model = scene.model;
+  const double length = mechanism_length(model);
   std::vector<Pose> poses;
   body_poses(model, scene.q0.data(), poses);
   for (std::size_t l = 0; l < scene.loops.size(); ++l) {
@@ -153,20 +155,20 @@ void check_loops(const Scene& scene) {
             field, "this loop shares a split body with loop '" + other.name + "' (each loop splits a body of its own)");
     }
     const ClosureError e = closure_error(poses[loop.body], poses[loop.image]);
-    if (e.distance > scene.closure_tolerance || e.angle > scene.closure_tolerance) {
+    if (e.distance > scene.closure_tolerance * length || e.angle > scene.closure_tolerance) {
       std::ostringstream s;
       s.precision(6);
       s << "loop '" << loop.name << "' does not close at the initial state: the origins of '"
         << model.bodies[loop.body].name << "' and '" << model.bodies[loop.image].name << "' are " << e.distance
         << " m apart and their frames " << e.angle << " rad apart (closure_tolerance " << scene.closure_tolerance
-        << ")";
+        << ": rad, and for a distance times the mechanism's length, " << length << " m)";
       throw SceneInvalid(field, s.str());
     }
   }
 }
 
 void check_regulator(const RegulatorSettings& r) {
-  check_positive(r.v_max, "regulator.v_max");
+  if (r.v_max) check_positive(*r.v_max, "regulator.v_max");
   check_positive(r.p0, "regulator.p0");
   check_positive(r.p1, "regulator.p1");
   check_positive(r.regularization, "regulator.regularization");
@@ -239,8 +241,8 @@ void validate(Scene& scene) {
   if (scene.closure_tolerance > kLargestClosureTolerance)
     throw SceneInvalid("closure_tolerance",
                        "at most " + format_number(kLargestClosureTolerance) +
-                           " m or rad: a loop opener than that is not a loop (the regulator would snap "
-                           "it shut)");
+                           " (rad, or a distance over the mechanism's length): a loop opener than that is not "
+                           "a loop (the regulator would snap it shut)");
   check_loops(scene);
   check_regulator(scene.regulator);
   check_run(scene.run);

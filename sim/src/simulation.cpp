@@ -71,7 +71,11 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
   Dynamics dynamics(scene);
   Trajectory& trajectory = result.trajectory;
   trajectory.layout = dynamics.layout();
-  if (dynamics.regulator()) trajectory.loop_components = dynamics.regulator()->components();
+  if (const Regulator* regulator = dynamics.regulator()) {
+    trajectory.loop_components = regulator->components();
+    result.closure = ClosureTuning{dynamics.scales().length, dynamics.scales().rate, regulator->v_max(),
+                                   !scene.regulator.v_max.has_value(), scene.regulator.regularization};
+  }
   trajectory.load_columns = dynamics.load_columns();
 
   std::vector<double> y = dynamics.initial_state();
@@ -109,7 +113,8 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
     }
     if (*gap <= settings.max_closure) return true;
     std::ostringstream why;
-    why << "a loop opened by " << *gap << " (limit " << settings.max_closure << "): the regulator lost the loop";
+    why << "a loop opened by " << *gap << " (rad, or length over the mechanism's " << dynamics.scales().length
+        << " m; limit " << settings.max_closure << "): the regulator lost the loop";
     fail(t, step, "closure", why.str());
     return false;
   };

@@ -64,6 +64,12 @@ void Sweep::set_configuration(const double* q, const double* joint_diagonal) {
   }
 }
 
+double Sweep::articulated_inertia(int i, int r) const {
+  if (multi_[i] < 0) return 1.0 / D_[i];
+  const MultiAxis& J = multi_axes_[multi_[i]];
+  return J.A.col(r).dot(M_star_[i] * J.A.col(r));
+}
+
 void Sweep::poses(std::vector<Pose>& poses) const {
   for (int i = 0; i < model_.size(); ++i) {
     const int k = model_.parent[i];

@@ -127,7 +127,9 @@ sim::SceneFile generate_pantograph(int stages) {
   chain_latches(b, N + 2, N + 1);
   for (int k = 1; k <= N; ++k)
     b.loop("A" + std::to_string(k), "panel_A" + std::to_string(k), "image_A" + std::to_string(k));
-  b.regulator(sim::RegulatorSettings{});
+  sim::RegulatorSettings regulator;
+  regulator.v_max = 2000;  // the reference pantograph's (SCENES.md)
+  b.regulator(regulator);
   // On the lazy-tongs path: chain A (-a, 2a, -2a, ...), chain B its
   // negative, images (2a, -2a, ...).
   auto angle = [&](int j) {  // joint j (1-based) at a = kOpen
@@ -184,6 +186,78 @@ sim::SceneFile generate_chain(int links) {
   for (int i = 1; i <= N; ++i) b.initial_position(joint_name(i), {i == 1 ? 1.0 : 0.5 / N});
   b.run(run(5, 1e-8, 1e-10));
   return b.build();
+}
+
+namespace {
+
+// The rods' crank spring: theta'' = -(k / I) (theta - free) from theta(0) = start at rest.
+constexpr double kRodsSpring = 1.0, kRodsFree = 0.0, kRodsStart = 0.8;
+
+}  // namespace
+
+sim::SceneFile generate_parallel_rods(int rods) {
+  check_count(rods, "the number of rods");
+  constexpr double kCrank = 0.5, kBase = 1.0, kCrankMass = 1.0, kRodMass = 0.4;
+  sim::SceneBuilder b("rods_" + std::to_string(rods),
+                      "Two cranks joined by " + std::to_string(rods) + " parallel rods, swung through their flat position.");
+  b.source("generated");
+  b.fixed_base("ground");
+  // A crank of length a (its frame at its pivot, along +y at q = 0); the two
+  // pivots kBase apart along y.
+  const auto crank = [&](const std::string& name, const sim::Vec3& pivot) {
+    sim::Body c = box(name, kCrankMass, sim::Vec3(kCrankMass * kCrank * kCrank / 12, 1e-4, kCrankMass * kCrank * kCrank / 12), 1.0);
+    c.com = sim::Vec3(0, kCrank / 2, 0);
+    b.body(c, "ground", sim::joints::revolute(name, sim::Vec3::UnitX(), pivot, sim::Vec3::Zero()));
+  };
+  crank("crank_A", sim::Vec3::Zero());
+  crank("crank_B", sim::Vec3(0, kBase, 0));
+  // Rod k pinned at radius a k / N on both cranks: split into the rod on
+  // crank A (its frame at that pin) and its image on crank B, half the mass
+  // each.
+  const sim::Vec3 rod_inertia(kRodMass * kBase * kBase / 12, 1e-4, kRodMass * kBase * kBase / 12);
+  for (int k = 1; k <= rods; ++k) {
+    const double r = kCrank * k / rods;
+    const std::string name = "rod" + std::to_string(k);
+    sim::Body rod = box(name, kRodMass, rod_inertia, 0.5);
+    rod.com = sim::Vec3(0, kBase / 2, 0);
+    b.body(rod, "crank_A", sim::joints::revolute("a" + std::to_string(k), sim::Vec3::UnitX(), sim::Vec3(0, r, 0), sim::Vec3::Zero()));
+    sim::Body image = rod;
+    image.name = name + "_image";
+    b.body(image, "crank_B",
+           sim::joints::revolute("b" + std::to_string(k), sim::Vec3::UnitX(), sim::Vec3(0, r, 0), sim::Vec3(0, kBase, 0)));
+    b.loop(name, name, name + "_image");
+  }
+  auto spring = std::make_shared<sim::JointSpring>(0);
+  spring->stiffness = kRodsSpring;
+  spring->free_position = kRodsFree;
+  b.element(spring);
+  b.regulator(sim::RegulatorSettings{});
+  const sim::SceneFile shape = b.build();
+  const std::vector<double> q0 = parallel_rods_angles(shape.scene, 0);
+  for (int j = 0; j < shape.scene.model.size(); ++j) b.initial_position(shape.scene.model.joints[j].name, {q0[j]});
+  sim::RunSettings settings;
+  settings.t_end = 10;
+  settings.sample = 0.01;
+  b.run(settings);
+  return b.build();
+}
+
+std::vector<double> parallel_rods_angles(const sim::Scene& scene, double t) {
+  // The cranks turn about their pivots and every rod translates: the
+  // kinetic energy is (I_A + I_B + sum m_rod r^2) theta'^2 / 2.
+  const sim::Model& m = scene.model;
+  double inertia = 0;
+  for (int i = 0; i < m.size(); ++i) {
+    const sim::Body& body = m.bodies[i];
+    if (i < 2)
+      inertia += body.inertia_com(0, 0) + body.mass * body.com.tail<2>().squaredNorm();
+    else
+      inertia += body.mass * m.joints[i].parent_point.squaredNorm();
+  }
+  const double theta = kRodsFree + (kRodsStart - kRodsFree) * std::cos(std::sqrt(kRodsSpring / inertia) * t);
+  std::vector<double> q(m.size());
+  for (int j = 0; j < m.size(); ++j) q[j] = j < 2 ? theta : -theta;
+  return q;
 }
 
 }  // namespace unfurl::studies

@@ -51,7 +51,7 @@ StabilityResult run_stability_case(const StabilityCase& c) {
     note << "started open by a gap of " << largest_gap(run.trajectory.samples.front())
          << "; below 1e-3 of that at t = " << closing_time(run.trajectory, 1e-3 * largest_gap(run.trajectory.samples.front()))
          << " s, below 1e-9 at t = " << closing_time(run.trajectory, 1e-9) << " s (designed slowest pole: b0 = p0 v_max = "
-         << scene.regulator.p0 * scene.regulator.v_max << " 1/s)";
+         << scene.regulator.p0 * scene.regulator.v_max.value_or(0) << " 1/s)";
     r.notes.push_back(note.str());
   }
   if (c.conservative) r.trajectory = std::move(run.trajectory);

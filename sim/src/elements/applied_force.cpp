@@ -39,4 +39,12 @@ void AppliedForce::validate(const Scene& scene, const std::string& field) const 
     throw SceneInvalid(field + ".frame", "base-frame loads need a base that does not rotate");
 }
 
+std::shared_ptr<ForceElement> AppliedForce::scaled(double L, double M, const Model&) const {
+  auto a = std::make_shared<AppliedForce>(*this);
+  a->force *= M * L;
+  a->torque *= M * L * L;
+  a->point *= L;
+  return a;
+}
+
 }  // namespace unfurl::sim

@@ -28,4 +28,8 @@ void Gravity::validate(const Scene& scene, const std::string&) const {
     throw SceneInvalid("gravity", "gravity needs a base that does not rotate");
 }
 
+std::shared_ptr<ForceElement> Gravity::scaled(double L, double, const Model&) const {
+  return std::make_shared<Gravity>(g * L);
+}
+
 }  // namespace unfurl::sim

@@ -33,4 +33,10 @@ void JointDamper::validate(const Scene& scene, const std::string& field) const {
   check_non_negative(damping, field + ".damping");
 }
 
+std::shared_ptr<ForceElement> JointDamper::scaled(double L, double M, const Model& model) const {
+  auto d = std::make_shared<JointDamper>(*this);
+  d->damping *= stiffness_scale(model, L, M);
+  return d;
+}
+
 }  // namespace unfurl::sim

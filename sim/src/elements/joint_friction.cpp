@@ -42,4 +42,12 @@ void JointFriction::validate(const Scene& scene, const std::string& field) const
                        "below 1e-9 rad/s the smoothed friction is a step no integrator can follow");
 }
 
+std::shared_ptr<ForceElement> JointFriction::scaled(double L, double M, const Model& model) const {
+  auto f = std::make_shared<JointFriction>(*this);
+  f->coulomb *= torque_scale(model, L, M);
+  f->viscous *= stiffness_scale(model, L, M);
+  f->velocity_scale *= angle_scale(model, L);
+  return f;
+}
+
 }  // namespace unfurl::sim

@@ -57,4 +57,18 @@ void JointSpring::validate(const Scene& scene, const std::string& field) const {
   check_non_negative(damping, field + ".damping");
 }
 
+std::shared_ptr<ForceElement> JointSpring::scaled(double L, double M, const Model& model) const {
+  auto s = std::make_shared<JointSpring>(*this);
+  s->stiffness *= stiffness_scale(model, L, M);
+  s->free_position *= angle_scale(model, L);
+  s->damping *= stiffness_scale(model, L, M);
+  if (curve) {
+    std::vector<double> q = curve->angles(), tau = curve->torques();
+    for (double& x : q) x *= angle_scale(model, L);
+    for (double& x : tau) x *= torque_scale(model, L, M);
+    s->curve = std::make_shared<const SpringCurve>(q, tau);
+  }
+  return s;
+}
+
 }  // namespace unfurl::sim

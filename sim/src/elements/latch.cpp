@@ -75,4 +75,13 @@ void Latch::validate(const Scene& scene, const std::string& field) const {
   }
 }
 
+std::shared_ptr<ForceElement> Latch::scaled(double L, double M, const Model& model) const {
+  auto l = std::make_shared<Latch>(*this);
+  l->position *= angle_scale(model, L);
+  l->free_play *= angle_scale(model, L);
+  l->stiffness *= stiffness_scale(model, L, M);
+  l->damping *= stiffness_scale(model, L, M);
+  return l;
+}
+
 }  // namespace unfurl::sim

@@ -95,4 +95,14 @@ void PointSpring::validate(const Scene& scene, const std::string& field) const {
     throw SceneInvalid(field, "its two points coincide at the initial state: the line of the force has no direction");
 }
 
+std::shared_ptr<ForceElement> PointSpring::scaled(double L, double M, const Model&) const {
+  auto s = std::make_shared<PointSpring>(*this);
+  s->point_a *= L;
+  s->point_b *= L;
+  s->rest_length *= L;
+  s->stiffness *= M;  // N/m: (M L / T^2) / L
+  s->damping *= M;
+  return s;
+}
+
 }  // namespace unfurl::sim

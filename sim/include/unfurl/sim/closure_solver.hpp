@@ -1,4 +1,4 @@
-// Solves with R = W + delta I, W the loop components' mobility (mobility.hpp)
+// Solves with R = W + diag(delta), W the loop components' mobility (mobility.hpp)
 // at the sweep's configuration: the one linear algebra the full-matrix
 // regulator gains need. Two ways to the same numbers:
 // - dense: W from m batched passes of the sweep, then a Cholesky of R.
@@ -22,8 +22,9 @@ namespace unfurl::sim {
 class ClosureSolver {
  public:
   virtual ~ClosureSolver() = default;
-  // Factors R at the sweep's configuration. False if it could not.
-  virtual bool factorize(const Sweep& sweep, double delta) = 0;
+  // Factors R = W + diag(delta) (one entry per component) at the sweep's
+  // configuration. False if it could not.
+  virtual bool factorize(const Sweep& sweep, const double* delta) = 0;
   // X = R^-1 B for the last factorization, B and X m x columns,
   // column-major (distinct arrays). Without refinement the sparse solver
   // stops after its first pass (about 1e-5 of B off near a branch point):

@@ -29,6 +29,7 @@
 
 #include "unfurl/sim/energy.hpp"
 #include "unfurl/sim/loads.hpp"
+#include "unfurl/sim/mechanism_scales.hpp"
 #include "unfurl/sim/momentum.hpp"
 #include "unfurl/sim/regulator.hpp"
 #include "unfurl/sim/scene.hpp"
@@ -51,6 +52,14 @@ struct Observation {
   Loads loads;
 };
 
+// Per state entry of `layout`, the size that counts as one radian of an
+// angle: 1 for an angle, the length for a length, for a momentum what
+// drifts its coordinate by one radian over half a period of the
+// mechanism's fastest motion (inertia x rate / pi), for the regulator's
+// state its gap's scale.
+std::vector<double> state_scale_of(const Model& model, const StateLayout& layout, const MechanismScales& scales,
+                                   const Regulator* regulator);
+
 class Dynamics {
  public:
   explicit Dynamics(const Scene& scene);
@@ -63,6 +72,13 @@ class Dynamics {
   const StateLayout& layout() const { return layout_; }
   int size() const { return layout_.size(); }
   Regulator* regulator() { return regulator_ ? &*regulator_ : nullptr; }
+  const Regulator* regulator() const { return regulator_ ? &*regulator_ : nullptr; }
+  // The mechanism's own sizes (at q0): what tolerances and the closure's
+  // metric are measured against.
+  const MechanismScales& scales() const { return scales_; }
+  // Per state entry, the size that counts as one radian of an angle
+  // (state_scale_of): what tolerances and difference steps are measured in.
+  const std::vector<double>& state_scale() const { return state_scale_; }
 
   // The initial state: q0, p0 (from dq0 when no p0 is given), u0 = 0.
   std::vector<double> initial_state();
@@ -128,6 +144,8 @@ class Dynamics {
   const Scene scene_;
   StateLayout layout_;
   Sweep sweep_;
+  MechanismScales scales_;
+  std::vector<double> state_scale_;
   std::optional<Regulator> regulator_;
   std::vector<const Latch*> latches_;
   std::vector<std::size_t> latch_elements_;  // element index of latch l

@@ -10,6 +10,7 @@
 // run, not by the element.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -101,6 +102,11 @@ class ForceElement {
   // Its load columns, and their values at a state (one per column).
   virtual std::vector<LoadColumn> load_columns(const Model&) const { return {}; }
   virtual void load_values(const ElementState&, double* /*values*/) const {}
+
+  // A copy for the mechanism scaled by lengths x L and masses x M with time
+  // unchanged, by dimensional analysis (a hinge's torque and stiffness x M
+  // L^2, a force x M L, a point x L): the same motion in other units.
+  virtual std::shared_ptr<ForceElement> scaled(double L, double M, const Model& model) const = 0;
 
   // Throws SceneInvalid (scene_validation.hpp) at `field` + ".key" when a
   // value breaks the element's rules in the scene.

@@ -67,8 +67,11 @@ class Integrator {
   virtual double last_step() const = 0;
 };
 
-// Absolute tolerances per state: atol for q, looser for p and u.
-std::vector<double> absolute_tolerances(const StateLayout& layout, double atol);
+// Absolute tolerances per state in the mechanism's own sizes: atol x
+// Dynamics::state_scale() (atol for an angle, atol x length for a length;
+// for a momentum, what drifts its coordinate by as much over pi / rate;
+// for the regulator's state, as its gap's).
+std::vector<double> absolute_tolerances(const Dynamics& dynamics, double atol);
 
 // Whether an implicit integrator uses GMRES for this state size.
 bool uses_krylov(const RunSettings& settings, int state_size);

@@ -22,9 +22,11 @@ void add_loop_forces(const std::vector<Loop>& loops, const std::vector<LoopCompo
                      const double* lambda, double scale, std::vector<Vec6>& F);
 
 // The rows of eps T A that are not identically zero, found from the rows at
-// the initial coordinates and at random ones (sweep: scratch, any state).
+// the initial coordinates and at random ones (sweep: scratch, any state);
+// a linear component's row counts over the mechanism's `length`, so the
+// cut-off does not depend on units.
 std::vector<LoopComponent> active_loop_components(const Model& model, const std::vector<Loop>& loops,
-                                                  const std::vector<double>& q0, Sweep& sweep);
+                                                  const std::vector<double>& q0, double length, Sweep& sweep);
 
 // g(q) of closure_mismatch() on the active components.
 void geometric_gap(const std::vector<Loop>& loops, const std::vector<LoopComponent>& components,

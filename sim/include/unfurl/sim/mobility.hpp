@@ -31,9 +31,10 @@ class Mobility {
   // std::invalid_argument beyond kMaxDenseComponents.
   const LoopMatrix& matrix(const Sweep& sweep);
 
-  // The largest eigenvalue of W, by power iteration on products (the scale
-  // the regulator's regularization is measured against).
-  double largest_eigenvalue(const Sweep& sweep);
+  // The largest eigenvalue of S W S for a diagonal S (`scale`, one entry
+  // per component), by power iteration on products: the scale the
+  // regulator's regularization is measured against.
+  double largest_eigenvalue(const Sweep& sweep, const Eigen::VectorXd& scale);
 
  private:
   using Spatial = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, kMaxDenseComponents>;

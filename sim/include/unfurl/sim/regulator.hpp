@@ -15,15 +15,22 @@
 // - full (default): C and D from the current W(q) as full matrices, so every
 //   mode sits on the designed cubic however strongly the loops couple.
 //   Where W loses rank (a branch point such as the deployed pantograph) it
-//   is regularized: C = v^2 R^-1, D = (p0 + 2 p1) v R^-1 with R = W + delta I,
+//   is regularized: C = v^2 R^-1, D = (p0 + 2 p1) v R^-1 with R = W + Delta,
 //   and the integral is scaled to match, u' = W R^-1 (k_pi g + k_v g'). A
 //   mode of eigenvalue w then has the gain a = w / (w + delta) in every term,
 //   s^3 + a (p0+2p1) v s^2 + a v^2 (1 + 2 a p0 p1) s + a^2 p0 v^3 = 0,
 //   which is stable for every a > 0 (Routh: (p0 + 2 p1)(1 + 2 a p0 p1) > p0),
 //   while the unscaled integral is unstable for a < p0 / ((p0+2p1)(1+2p0p1)).
 //   Modes with w >> delta keep the designed cubic; weaker ones get softer,
-//   still stable, control. delta = regularization x the largest eigenvalue
-//   of W at the start. Only solves with R are needed (closure_solver.hpp).
+//   still stable, control. All of this is in the closure's metric, where a
+//   linear component counts in units of the mechanism's length l
+//   (MechanismScales): S = diag(1/l for a linear component, 1 for an
+//   angular one) makes S W S of one unit, delta = regularization x its
+//   largest eigenvalue at the start, and Delta = delta S^-2 (delta l^2 on a
+//   linear component, delta on an angular one) is the same regularization
+//   in the gap's own units. Scaling the mechanism's lengths and masses then
+//   leaves every gain the same. Only solves with R are needed
+//   (closure_solver.hpp).
 //   With feedforward (default) the loop force also carries R^-1 d, d = eps a
 //   the residual's acceleration under every other force (the sweep's
 //   accelerations, loop forces left out): W lambda then cancels d in every
@@ -50,15 +57,32 @@ namespace unfurl::sim {
 
 class Regulator {
  public:
-  // Throws std::invalid_argument when the solver asked for cannot take the
-  // scene (the dense one beyond kMaxDenseComponents components).
+  // v_max: the bandwidth (the settings' or automatic_bandwidth()); length:
+  // the mechanism's (MechanismScales). Throws std::invalid_argument when
+  // the solver asked for cannot take the scene (the dense one beyond
+  // kMaxDenseComponents components).
   Regulator(const Model& model, const std::vector<Loop>& loops, std::vector<LoopComponent> components,
-            const RegulatorSettings& settings);
+            const RegulatorSettings& settings, double v_max, double length);
+
+  // The bandwidth chosen for a mechanism whose fastest own rate is `rate`
+  // (rad/s) when the scene sets none: v_max must lie well above the
+  // mechanism's frequencies (METHOD.md).
+  static double automatic_bandwidth(double rate) { return kBandwidthPerRate * rate; }
+  static constexpr double kBandwidthPerRate = 25;
 
   int size() const { return static_cast<int>(components_.size()); }
   const std::vector<LoopComponent>& components() const { return components_; }
   const RegulatorSettings& settings() const { return settings_; }
+  // The bandwidth in use, and the feedback gains of (16): k_pi = p0 v_max,
+  // k_v = 2 p0 p1.
+  double v_max() const { return v_max_; }
+  double k_pi() const { return settings_.p0 * v_max_; }
+  double k_v() const { return 2 * settings_.p0 * settings_.p1; }
+  // delta (1 / (kg m^2)): regularization x the largest eigenvalue of S W S at the start.
   double delta() const { return delta_; }
+  // What a component's gap is measured against: the mechanism's length for
+  // a linear one, 1 for an angular one.
+  double component_scale(int c) const { return components_[c].axis < 3 ? length_ : 1.0; }
 
   // Fixes what the gains take from W at the start (call at the sweep's
   // initial configuration): delta for the full tuning, diag W(0) for the
@@ -111,9 +135,12 @@ class Regulator {
   std::vector<Loop> loops_;
   std::vector<LoopComponent> components_;
   RegulatorSettings settings_;
+  double v_max_;
+  double length_;
   Mobility mobility_;
   std::unique_ptr<ClosureSolver> solver_;  // the full tuning's solves with R
   double delta_ = 0;
+  Eigen::VectorXd Delta_;  // delta S^-2, per component
   Eigen::VectorXd diagonal_W0_;  // paper tuning: diag W(0)
   // The configuration key of the last factorization, and its outcome.
   long factorized_configuration_ = -1;

@@ -3,6 +3,8 @@
 // settings a scene file sets.
 #pragma once
 
+#include <optional>
+
 namespace unfurl::sim {
 
 enum class GainTuning { full, paper };
@@ -14,16 +16,16 @@ enum class ClosureSolverKind { automatic, dense, sparse };
 
 struct RegulatorSettings {
   GainTuning gains = GainTuning::full;
-  double v_max = 2000;  // rad/s, above the mechanism's highest frequency
+  // rad/s, above the mechanism's highest frequency; unset: chosen from the
+  // mechanism's own rate (Regulator::automatic_bandwidth).
+  std::optional<double> v_max;
   double p0 = 1.0;
   double p1 = 0.5;
-  double regularization = 2e-6;  // delta relative to the largest eigenvalue of W(0)
-  bool feedforward = true;       // full gains: cancel the residual's acceleration d
+  // delta relative to the largest eigenvalue of W(0) in the closure's
+  // metric (linear components over the mechanism's length): dimensionless.
+  double regularization = 2e-6;
+  bool feedforward = true;  // full gains: cancel the residual's acceleration d
   ClosureSolverKind solver = ClosureSolverKind::automatic;
-
-  // The feedback gains of (16): k_pi = p0 v_max, k_v = 2 p0 p1.
-  double k_pi() const { return p0 * v_max; }
-  double k_v() const { return 2 * p0 * p1; }
 };
 
 }  // namespace unfurl::sim

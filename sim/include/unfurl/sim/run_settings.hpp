@@ -26,7 +26,9 @@ struct RunSettings {
   double t_end = 10;
   IntegratorKind integrator = IntegratorKind::cvode_bdf;
   double rtol = 1e-8;
-  double atol = 1e-10;  // for q; the other states: absolute_tolerances() (integrator.hpp)
+  // For an angle; a length counts in the mechanism's length, the other
+  // states in its own sizes (absolute_tolerances(), integrator.hpp).
+  double atol = 1e-10;
   LinearSolverKind linear_solver = LinearSolverKind::automatic;
   double dt = 1e-4;     // step of the fixed-step RK4
   double sample = 0.01; // output interval
@@ -37,8 +39,9 @@ struct RunSettings {
   // The run fails ("time budget") when it has taken longer than this, in
   // seconds of wall time; 0: no limit.
   double max_wall_time = 0;
-  // The run fails when a loop's geometric gap exceeds this (m or rad), at
-  // the end of any step: the regulator has lost the loop.
+  // The run fails when a loop's geometric gap exceeds this (rad, or a
+  // distance over the mechanism's length), at the end of any step: the
+  // regulator has lost the loop.
   double max_closure = 0.1;
   // Latches whose roots follow the first within this many seconds engage in
   // one restart, each at its own root (latch_events.hpp).

@@ -28,7 +28,9 @@ struct Scene {
   std::vector<double> q0;     // per position coordinate
   std::vector<double> dq0;    // per velocity coordinate (used when p0 is empty)
   std::vector<double> p0;     // per velocity coordinate, optional
-  double closure_tolerance = 1e-6;  // how far the initial loops may be open
+  // How far the initial loops may be open: rad, and for a distance times
+  // the mechanism's length (MechanismScales).
+  double closure_tolerance = 1e-6;
   RunSettings run;
 
   // The elements of one kind, in scene order.

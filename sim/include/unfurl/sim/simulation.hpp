@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "unfurl/sim/integrator.hpp"
@@ -28,6 +29,16 @@ struct Failure {
 // "closure check failed at t = 3.2 s (step 1e-5 s): ..."
 std::string describe(const Failure& failure);
 
+// How a run's loops were closed: the mechanism's scales the closure is
+// measured against and the regulator's tuning they gave.
+struct ClosureTuning {
+  double length = 0;          // m (MechanismScales)
+  double rate = 0;            // rad/s, the mechanism's fastest own rate
+  double v_max = 0;           // rad/s, the bandwidth in use
+  bool v_max_automatic = true;  // chosen from `rate`, not set by the scene
+  double regularization = 0;  // dimensionless: delta over W's largest eigenvalue at the start
+};
+
 struct RunResult {
   RunStatus status = RunStatus::finished;
   Failure failure;
@@ -37,6 +48,7 @@ struct RunResult {
   long jacobian_product_evals = 0;  // Dynamics::jacobian_times' evaluations, held gains
   double wall_time_s = 0;
   RunSettings settings;
+  std::optional<ClosureTuning> closure;  // a scene with loops
   Trajectory trajectory;
 };
 

@@ -92,6 +92,10 @@ class Sweep {
   void force_pass(std::vector<S>& F, Pout& Q) const;
 
   const Placement& placement(int i) const { return X_[i]; }
+  // The articulated inertia of joint i's coordinate r, (D_i^-1)_rr: the
+  // inertia it moves against with every other joint free (kg m^2 for a
+  // turn, kg for a slide).
+  double articulated_inertia(int i, int r = 0) const;
   // A_i at the configuration, 6 x n_i in the leading columns.
   Mat6 motion_axes(int i) const {
     return multi_[i] >= 0 ? multi_axes_[multi_[i]].A : model_.joints[i].motion_axes();

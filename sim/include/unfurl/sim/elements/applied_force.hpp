@@ -19,6 +19,7 @@ class AppliedForce : public ForceElement {
   std::string list() const override { return "applied_forces"; }
   std::string handle(const Model& model) const override { return model.bodies[body].name; }
   void add_forces(const ElementState& s, ElementForces& out) const override;
+  std::shared_ptr<ForceElement> scaled(double L, double M, const Model& model) const override;
   bool needs_poses() const override { return in_base_frame; }
   void validate(const Scene& scene, const std::string& field) const override;
   std::vector<ElementParameter> parameters() const override;

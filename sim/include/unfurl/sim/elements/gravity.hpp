@@ -16,6 +16,7 @@ class Gravity : public ForceElement {
   std::string list() const override { return "gravity"; }
   std::string handle(const Model&) const override { return ""; }
   void add_forces(const ElementState& s, ElementForces& out) const override;
+  std::shared_ptr<ForceElement> scaled(double L, double M, const Model& model) const override;
   bool needs_poses() const override { return true; }
   // -sum m_i g . r_c,i
   double potential_energy(const ElementState& s) const override;

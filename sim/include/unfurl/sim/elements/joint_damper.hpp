@@ -14,6 +14,7 @@ class JointDamper : public JointElement {
   std::string kind() const override { return "damper"; }
   std::string list() const override { return "dampers"; }
   void add_forces(const ElementState& s, ElementForces& out) const override;
+  std::shared_ptr<ForceElement> scaled(double L, double M, const Model& model) const override;
   double dissipated_power(const ElementState& s) const override;
   bool dissipative() const override { return damping > 0; }
   void add_joint_stiffness(const ElementState& s, RatesOut stiffness, RatesOut damping) const override;

@@ -26,6 +26,12 @@ class JointElement : public ForceElement {
   // "N m" on a hinge, "N" on a slider; "rad" and "m" for its coordinate.
   static std::string torque_unit(const Model& model, int joint);
   static std::string angle_unit(const Model& model, int joint);
+  // How the joint's torque (or force), stiffness and angle (or length)
+  // scale with lengths x L and masses x M (ForceElement::scaled).
+  double torque_scale(const Model& model, double L, double M) const { return slider(model) ? M * L : M * L * L; }
+  double stiffness_scale(const Model& model, double L, double M) const { return slider(model) ? M : M * L * L; }
+  double angle_scale(const Model& model, double L) const { return slider(model) ? L : 1.0; }
+  bool slider(const Model& model) const { return model.joints[joint].type == JointType::prismatic; }
   // A column listed with the joint.
   LoadColumn column(const Model& model, const std::string& quantity) const {
     return {quantity + "." + model.joints[joint].name, torque_unit(model, joint), "", joint};

@@ -30,6 +30,7 @@ class JointFriction : public JointElement {
   std::string kind() const override { return "friction"; }
   std::string list() const override { return "friction"; }
   void add_forces(const ElementState& s, ElementForces& out) const override;
+  std::shared_ptr<ForceElement> scaled(double L, double M, const Model& model) const override;
   double dissipated_power(const ElementState& s) const override { return dissipation(s.w[w_index(s.model)]); }
   bool dissipative() const override { return true; }
   // Its slope at the state's rate as damping.

@@ -30,6 +30,7 @@ class JointSpring : public JointElement {
   std::string kind() const override { return "spring"; }
   std::string list() const override { return "springs"; }
   void add_forces(const ElementState& s, ElementForces& out) const override;
+  std::shared_ptr<ForceElement> scaled(double L, double M, const Model& model) const override;
   double potential_energy(const ElementState& s) const override;
   double dissipated_power(const ElementState& s) const override;
   bool dissipative() const override { return damping > 0; }

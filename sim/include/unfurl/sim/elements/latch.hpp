@@ -43,6 +43,7 @@ class Latch : public JointElement {
   std::string list() const override { return "latches"; }
   // Each of these acts only once the latch has engaged.
   void add_forces(const ElementState& s, ElementForces& out) const override;
+  std::shared_ptr<ForceElement> scaled(double L, double M, const Model& model) const override;
   double potential_energy(const ElementState& s) const override;
   EnergyStore energy_store() const override { return EnergyStore::latches; }
   double dissipated_power(const ElementState& s) const override;

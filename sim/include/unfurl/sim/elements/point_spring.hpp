@@ -47,6 +47,7 @@ class PointSpring : public ForceElement {
   std::string list() const override { return "point_springs"; }
   std::string handle(const Model&) const override { return named ? name : ""; }
   void add_forces(const ElementState& s, ElementForces& out) const override;
+  std::shared_ptr<ForceElement> scaled(double L, double M, const Model& model) const override;
   bool needs_poses() const override { return true; }
   double potential_energy(const ElementState& s) const override;
   double dissipated_power(const ElementState& s) const override;

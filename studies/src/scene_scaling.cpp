@@ -1,0 +1,36 @@
+#include "unfurl/studies/scene_scaling.hpp"
+
+#include "unfurl/sim/scene_validation.hpp"
+
+namespace unfurl::studies {
+
+sim::SceneFile scale_scene(const sim::SceneFile& file, double L, double M) {
+  sim::SceneFile out = file;
+  sim::Scene& scene = out.scene;
+  sim::Model& model = scene.model;
+  for (sim::Body& b : model.bodies) {
+    b.mass *= M;
+    b.com *= L;
+    b.inertia_com *= M * L * L;
+  }
+  for (sim::Joint& j : model.joints) {
+    j.parent_point *= L;
+    j.child_point *= L;
+  }
+  model.base_velocity.head<3>() *= L;
+  for (auto& element : scene.elements) element = element->scaled(L, M, model);
+  for (int c = 0; c < model.nq; ++c)
+    if (model.position_unit(c) == "m") scene.q0[c] *= L;
+  for (int c = 0; c < model.nv; ++c) {
+    const bool linear = model.velocity_unit(c) == "m/s";
+    if (linear) scene.dq0[c] *= L;
+    if (!scene.p0.empty()) scene.p0[c] *= linear ? M * L : M * L * L;
+  }
+  for (sim::Visual* v : {&out.visuals.base}) v->scale *= L, v->offset *= L;
+  for (sim::Visual& v : out.visuals.bodies) v.scale *= L, v.offset *= L;
+  scene.name += "_scaled";
+  sim::validate(scene);
+  return out;
+}
+
+}  // namespace unfurl::studies
