@@ -80,8 +80,8 @@ void write_work_precision_markdown(const sim::Scene& scene, const studies::WorkP
   if (!scene.latches().empty() && !scene.loops.empty())
     out << " (the reference's first latch: after it the deployed state can be a branch point where exact runs "
            "part, so the final state and the latch times are compared instead)";
-  out << ". Adaptive integrators run at rtol as given and atol = rtol / 100 (joint angles; momenta 100x, regulator "
-         "states 1e4x); RK4 at a fixed step. Wall time: the median of up to 3 runs on "
+  out << ". Adaptive integrators run at rtol as given and atol = rtol / 100 (for a joint angle; the other states "
+         "in the mechanism's own sizes, Dynamics::state_scale); RK4 at a fixed step. Wall time: the median of up to 3 runs on "
          "this machine.\n\n";
   for (const std::string& picture : pictures) out << "![" << picture << "](" << picture << ")\n\n";
 
