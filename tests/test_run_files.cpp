@@ -26,7 +26,7 @@ TEST(LoadsFile, HasTheColumnsTheSceneHasAndReadsBack) {
   std::ifstream in(dir / "loads.csv");
   std::string header;
   std::getline(in, header);
-  EXPECT_EQ(header.find("t [s],spring_torque.j1 [N m],damper_torque.j1 [N m],latch_torque.j1 [N m],"
+  EXPECT_EQ(header.find("t [s],determinate,spring_torque.j1 [N m],damper_torque.j1 [N m],latch_torque.j1 [N m],"
                         "hinge_force.j1.x [N; child body frame],"),
             0u)
       << header;
@@ -39,7 +39,8 @@ TEST(LoadsFile, HasTheColumnsTheSceneHasAndReadsBack) {
   const sim::Trajectory back = io::read_trajectory_csv(scene, (dir / "trajectory.csv").string());
   ASSERT_EQ(back.samples.size(), run.trajectory.samples.size());
   EXPECT_EQ(back.loop_components.size(), 9u);
-  for (std::size_t k = 0; k < back.samples.size(); ++k)
+  for (std::size_t k = 0; k < back.samples.size(); ++k) {
+    EXPECT_EQ(back.samples[k].loads.determinacy, run.trajectory.samples[k].loads.determinacy);
     for (int j = 0; j < scene.model.size(); ++j) {
       EXPECT_EQ(back.samples[k].loads.reaction[j], run.trajectory.samples[k].loads.reaction[j]);
       const std::string spring = "spring_torque." + scene.model.joints[j].name;
@@ -47,6 +48,7 @@ TEST(LoadsFile, HasTheColumnsTheSceneHasAndReadsBack) {
       EXPECT_EQ(test::load_of(back.load_columns, back.samples[k].loads, spring),
                 test::load_of(run.trajectory.load_columns, run.trajectory.samples[k].loads, spring));
     }
+  }
   fs::remove_all(dir);
 }
 

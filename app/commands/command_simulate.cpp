@@ -41,6 +41,37 @@ const char* kHelp =
     "Exit status: 0 done, 1 the solver failed (what it computed is written), 2 bad scene,\n"
     "64 bad usage.\n";
 
+// The largest of the per-joint peaks, or nullptr if none was reached.
+const sim::RunSummary::NamedPeak* largest(const std::vector<sim::RunSummary::NamedPeak>& peaks) {
+  const sim::RunSummary::NamedPeak* best = nullptr;
+  for (const auto& p : peaks)
+    if (!std::isnan(p.peak.t) && (!best || p.peak.value > best->peak.value)) best = &p;
+  return best;
+}
+
+// The peak hinge force where the motion determines it, and a warning where
+// it does not (RunSummary::loads_determinate).
+void print_hinge_force_peaks(const sim::RunSummary& s) {
+  if (const auto* p = largest(s.peak_hinge_force))
+    std::printf("             peak hinge force %.4g N at %s, t = %.6f s%s\n", p->peak.value, p->joint.c_str(), p->peak.t,
+                s.indeterminate_spans.empty() ? "" : " (where determinate)");
+  if (!s.loads_determinate.has_value()) {
+    std::printf("warning      loads not checked for determinacy (more than %d loop components)\n",
+                sim::kMaxDenseComponents);
+    return;
+  }
+  if (*s.loads_determinate) return;
+  double duration = 0;
+  for (const auto& span : s.indeterminate_spans) duration += span[1] - span[0];
+  std::printf("warning      loads indeterminate from t = %.6f s to %.6f s (%zu spans, %.4g s in all): the loops are\n"
+              "             rigid and redundant there (a branch point), so the reactions inside them are the\n"
+              "             minimum-norm ones; compliance in the loops determines them\n",
+              s.indeterminate_spans.front()[0], s.indeterminate_spans.back()[1], s.indeterminate_spans.size(), duration);
+  if (const auto* p = largest(s.peak_hinge_force_indeterminate))
+    std::printf("             peak minimum-norm hinge force %.4g N at %s, t = %.6f s\n", p->peak.value, p->joint.c_str(),
+                p->peak.t);
+}
+
 void print_summary(const sim::Scene& scene, const sim::RunResult& result, const sim::RunSummary& s,
                    const std::string& dir) {
   const sim::RunSettings& run = result.settings;
@@ -70,6 +101,7 @@ void print_summary(const sim::Scene& scene, const sim::RunResult& result, const 
   if (latch)
     std::printf("loads        peak latch torque %.4g N m at %s, t = %.6f s\n", latch->peak.value, latch->joint.c_str(),
                 latch->peak.t);
+  print_hinge_force_peaks(s);
   std::printf("energy       %.9g J at t = 0, %.9g J at t = %g s, %.9g J dissipated\n", s.energy_initial, s.energy_final,
               s.t_reached, s.energy_dissipated);
   if (s.free_bus)

@@ -1,5 +1,7 @@
 #include "unfurl/io/run_columns.hpp"
 
+#include <limits>
+
 #include "unfurl/sim/momentum.hpp"
 
 namespace unfurl::io {
@@ -104,6 +106,27 @@ std::vector<RunColumn> load_file_columns(const sim::Scene& scene, const sim::Tra
   std::vector<RunColumn> out;
   add(
       out, "t", "s", "", [](const sim::Sample& s) { return s.t; }, [](sim::Sample& s, double x) { s.t = x; });
+  // 1 where the motion determines the loads, 0 where the reactions inside
+  // the loops are the minimum-norm ones, nan where it was not assessed.
+  if (!scene.loops.empty())
+    add(
+        out, "determinate", "", "",
+        [](const sim::Sample& s) {
+          switch (s.loads.determinacy) {
+            case sim::Determinacy::determinate:
+              return 1.0;
+            case sim::Determinacy::indeterminate:
+              return 0.0;
+            case sim::Determinacy::not_assessed:
+              break;
+          }
+          return std::numeric_limits<double>::quiet_NaN();
+        },
+        [](sim::Sample& s, double x) {
+          s.loads.determinacy = x == 1   ? sim::Determinacy::determinate
+                                : x == 0 ? sim::Determinacy::indeterminate
+                                         : sim::Determinacy::not_assessed;
+        });
   const auto element_column = [&](std::size_t c) {
     add(
         out, element[c].name, element[c].unit, element[c].frame,

@@ -207,6 +207,8 @@ void write_summary_units(JsonWriter& json, const sim::Scene& scene, const sim::R
   };
   per_joint("peak_latch_torque", summary.peak_latch_torque, true);
   json.value("peak_hinge_force", "N").value("peak_hinge_moment", "N m");
+  json.value("peak_hinge_force_indeterminate", "N").value("peak_hinge_moment_indeterminate", "N m");
+  json.value("indeterminate_spans", "s");
   json.value("energy_initial", "J").value("energy_final", "J").value("energy_dissipated", "J");
   json.begin_object("final_q");
   for (int c = 0; c < m.nq; ++c) json.value(m.position_name(c), m.position_unit(c));
@@ -279,6 +281,16 @@ void write_summary_json(const sim::Scene& scene, const sim::RunResult& result, c
   peaks("peak_latch_torque", summary.peak_latch_torque);
   peaks("peak_hinge_force", summary.peak_hinge_force);
   peaks("peak_hinge_moment", summary.peak_hinge_moment);
+  if (summary.loads_determinate)
+    json.value("loads_determinate", *summary.loads_determinate);
+  else
+    json.null("loads_determinate");
+  json.begin_array("indeterminate_spans");
+  for (const auto& span : summary.indeterminate_spans)
+    json.begin_array().value("", span[0]).value("", span[1]).end_array();
+  json.end_array();
+  peaks("peak_hinge_force_indeterminate", summary.peak_hinge_force_indeterminate);
+  peaks("peak_hinge_moment_indeterminate", summary.peak_hinge_moment_indeterminate);
   json.value("energy_initial", summary.energy_initial);
   json.value("energy_final", summary.energy_final);
   json.value("energy_dissipated", summary.energy_dissipated);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "closure_rank.hpp"
 #include "newton_preconditioner.hpp"
 
 namespace unfurl::sim {
@@ -66,6 +67,11 @@ Dynamics::Dynamics(const Scene& scene)
     regulator_.emplace(scene_.model, scene_.loops, std::move(components), scene_.regulator, v_max, scales_.length);
     configure(scene_.q0.data());
     regulator_->calibrate(sweep_);
+    if (layout_.m <= kMaxDenseComponents) {
+      Eigen::VectorXd S(layout_.m);
+      for (int c = 0; c < layout_.m; ++c) S[c] = 1 / regulator_->component_scale(c);
+      closure_rank_ = std::make_unique<ClosureRank>(S);
+    }
     lambda_.resize(layout_.m);
     g_.resize(layout_.m);
     g_dot_.resize(layout_.m);
@@ -258,10 +264,22 @@ bool Dynamics::loads(double, const double* y, Loads& out, std::vector<ClosureErr
     scene_.elements[k]->load_values(element_state(k, q, w, poses_, v_, model.base_velocity), values_.data());
     for (std::size_t c = 0; c < element_columns_[k].size(); ++c) out.element[element_columns_[k][c]] += values_[c];
   }
-  // The applied forces again (the force pass consumed them), loop forces
-  // included, then the accelerations and each joint's wrench, moved from
-  // the child's origin to the hinge point.
+  // The applied forces again (the force pass consumed them); with loops,
+  // the rigid model's loop forces at this state (closure_rank.hpp) from the
+  // loops' acceleration under them. Then the accelerations and each
+  // joint's wrench, moved from the child's origin to the hinge point.
   add_element_forces(q, w);
+  out.determinacy = Determinacy::determinate;
+  if (regulator_ && closure_rank_) {
+    sweep_.accelerations(v_, w, F_, Q_joint_.data(), bias_, a_, ddq_.data());
+    regulator_->residual_rate(a_, d_.data());
+    closure_rank_->compute(regulator_->mobility(sweep_));
+    // lambda_ holds the regulator's loop forces, which moved the mechanism.
+    if (!closure_rank_->loop_forces(d_.data(), lambda_.data())) out.determinacy = Determinacy::indeterminate;
+    add_element_forces(q, w);
+  } else if (regulator_) {
+    out.determinacy = Determinacy::not_assessed;
+  }
   if (regulator_) regulator_->apply(lambda_.data(), F_);
   sweep_.accelerations(v_, w, F_, Q_joint_.data(), bias_, a_, ddq_.data());
   out.reaction.resize(model.size());

@@ -8,18 +8,30 @@ RunMonitor::RunMonitor(Dynamics& dynamics) : dynamics_(dynamics) {
   peaks_.latch_torque.resize(dynamics.latch_count());
   peaks_.hinge_force.resize(dynamics.model().size());
   peaks_.hinge_moment.resize(dynamics.model().size());
+  peaks_.hinge_force_indeterminate.resize(dynamics.model().size());
+  peaks_.hinge_moment_indeterminate.resize(dynamics.model().size());
 }
+
 
 std::optional<double> RunMonitor::observe(double t, const double* y) {
   if (!dynamics_.loads(t, y, loads_, &closure_)) return std::nullopt;
   for (int l = 0; l < dynamics_.latch_count(); ++l)
     if (dynamics_.latch_state().engaged(l))
       peaks_.latch_torque[l].update(std::abs(loads_.element[dynamics_.latch_column(l)]), t);
+  const bool determinate = loads_.determinacy != Determinacy::indeterminate;
+  if (loads_.determinacy == Determinacy::not_assessed) peaks_.loads_assessed = false;
+  std::vector<Peak>& force = determinate ? peaks_.hinge_force : peaks_.hinge_force_indeterminate;
+  std::vector<Peak>& moment = determinate ? peaks_.hinge_moment : peaks_.hinge_moment_indeterminate;
   for (std::size_t j = 0; j < loads_.reaction.size(); ++j) {
     const Vec6& r = loads_.reaction[j];
-    peaks_.hinge_force[j].update(r.head<3>().norm(), t);
-    peaks_.hinge_moment[j].update(r.tail<3>().norm(), t);
+    force[j].update(r.head<3>().norm(), t);
+    moment[j].update(r.tail<3>().norm(), t);
   }
+  if (!determinate) {
+    if (!in_indeterminate_span_) peaks_.indeterminate_spans.push_back({t, t});
+    peaks_.indeterminate_spans.back()[1] = t;
+  }
+  in_indeterminate_span_ = !determinate;
   const bool before_latch = dynamics_.latch_state().engaged_count() == 0;
   double largest = 0;
   for (const ClosureError& c : closure_) {

@@ -37,6 +37,7 @@ class RunMonitor {
   RunPeaks peaks_;
   Loads loads_;
   std::vector<ClosureError> closure_;
+  bool in_indeterminate_span_ = false;
   bool ramping_ = true;
   double last_h_ = 0;
   double min_step_ = std::numeric_limits<double>::infinity();

@@ -26,7 +26,11 @@ RunSummary summarize(const Scene& scene, const RunResult& result) {
   for (std::size_t j = 0; j < p.hinge_force.size(); ++j) {
     s.peak_hinge_force.push_back({model.joints[j].name, p.hinge_force[j]});
     s.peak_hinge_moment.push_back({model.joints[j].name, p.hinge_moment[j]});
+    s.peak_hinge_force_indeterminate.push_back({model.joints[j].name, p.hinge_force_indeterminate[j]});
+    s.peak_hinge_moment_indeterminate.push_back({model.joints[j].name, p.hinge_moment_indeterminate[j]});
   }
+  s.indeterminate_spans = p.indeterminate_spans;
+  if (p.loads_assessed) s.loads_determinate = p.indeterminate_spans.empty();
   if (!tr.empty()) {
     s.energy_initial = tr.samples.front().energy.total();
     s.energy_final = tr.samples.back().energy.total();

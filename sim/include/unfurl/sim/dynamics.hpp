@@ -38,6 +38,7 @@
 
 namespace unfurl::sim {
 
+class ClosureRank;
 class NewtonPreconditioner;
 
 // Everything derived from a state at one instant.
@@ -115,7 +116,8 @@ class Dynamics {
   bool observe(double t, const double* y, Observation& out);
 
   // The loads at a state (loads.hpp): the elements' load columns, the
-  // reactions from the sweep's accelerations (exact, O(N)); and the loops'
+  // reactions from the sweep's accelerations (exact, O(N)), whether the
+  // motion determines them (minimum-norm where it does not); and the loops'
   // geometric gaps if asked. False where the evaluation at y failed.
   bool loads(double t, const double* y, Loads& out, std::vector<ClosureError>* closure = nullptr);
   // What Loads::element holds, and which of its columns each element writes.
@@ -147,6 +149,7 @@ class Dynamics {
   MechanismScales scales_;
   std::vector<double> state_scale_;
   std::optional<Regulator> regulator_;
+  std::unique_ptr<ClosureRank> closure_rank_;  // up to kMaxDenseComponents components
   std::vector<const Latch*> latches_;
   std::vector<std::size_t> latch_elements_;  // element index of latch l
   std::vector<int> latch_of_element_;        // -1 for elements that are not latches

@@ -4,6 +4,7 @@
 // loop component the regulator's constraint force.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -27,6 +28,11 @@ struct LoadColumn {
 // The index of the column called `name`, or -1.
 int find_load_column(const std::vector<LoadColumn>& columns, const std::string& name);
 
+// Loads of a mechanism without loops are always determinate; those of one
+// with more loop components than the dense analysis takes
+// (kMaxDenseComponents) are not assessed.
+enum class Determinacy { determinate, indeterminate, not_assessed };
+
 struct Loads {
   // Per load column of the run (Dynamics::load_columns, Trajectory::load_columns).
   std::vector<double> element;
@@ -38,6 +44,10 @@ struct Loads {
   // Per active loop component: the force on the split body from its image
   // (its negative acts on the image), at the body's origin, in its frame.
   std::vector<double> loop_force;
+  // Whether the motion determines the loop forces, and with them the
+  // reactions inside the loops (closure_rank.hpp). Where it does not, the
+  // reactions and loop forces are the minimum-norm ones.
+  Determinacy determinacy = Determinacy::determinate;
 };
 
 // The largest magnitude a quantity took and when.
@@ -50,11 +60,19 @@ struct Peak {
 };
 
 // Peaks over every step the integrator took (not only the samples: a latch's
-// shock lasts milliseconds), and the largest geometric loop gap.
+// shock lasts milliseconds), and the largest geometric loop gap. The
+// reactions' peaks are kept apart where the loads are determinate and where
+// they are not (Loads::determinacy): there they are the minimum-norm ones.
 struct RunPeaks {
   std::vector<Peak> latch_torque;   // per latch, |tau_L|
-  std::vector<Peak> hinge_force;    // per joint, |f| of the reaction
-  std::vector<Peak> hinge_moment;   // per joint, |m| about the hinge point
+  std::vector<Peak> hinge_force;    // per joint, |f| of the reaction, determinate steps
+  std::vector<Peak> hinge_moment;   // per joint, |m| about the hinge point, determinate steps
+  std::vector<Peak> hinge_force_indeterminate;  // the same over the indeterminate steps
+  std::vector<Peak> hinge_moment_indeterminate;
+  // [t0, t1]: from the first to the last step of each run of indeterminate
+  // steps.
+  std::vector<std::array<double, 2>> indeterminate_spans;
+  bool loads_assessed = true;  // false if some step's were not (Determinacy::not_assessed)
   Peak gap_m, gap_rad;              // over all loops
   Peak gap_m_before_latch, gap_rad_before_latch;
 };

@@ -26,6 +26,14 @@ struct RunSummary {
   std::vector<NamedPeak> peak_latch_torque;  // per latch
   std::vector<NamedPeak> peak_hinge_force;   // per joint
   std::vector<NamedPeak> peak_hinge_moment;  // per joint
+  // Whether the motion determined every load (nullopt: not assessed, a
+  // scene with more loop components than the analysis takes); where it did
+  // not, from when to when, and the minimum-norm reactions' peaks there
+  // (the peaks above are over the rest of the run).
+  std::optional<bool> loads_determinate;
+  std::vector<std::array<double, 2>> indeterminate_spans;
+  std::vector<NamedPeak> peak_hinge_force_indeterminate;
+  std::vector<NamedPeak> peak_hinge_moment_indeterminate;
   double energy_initial = 0;
   double energy_final = 0;
   double energy_dissipated = 0;  // by dampers, friction and latches up to t_reached

@@ -1,0 +1,63 @@
+// Whether the motion determines the loop forces, and with them the loads
+// inside the loops. The loop forces act on the mechanism through J^T lambda
+// (J = eps T A); a lambda in the null space of J^T moves nothing: it is a
+// self-stress that a rigid model cannot determine. That null space is W's
+// (W = J Mtilde^-1 J^T, mobility.hpp), read off the eigenvalues of S W S,
+// the mass-weighted mobility in the closure's metric (S = 1/length on a
+// linear component, regulator.hpp), so nothing here depends on units.
+//
+// The loads reported are the rigid model's at the computed state: the loop
+// forces that hold the loops' gap acceleration at zero, W lambda = d (d the
+// gap's acceleration under every other force), not the regulator's, which
+// also carry its feedback and stored integral. They are determinate where
+// - W has full rank: no eigenvalue of S W S below kRankTolerance of the
+//   largest (there a relative error of the state at round-off moves the
+//   force along that direction by more than itself), and
+// - the regulator's loop forces, which moved the mechanism, agree with the
+//   rigid ones to kAgreement: else the motion near a branch point was made
+//   by what the regulator's regularization and gains let through, and the
+//   rigid model's answer at that state is not the mechanism's.
+// Elsewhere the minimum-norm loop forces are reported: the rigid ones with
+// their part along the weak directions of W (eigenvalues below
+// kWeakDirection of the largest, which amplify a load a thousandfold over
+// the strong ones) left out, measured in the closure's metric (a force
+// times the mechanism's length, as a torque).
+#pragma once
+
+#include <Eigen/Eigenvalues>
+
+#include "unfurl/sim/mobility.hpp"
+
+namespace unfurl::sim {
+
+class ClosureRank {
+ public:
+  // sqrt of the machine epsilon: half the digits of a force along the
+  // direction are lost to the state's round-off.
+  static constexpr double kRankTolerance = 1.5e-8;
+  static constexpr double kWeakDirection = 1e-3;
+  static constexpr double kAgreement = 1e-2;
+
+  // scale: S, one entry per component.
+  explicit ClosureRank(const Eigen::VectorXd& scale);
+
+  // The eigen-decomposition of S W S for W at the current configuration.
+  void compute(const LoopMatrix& W);
+
+  int size() const { return static_cast<int>(scale_.size()); }
+
+  // Replaces the regulator's loop forces lambda by the rigid model's for the
+  // gap acceleration d (the minimum-norm ones where they are not
+  // determinate); returns whether they are.
+  bool loop_forces(const double* d, double* lambda) const;
+
+ private:
+  using Vector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxDenseComponents, 1>;
+  Eigen::VectorXd scale_;
+  LoopMatrix SWS_;
+  Eigen::SelfAdjointEigenSolver<LoopMatrix> eigen_;
+  int rank_ = 0;  // eigenvalues above kRankTolerance of the largest
+  int weak_ = 0;  // eigenvalues below kWeakDirection of the largest
+};
+
+}  // namespace unfurl::sim

@@ -1,0 +1,101 @@
+// Loads where rigid mechanics determines them, and where it does not: the
+// pantograph's loops are redundant at its deployed branch point, so the
+// hinge forces inside them are indeterminate at and after the latch-up.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "support.hpp"
+#include "unfurl/sim/simulation.hpp"
+#include "unfurl/sim/summary.hpp"
+#include "unfurl/studies/scene_generators.hpp"
+
+namespace unfurl {
+namespace {
+
+sim::RunSummary run_pantograph(std::vector<sim::Override> overrides) {
+  overrides.push_back({"run.t_end", "7.6"});  // through the latch-up at 7.39 s
+  overrides.push_back({"run.rtol", "1e-11"});
+  const sim::Scene scene = test::scene_file("pantograph", overrides);
+  const sim::RunResult run = sim::simulate(scene, scene.run);
+  EXPECT_EQ(run.status, sim::RunStatus::finished) << sim::describe(run.failure);
+  return sim::summarize(scene, run);
+}
+
+TEST(LoadDeterminacy, DeterminateHingePeaksDoNotDependOnTheRegulatorsSettings) {
+  // Two decades of regularization up to the default (at 2e-5, ten times
+  // the default, the weak direction at the latch-up, 1e-6 of the strongest,
+  // is held ten times softer and the motion itself moves the peaks by up to
+  // 1.3e-4), a decade of bandwidth (the file's v_max is 2000 rad/s).
+  const std::vector<std::vector<sim::Override>> settings{{{"regulator.regularization", "2e-8"}},
+                                                         {{"regulator.regularization", "2e-7"}},
+                                                         {{"regulator.v_max", "700"}},
+                                                         {{"regulator.v_max", "7000"}}};
+  const sim::RunSummary nominal = run_pantograph({});
+  ASSERT_EQ(nominal.loads_determinate, std::optional<bool>(false));
+  // The latch-up (all eight latches at 7.392 s) passes the branch point.
+  const auto covers = [](const sim::RunSummary& s, double t) {
+    return std::any_of(s.indeterminate_spans.begin(), s.indeterminate_spans.end(),
+                       [t](const auto& span) { return span[0] <= t && t <= span[1]; });
+  };
+  EXPECT_TRUE(covers(nominal, 7.5));
+  for (const auto& overrides : settings) {
+    const sim::RunSummary other = run_pantograph(overrides);
+    for (std::size_t j = 0; j < nominal.peak_hinge_force.size(); ++j) {
+      const double a = nominal.peak_hinge_force[j].peak.value, b = other.peak_hinge_force[j].peak.value;
+      EXPECT_NEAR(b, a, 1e-4 * a) << overrides[0].path << " = " << overrides[0].value << ", "
+                                  << nominal.peak_hinge_force[j].joint;
+    }
+  }
+  // The peak of the rigid model at the latch-up, as two independent
+  // engines have it.
+  EXPECT_NEAR(nominal.peak_hinge_force[0].peak.value, 162.76, 0.01);
+}
+
+TEST(LoadDeterminacy, AnAsymmetricLatchUpReportsMinimumNormLoadsNotTheRegulatorsSelfStress) {
+  // One spring 2 % stiffer: the regulator's own loop forces peak near
+  // 76 kN there, set by its regularization (442 kN at 1e-7, 11 kN at 1e-4).
+  const sim::RunSummary nominal = run_pantograph({});
+  for (const char* regularization : {"2e-7", "2e-5"}) {
+    const sim::RunSummary off = run_pantograph(
+        {{"springs.j1.stiffness", "0.102"}, {"regulator.regularization", regularization}});
+    ASSERT_EQ(off.loads_determinate, std::optional<bool>(false));
+    for (std::size_t j = 0; j < off.peak_hinge_force_indeterminate.size(); ++j)
+      EXPECT_LT(off.peak_hinge_force_indeterminate[j].peak.value, 5 * nominal.peak_hinge_force[0].peak.value)
+          << off.peak_hinge_force_indeterminate[j].joint << " at regularization " << regularization;
+  }
+}
+
+TEST(LoadDeterminacy, AFourBarAwayFromItsSingularPositionsIsDeterminate) {
+  const sim::Scene scene = test::scene_file("fourbar", {{"run.t_end", "1"}});
+  const sim::RunResult run = sim::simulate(scene, scene.run);
+  const sim::RunSummary s = sim::summarize(scene, run);
+  EXPECT_EQ(s.loads_determinate, std::optional<bool>(true));
+  EXPECT_TRUE(s.indeterminate_spans.empty());
+  for (const sim::Sample& sample : run.trajectory.samples)
+    EXPECT_EQ(sample.loads.determinacy, sim::Determinacy::determinate) << sample.t;
+}
+
+TEST(LoadDeterminacy, ParallelRodsAreIndeterminateAtTheirFlatPositions) {
+  // One rod: a four-bar with the mobility jumping to 2 at the flat
+  // position; its loads there are indeterminate, elsewhere determinate.
+  const sim::SceneFile file = studies::generate_parallel_rods(1);
+  const sim::RunResult run = sim::simulate(file.scene, file.scene.run);
+  const sim::RunSummary s = sim::summarize(file.scene, run);
+  ASSERT_EQ(s.loads_determinate, std::optional<bool>(false));
+  double indeterminate = 0;
+  for (const auto& span : s.indeterminate_spans) indeterminate += span[1] - span[0];
+  EXPECT_LT(indeterminate, 0.1 * file.scene.run.t_end) << "only near the flat positions";
+  for (const sim::Sample& sample : run.trajectory.samples) {
+    const double crank = studies::parallel_rods_angles(file.scene, sample.t)[0];
+    if (std::abs(std::sin(crank)) > 0.2) {
+      EXPECT_EQ(sample.loads.determinacy, sim::Determinacy::determinate) << sample.t;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace unfurl
