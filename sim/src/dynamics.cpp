@@ -271,12 +271,14 @@ bool Dynamics::loads(double, const double* y, Loads& out, std::vector<ClosureErr
   add_element_forces(q, w);
   out.determinacy = Determinacy::determinate;
   if (regulator_ && closure_rank_) {
-    sweep_.accelerations(v_, w, F_, Q_joint_.data(), bias_, a_, ddq_.data());
-    regulator_->residual_rate(a_, d_.data());
+    if (!regulator_->uses_feedforward()) {  // else evaluate() left d in d_
+      sweep_.accelerations(v_, w, F_, Q_joint_.data(), bias_, a_, ddq_.data());
+      regulator_->residual_rate(a_, d_.data());
+      add_element_forces(q, w);
+    }
     closure_rank_->compute(regulator_->mobility(sweep_));
     // lambda_ holds the regulator's loop forces, which moved the mechanism.
     if (!closure_rank_->loop_forces(d_.data(), lambda_.data())) out.determinacy = Determinacy::indeterminate;
-    add_element_forces(q, w);
   } else if (regulator_) {
     out.determinacy = Determinacy::not_assessed;
   }
