@@ -155,10 +155,12 @@ TEST(StudyCases, EditsOfACaseGoOverItsValues) {
 
 // The runs of injected failures: the array deploys without one spring; a
 // stuck root hinge holds the whole (one-degree-of-freedom) array stowed; a
-// failed latch leaves its joint unlatched and the case not deployed.
+// failed latch leaves its joint unlatched and the case not deployed. At
+// rtol 1e-7 the deployment time is within 4e-6 s of a tight run's (at
+// 1e-6 it scatters by 1e-5 s with the step sequence).
 TEST(StudyCases, FailedCasesReportWhatHappened) {
   const studies::Study study = study_from(
-      "scene: pantograph\nset: {run.rtol: 1.0e-6, run.atol: 1.0e-9, run.t_end: 9}\n"
+      "scene: pantograph\nset: {run.rtol: 1.0e-7, run.atol: 1.0e-9, run.t_end: 9}\n"
       "failures:\n  - {latch_fails: j3}\n  - {stuck: j1}\n  - {extra_friction: j1, coulomb: 0.05}\n");
   const sim::Scene nominal = studies::nominal_scene(study).scene;
   const studies::CaseColumns columns = studies::case_columns(study, nominal);
@@ -167,6 +169,12 @@ TEST(StudyCases, FailedCasesReportWhatHappened) {
       studies::case_result(study, nominal, cases[0], studies::simulate_case(study, cases[0]));
   EXPECT_EQ(ok.status, studies::CaseStatus::deployed);
   EXPECT_NEAR(studies::output_value(columns, ok, "deployment_time"), 7.3921759, 1e-5);
+  // Its latched loops are redundant (the deployed branch point): the case
+  // says so, with the minimum-norm peak there.
+  EXPECT_EQ(studies::output_value(columns, ok, "loads_determinate"), 0.0);
+  EXPECT_LT(studies::output_value(columns, ok, "indeterminate_from"), 7.393);
+  EXPECT_GT(studies::output_value(columns, ok, "indeterminate_time"), 1.0);
+  EXPECT_GT(studies::output_value(columns, ok, "peak_hinge_force_indeterminate"), 100.0);
   const studies::CaseResult latch =
       studies::case_result(study, nominal, cases[1], studies::simulate_case(study, cases[1]));
   EXPECT_EQ(latch.status, studies::CaseStatus::not_deployed);

@@ -226,6 +226,38 @@ void write_study_summary_json(const StudyReport& report, const std::string& path
   file.commit();
 }
 
+namespace {
+
+// The cases whose loads rigid mechanics cannot determine somewhere
+// (CaseResult's loads_determinate = 0), counted and listed.
+void write_indeterminate_loads(const StudyReport& report, std::ostream& md) {
+  const auto value = [&](const studies::CaseResult& r, const char* name) {
+    return studies::output_value(report.columns, r, name);
+  };
+  long indeterminate = 0, assessed = 0;
+  for (const studies::CaseResult& r : report.results) {
+    const double determinate = value(r, "loads_determinate");
+    assessed += !std::isnan(determinate);
+    indeterminate += determinate == 0;
+  }
+  if (indeterminate == 0) return;
+  md << "\n## Loads that rigid mechanics cannot determine\n\n**Warning:** in " << indeterminate << " of " << assessed
+     << " cases the hinge loads are indeterminate over part of the run: the rigid loops are redundant there (as at "
+        "a deployed branch point), or so near it that the regulator's forces depart from the rigid ones. The "
+        "peak hinge forces and moments above and in cases.csv cover only the determinate steps; inside the spans "
+        "the reactions are the minimum-norm ones (peak_hinge_force_indeterminate), and compliance in the loops "
+        "determines them.\n\n| case | status | indeterminate for, s | first from, s | minimum-norm peak hinge "
+        "force, N |\n|---|---|---:|---:|---:|\n";
+  for (const studies::CaseResult& r : report.results) {
+    if (value(r, "loads_determinate") != 0) continue;
+    md << "| " << r.id << " | " << studies::case_status_name(r.status) << " | " << fmt(value(r, "indeterminate_time"))
+       << " | " << fmt(value(r, "indeterminate_from")) << " | " << fmt(value(r, "peak_hinge_force_indeterminate"))
+       << " |\n";
+  }
+}
+
+}  // namespace
+
 void write_study_markdown(const StudyReport& report, const std::vector<std::string>& pictures,
                           const std::string& path) {
   const studies::StudyStatistics& st = report.statistics;
@@ -273,6 +305,7 @@ void write_study_markdown(const StudyReport& report, const std::vector<std::stri
     md << "\nThe deployment time is driven most by `" << d.input << "` (rho = " << fmt(d.rho) << ": "
        << (d.rho < 0 ? "a larger value deploys sooner" : "a larger value deploys later") << ").\n";
   }
+  write_indeterminate_loads(report, md);
   bool any_failure = false;
   for (const studies::CaseResult& r : report.results)
     any_failure = any_failure || !r.failure.empty() || r.status != studies::CaseStatus::deployed;

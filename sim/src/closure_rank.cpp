@@ -17,22 +17,37 @@ void ClosureRank::compute(const LoopMatrix& W) {
   }
 }
 
-bool ClosureRank::loop_forces(const double* d, double* lambda) const {
+ClosureRank::Vector ClosureRank::rigid(const double* d) const {
   // In the closure's metric: (S W S) lambda~ = S d with lambda = S lambda~,
   // solved on the eigenvectors of S W S.
   const int m = size();
   const auto& V = eigen_.eigenvectors();
   const auto& Lambda = eigen_.eigenvalues();
   Vector Sd = scale_.cwiseProduct(Eigen::Map<const Eigen::VectorXd>(d, m));
-  Vector rigid = Vector::Zero(m);
-  for (int i = rank_ == m ? 0 : weak_; i < m; ++i) rigid += (V.col(i).dot(Sd) / Lambda[i]) * V.col(i);
+  Vector lambda_tilde = Vector::Zero(m);
+  for (int i = rank_ == m ? 0 : weak_; i < m; ++i) lambda_tilde += (V.col(i).dot(Sd) / Lambda[i]) * V.col(i);
+  return lambda_tilde;
+}
+
+void ClosureRank::rigid_loop_forces(const double* d, double* lambda) const {
+  Eigen::Map<Eigen::VectorXd>(lambda, size()) = scale_.cwiseProduct(rigid(d));
+}
+
+bool ClosureRank::loop_forces(const double* d, double* lambda) const {
+  const int m = size();
+  const auto& V = eigen_.eigenvectors();
+  Vector lambda_tilde = rigid(d);
   Eigen::Map<Eigen::VectorXd> l(lambda, m);
   const Vector regulated = l.cwiseQuotient(scale_);
-  bool determinate = rank_ == m && (regulated - rigid).norm() <= kAgreement * rigid.norm();
+  // Only along the weak directions: along the strong ones a difference is
+  // the regulator's feedback on the integrator's error in the gap, which
+  // leaves the rigid forces at the state as they are.
+  const Vector departure = V.leftCols(weak_).transpose() * (regulated - lambda_tilde);
+  bool determinate = rank_ == m && departure.norm() <= kAgreement * lambda_tilde.norm();
   if (!determinate && rank_ == m) {  // the minimum-norm forces: without the weak directions
-    for (int i = 0; i < weak_; ++i) rigid -= V.col(i).dot(rigid) * V.col(i);
+    for (int i = 0; i < weak_; ++i) lambda_tilde -= V.col(i).dot(lambda_tilde) * V.col(i);
   }
-  l = scale_.cwiseProduct(rigid);
+  l = scale_.cwiseProduct(lambda_tilde);
   return determinate;
 }
 

@@ -131,7 +131,17 @@ std::vector<double> Dynamics::initial_state() {
     }
     sweep_.generalized_forces(F_, y.data() + layout_.p());
   }
+  if (regulator_ && closure_rank_ && regulator_->uses_feedforward()) start_integral_at_rest(y.data());
   return y;
+}
+
+void Dynamics::start_integral_at_rest(double* y) {
+  // evaluate() leaves the loops' acceleration d under every other force.
+  if (!evaluate(y, ydot_.data(), Regulator::Gains::current)) return;
+  const LoopMatrix& W = regulator_->mobility(sweep_);
+  closure_rank_->compute(W);
+  closure_rank_->rigid_loop_forces(d_.data(), lambda_.data());
+  regulator_->integral_at_rest(W, lambda_.data(), d_.data(), y + layout_.u());
 }
 
 ElementState Dynamics::element_state(std::size_t k, const double* q, const double* w, const std::vector<Pose>& poses,

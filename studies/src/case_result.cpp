@@ -43,6 +43,19 @@ void record_overlay(const Study& study, const sim::Scene& scene, const sim::Traj
   }
 }
 
+// loads_determinate (1, 0, or NaN where not assessed), the time inside
+// indeterminate spans, where the first begins, and the largest
+// minimum-norm hinge force there (RunPeaks).
+void append_determinacy(const sim::RunPeaks& peaks, double peak_indeterminate_force, std::vector<double>& outputs) {
+  const auto& spans = peaks.indeterminate_spans;
+  double time = 0;
+  for (const auto& span : spans) time += span[1] - span[0];
+  outputs.push_back(!peaks.loads_assessed ? kNaN : spans.empty() ? 1.0 : 0.0);
+  outputs.push_back(peaks.loads_assessed ? time : kNaN);
+  outputs.push_back(spans.empty() ? kNaN : spans.front()[0]);
+  outputs.push_back(spans.empty() ? kNaN : peak_indeterminate_force);
+}
+
 }  // namespace
 
 const char* case_status_name(CaseStatus status) {
@@ -65,7 +78,8 @@ std::string output_unit(const std::string& output) {
   static const std::vector<std::pair<std::string, std::string>> units{
       {"deployment_time", "s"},     {"latch_time", "s"},          {"wall_time", "s"},
       {"peak_latch_torque", "N m"}, {"peak_hinge_moment", "N m"}, {"peak_hinge_force", "N"},
-      {"max_closure_gap", "m"},     {"max_closure_angle", "rad"}, {"final_energy", "J"}};
+      {"max_closure_gap", "m"},     {"max_closure_angle", "rad"}, {"final_energy", "J"},
+      {"indeterminate_time", "s"},  {"indeterminate_from", "s"},  {"peak_hinge_force_indeterminate", "N"}};
   for (const auto& [name, unit] : units)
     if (quantity == name) return unit;
   return "";
@@ -76,6 +90,8 @@ CaseColumns case_columns(const Study& study, const sim::Scene& nominal) {
   for (const StudyVariable& v : study.variables) c.inputs.push_back(v.label());
   c.outputs = CaseColumns::headline();
   c.outputs.push_back("max_closure_angle");
+  for (const char* name : {"loads_determinate", "indeterminate_time", "indeterminate_from", "peak_hinge_force_indeterminate"})
+    c.outputs.push_back(name);
   for (const std::string& j : latch_joints(nominal)) c.outputs.push_back("latch_time." + j);
   for (const std::string& j : latch_joints(nominal)) c.outputs.push_back("peak_latch_torque." + j);
   for (const sim::Joint& j : nominal.model.joints) c.outputs.push_back("peak_hinge_force." + j.name);
@@ -126,10 +142,12 @@ CaseResult case_result(const Study& study, const sim::Scene& nominal, const Stud
       if (!std::isnan(v) && !(v <= m)) m = v;
     return m;
   };
-  std::vector<double> forces, moments;
+  std::vector<double> forces, moments, indeterminate_forces;
   for (std::size_t j = 0; j < nominal.model.joints.size(); ++j) {
     forces.push_back(j < rr.peaks.hinge_force.size() ? rr.peaks.hinge_force[j].value : kNaN);
     moments.push_back(j < rr.peaks.hinge_moment.size() ? rr.peaks.hinge_moment[j].value : kNaN);
+    indeterminate_forces.push_back(
+        j < rr.peaks.hinge_force_indeterminate.size() ? rr.peaks.hinge_force_indeterminate[j].value : kNaN);
   }
   const double deployment = r.status == CaseStatus::deployed && !times.empty() ? largest(times) : kNaN;
   r.outputs = {deployment,
@@ -139,6 +157,7 @@ CaseResult case_result(const Study& study, const sim::Scene& nominal, const Stud
                scene.loops.empty() ? kNaN : rr.peaks.gap_m.value,
                tr.empty() ? kNaN : tr.samples.back().energy.total(),
                scene.loops.empty() ? kNaN : rr.peaks.gap_rad.value};
+  append_determinacy(rr.peaks, largest(indeterminate_forces), r.outputs);
   r.outputs.insert(r.outputs.end(), times.begin(), times.end());
   r.outputs.insert(r.outputs.end(), torques.begin(), torques.end());
   r.outputs.insert(r.outputs.end(), forces.begin(), forces.end());

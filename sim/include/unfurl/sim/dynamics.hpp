@@ -81,7 +81,9 @@ class Dynamics {
   // (state_scale_of): what tolerances and difference steps are measured in.
   const std::vector<double>& state_scale() const { return state_scale_; }
 
-  // The initial state: q0, p0 (from dq0 when no p0 is given), u0 = 0.
+  // The initial state: q0, p0 (from dq0 when no p0 is given) and the
+  // regulator state where its integral settles at q0 (Regulator::
+  // integral_at_rest; 0 without the full tuning's feedforward).
   std::vector<double> initial_state();
 
   // y' = f(t, y). False where the result is not finite or the closure
@@ -142,6 +144,9 @@ class Dynamics {
   void configure(const double* q);
   bool evaluate(const double* y, double* ydot, Regulator::Gains gains);
   void add_element_forces(const double* q, const double* w);
+  // Sets y's regulator state to where its integral settles under the rigid
+  // loop forces (Regulator::integral_at_rest).
+  void start_integral_at_rest(double* y);
 
   const Scene scene_;
   StateLayout layout_;

@@ -120,6 +120,14 @@ class Regulator {
   long factorizations() const { return factorizations_; }
   long factorized_configuration() const { return factorized_configuration_; }
 
+  // The integral state u at which (12) gives the loop forces `lambda` with
+  // the loop closed and at rest (g = g' = 0): v^2 u + d = R lambda. With
+  // the rigid forces (W lambda = d) it is u = Delta lambda / v^2, where
+  // the integral settles; starting there, the regulator's forces are the
+  // rigid ones from t = 0 instead of lagging them by Delta's share while
+  // the integral builds up. Full tuning with feedforward only.
+  void integral_at_rest(const LoopMatrix& W, const double* lambda, const double* d, double* u) const;
+
   // Adds -eps^T lambda to the body forces.
   void apply(const double* lambda, std::vector<Vec6>& F) const;
 
