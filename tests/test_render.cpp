@@ -139,6 +139,32 @@ TEST_F(Render, AnglePlotOfARunKeepsItsCurvesInsideTheAxes) {
   EXPECT_DOUBLE_EQ(frame.x_max, 10.0);
 }
 
+TEST_F(Render, LoadsPlotShadesWhereTheLoadsAreIndeterminate) {
+  // The pantograph's loads are determinate until its latch-up at 7.392 s,
+  // where the loops reach their deployed branch point; the plot shades the
+  // samples (every 0.01 s) whose loads are not, from 7.43 s on (the
+  // latch-up's own peak at 7.400 s is determinate).
+  const sim::Scene scene = test::scene_file("pantograph", {{"run.t_end", "8"}});
+  const sim::RunResult run = sim::simulate(scene, scene.run);
+  const render::PlotSpec spec = render::trajectory_plot(render::PlotKind::loads, scene, run.trajectory);
+  ASSERT_FALSE(spec.shaded.empty());
+  EXPECT_GT(spec.shaded.front().first, 7.38);
+  EXPECT_LT(spec.shaded.front().first, 7.45);
+  EXPECT_DOUBLE_EQ(spec.shaded.back().second, 8.0);
+  render::PlotRenderer plotter(640, 360);
+  Image image;
+  const render::PlotFrame frame = plotter.draw(spec, image);
+  const auto pixel = [&](double t) {
+    const ImVec2 at = frame.to_screen(t, 0);
+    return image.pixel(static_cast<int>(at.x), static_cast<int>(frame.plot_min.y) + 3);
+  };
+  const std::uint8_t* before = pixel(3.3);
+  const std::uint8_t* inside = pixel(7.7);
+  EXPECT_EQ(before[0] + before[1] + before[2], 3 * 255);  // the white background
+  EXPECT_LT(inside[2], 235);                              // shaded amber
+  EXPECT_GT(inside[0], inside[2]);
+}
+
 TEST_F(Render, LogLogPlotPlacesDecadesAndMarkers) {
   render::PlotSpec spec;
   spec.title = "error against run time";

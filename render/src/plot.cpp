@@ -10,15 +10,17 @@ namespace unfurl::render {
 namespace {
 
 struct Theme {
-  ImU32 background, frame, grid, text, muted, event;
+  ImU32 background, frame, grid, text, muted, event, shade;
 };
 
 Theme theme(bool light) {
   if (light)
     return {IM_COL32(255, 255, 255, 255), IM_COL32(40, 40, 40, 255), IM_COL32(225, 225, 228, 255),
-            IM_COL32(20, 20, 20, 255),    IM_COL32(90, 90, 90, 255), IM_COL32(200, 60, 60, 200)};
+            IM_COL32(20, 20, 20, 255),    IM_COL32(90, 90, 90, 255), IM_COL32(200, 60, 60, 200),
+            IM_COL32(240, 170, 40, 60)};
   return {IM_COL32(28, 30, 36, 255),    IM_COL32(170, 170, 175, 255), IM_COL32(55, 58, 66, 255),
-          IM_COL32(230, 230, 230, 255), IM_COL32(160, 160, 165, 255), IM_COL32(240, 110, 110, 200)};
+          IM_COL32(230, 230, 230, 255), IM_COL32(160, 160, 165, 255), IM_COL32(240, 110, 110, 200),
+          IM_COL32(240, 170, 40, 55)};
 }
 
 // A tick's label with the digits its step needs: neighbours differ even on
@@ -180,6 +182,7 @@ void draw_legend(ImDrawList* draw, const PlotFrame& f, const PlotSpec& spec, con
     ImU32 color;
     bool dashed;
     bool dot = false;  // a scatter's series: a dot, not a line
+    bool box = false;  // a shaded span
   };
   std::vector<Entry> entries, runs;
   for (const Series& s : spec.series) {
@@ -197,6 +200,7 @@ void draw_legend(ImDrawList* draw, const PlotFrame& f, const PlotSpec& spec, con
                     !s.lines});
   }
   entries.insert(entries.end(), runs.begin(), runs.end());
+  if (!spec.shaded.empty()) entries.push_back({spec.shaded_label, th.shade, false, false, true});
   if (!spec.events.empty()) entries.push_back({spec.event_label, th.event, true});
   if (entries.empty()) return;
   // As many entries as fit: in columns when a short plot has more curves
@@ -244,7 +248,9 @@ void draw_legend(ImDrawList* draw, const PlotFrame& f, const PlotSpec& spec, con
     }
     const Entry& e = entries[k];
     const ImVec2 a(x, y + line / 2), b(a.x + swatch, a.y);
-    if (e.dot)
+    if (e.box)
+      draw->AddRectFilled(ImVec2(a.x, a.y - 0.35f * font), ImVec2(b.x, a.y + 0.35f * font), e.color | 0x60000000);
+    else if (e.dot)
       draw->AddCircleFilled(ImVec2(0.5f * (a.x + b.x), a.y), 0.22f * font, e.color);
     else if (e.dashed)
       dashed_line(draw, a, b, e.color, e.color == th.event ? 1.5f : 2.5f, 4);
@@ -400,6 +406,11 @@ PlotFrame draw_plot(ImDrawList* draw, ImVec2 origin, ImVec2 size, const PlotSpec
 
   // Curves, clipped to the axes.
   draw->PushClipRect(f.plot_min, f.plot_max, true);
+  for (const auto& [a, b] : spec.shaded) {
+    // At least two pixels: a single sample's span stays visible.
+    const float sa = f.to_screen(a, spec.log_y ? 1 : y0).x, sb = f.to_screen(b, spec.log_y ? 1 : y0).x;
+    draw->AddRectFilled(ImVec2(std::min(sa, sb - 2.0f), f.plot_min.y), ImVec2(sb, f.plot_max.y), th.shade);
+  }
   for (const double e : spec.events) {
     const float sx = f.to_screen(e, spec.log_y ? 1 : y0).x;
     dashed_line(draw, ImVec2(sx, f.plot_min.y), ImVec2(sx, f.plot_max.y), th.event, 1.5f, 6);

@@ -141,6 +141,23 @@ void add_curves(PlotSpec& spec, PlotKind kind, const sim::Scene& scene, const si
   }
 }
 
+// The spans of samples whose loads are indeterminate, each sample covering
+// half the way to its neighbours.
+std::vector<std::pair<double, double>> indeterminate_spans(const sim::Trajectory& tr) {
+  std::vector<std::pair<double, double>> spans;
+  const auto& samples = tr.samples;
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    if (samples[k].loads.determinacy != sim::Determinacy::indeterminate) continue;
+    const double a = k > 0 ? 0.5 * (samples[k - 1].t + samples[k].t) : samples[k].t;
+    const double b = k + 1 < samples.size() ? 0.5 * (samples[k].t + samples[k + 1].t) : samples[k].t;
+    if (!spans.empty() && spans.back().second >= a)
+      spans.back().second = b;
+    else
+      spans.emplace_back(a, b);
+  }
+  return spans;
+}
+
 }  // namespace
 
 PlotSpec trajectory_plot(PlotKind kind, const sim::Scene& scene, const sim::Trajectory& trajectory,
@@ -182,6 +199,10 @@ PlotSpec trajectory_plot(PlotKind kind, const sim::Scene& scene, const sim::Traj
   add_curves(spec, kind, scene, trajectory, nullptr, choice);
   for (const sim::LatchEvent& e : trajectory.events)
     if (spec.events.empty() || std::abs(spec.events.back() - e.t) > 1e-6) spec.events.push_back(e.t);
+  if (kind == PlotKind::loads) {
+    spec.shaded = indeterminate_spans(trajectory);
+    spec.shaded_label = "loads indeterminate (minimum-norm)";
+  }
   return spec;
 }
 

@@ -30,6 +30,10 @@ struct PlotSpec {
   std::vector<double> events;    // x of vertical markers (latches)
   std::string event_label = "latch";
   std::string ghost_label = "previous run";  // the legend's one entry for the ghost series
+  // x spans shaded behind the curves (where the loads are indeterminate),
+  // with one legend entry.
+  std::vector<std::pair<double, double>> shaded;
+  std::string shaded_label;
   std::optional<double> cursor;  // x of the play-head
   // The span of x shown (a zoom, linear axes); y then fits the data inside it.
   std::optional<std::pair<double, double>> x_range;
