@@ -49,6 +49,16 @@ void expect_unit_invariant(const sim::SceneFile& original, double steps_until) {
     const double base_steps = sim::simulate(original.scene, until).stats.steps;
     EXPECT_NEAR(steps, base_steps, 0.3 * base_steps) << units;
     EXPECT_EQ(run.trajectory.events.size(), base.trajectory.events.size()) << units;
+    // Forces scale with M L (time unchanged): the determinate hinge peaks,
+    // and where the loads stop being determinate.
+    for (std::size_t j = 0; j < base.peaks.hinge_force.size(); ++j) {
+      const double a = base.peaks.hinge_force[j].value, b = run.peaks.hinge_force[j].value / (M * L);
+      EXPECT_NEAR(b, a, 1e-4 * a) << units << ", joint " << j;
+    }
+    ASSERT_EQ(run.peaks.indeterminate_spans.empty(), base.peaks.indeterminate_spans.empty()) << units;
+    if (!base.peaks.indeterminate_spans.empty()) {
+      EXPECT_NEAR(run.peaks.indeterminate_spans[0][0], base.peaks.indeterminate_spans[0][0], 1e-3) << units;
+    }
     ASSERT_TRUE(run.closure && base.closure);
     // The closure's own scales follow the units; its tuning does not.
     EXPECT_NEAR(run.closure->length, L * base.closure->length, 1e-12 * L * base.closure->length) << units;
