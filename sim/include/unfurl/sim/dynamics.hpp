@@ -83,7 +83,9 @@ class Dynamics {
 
   // The initial state: q0, p0 (from dq0 when no p0 is given) and the
   // regulator state where its integral settles at q0 (Regulator::
-  // integral_at_rest; 0 without the full tuning's feedforward).
+  // integral_at_rest; 0 without the full tuning's feedforward, or beyond
+  // kMaxDenseComponents components, where the rigid forces are not solved
+  // for).
   std::vector<double> initial_state();
 
   // y' = f(t, y). False where the result is not finite or the closure
