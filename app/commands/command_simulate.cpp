@@ -61,13 +61,12 @@ void print_hinge_force_peaks(const sim::RunSummary& s) {
     return;
   }
   if (*s.loads_determinate) return;
-  double duration = 0;
-  for (const auto& span : s.indeterminate_spans) duration += span[1] - span[0];
   std::printf("warning      loads indeterminate from t = %.6f s to %.6f s (%zu spans, %.4g s in all): the rigid\n"
               "             loops are redundant there, or so near it that the regulator's forces depart from\n"
               "             the rigid ones; the reactions inside them are the minimum-norm ones there, and\n"
               "             compliance in the loops determines them\n",
-              s.indeterminate_spans.front()[0], s.indeterminate_spans.back()[1], s.indeterminate_spans.size(), duration);
+              s.indeterminate_spans.front()[0], s.indeterminate_spans.back()[1], s.indeterminate_spans.size(),
+              sim::total_time(s.indeterminate_spans));
   if (const auto* p = largest(s.peak_hinge_force_indeterminate))
     std::printf("             peak minimum-norm hinge force %.4g N at %s, t = %.6f s\n", p->peak.value, p->joint.c_str(),
                 p->peak.t);

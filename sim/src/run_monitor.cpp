@@ -12,7 +12,6 @@ RunMonitor::RunMonitor(Dynamics& dynamics) : dynamics_(dynamics) {
   peaks_.hinge_moment_indeterminate.resize(dynamics.model().size());
 }
 
-
 std::optional<double> RunMonitor::observe(double t, const double* y) {
   if (!dynamics_.loads(t, y, loads_, &closure_)) return std::nullopt;
   for (int l = 0; l < dynamics_.latch_count(); ++l)

@@ -48,10 +48,8 @@ void record_overlay(const Study& study, const sim::Scene& scene, const sim::Traj
 // minimum-norm hinge force there (RunPeaks).
 void append_determinacy(const sim::RunPeaks& peaks, double peak_indeterminate_force, std::vector<double>& outputs) {
   const auto& spans = peaks.indeterminate_spans;
-  double time = 0;
-  for (const auto& span : spans) time += span[1] - span[0];
   outputs.push_back(!peaks.loads_assessed ? kNaN : spans.empty() ? 1.0 : 0.0);
-  outputs.push_back(peaks.loads_assessed ? time : kNaN);
+  outputs.push_back(peaks.loads_assessed ? sim::total_time(spans) : kNaN);
   outputs.push_back(spans.empty() ? kNaN : spans.front()[0]);
   outputs.push_back(spans.empty() ? kNaN : peak_indeterminate_force);
 }

@@ -77,6 +77,9 @@ struct RunPeaks {
   Peak gap_m_before_latch, gap_rad_before_latch;
 };
 
+// The time inside spans [t0, t1] (RunPeaks::indeterminate_spans).
+double total_time(const std::vector<std::array<double, 2>>& spans);
+
 // The name of loop component axis a: fx, fy, fz, mx, my, mz.
 const char* wrench_component_name(int axis);
 
