@@ -1,5 +1,6 @@
 // unfurl simulate: run a scene and write trajectory.csv, events.csv and
 // summary.json.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -72,6 +73,25 @@ void print_hinge_force_peaks(const sim::RunSummary& s) {
                 p->peak.t);
 }
 
+// Each element peak quantity's largest (a bushing's force), by name.
+void print_element_peaks(const sim::RunSummary& s) {
+  std::vector<const sim::RunSummary::ElementPeakValue*> largest_of;
+  for (const auto& e : s.element_peaks) {
+    if (std::isnan(e.peak.t)) continue;
+    auto same = std::find_if(largest_of.begin(), largest_of.end(), [&](auto* o) { return o->quantity == e.quantity; });
+    if (same == largest_of.end())
+      largest_of.push_back(&e);
+    else if (e.peak.value > (*same)->peak.value)
+      *same = &e;
+  }
+  for (const auto* e : largest_of) {
+    std::string what = e->quantity.substr(e->quantity.rfind("peak_", 0) == 0 ? 5 : 0);
+    std::replace(what.begin(), what.end(), '_', ' ');
+    std::printf("             peak %s %.4g %s at %s, t = %.6f s\n", what.c_str(), e->peak.value, e->unit.c_str(),
+                e->name.c_str(), e->peak.t);
+  }
+}
+
 void print_summary(const sim::Scene& scene, const sim::RunResult& result, const sim::RunSummary& s,
                    const std::string& dir) {
   const sim::RunSettings& run = result.settings;
@@ -102,6 +122,7 @@ void print_summary(const sim::Scene& scene, const sim::RunResult& result, const 
     std::printf("loads        peak latch torque %.4g N m at %s, t = %.6f s\n", latch->peak.value, latch->joint.c_str(),
                 latch->peak.t);
   print_hinge_force_peaks(s);
+  print_element_peaks(s);
   std::printf("energy       %.9g J at t = 0, %.9g J at t = %g s, %.9g J dissipated\n", s.energy_initial, s.energy_final,
               s.t_reached, s.energy_dissipated);
   if (s.free_bus)

@@ -254,10 +254,13 @@ class Writer {
   }
 
   void equalities() {
-    if (scene_.loops.empty()) return;
+    const std::vector<const sim::Bushing*> bushings = scene_.elements_of<sim::Bushing>();
+    if (scene_.loops.empty() && bushings.empty()) return;
     out_ << "  <!-- The loops: each image's joint becomes a point constraint at its pivot,\n"
-         << "       as stiff as MuJoCo allows: it raises the time constant to twice the\n"
-         << "       timestep (refsafe); impedance 0.9999. -->\n  <equality>\n";
+         << "       and each bushing one at its frame b (MJCF has no six-component spring\n"
+         << "       between bodies), as stiff as MuJoCo allows: it raises the time constant\n"
+         << "       to twice the timestep (refsafe); impedance 0.9999. -->\n  <equality>\n";
+    for (const sim::Bushing* b : bushings) bushing(*b);
     for (const sim::Loop& loop : scene_.loops) {
       const sim::Joint& pivot = model_.joints[loop.image];
       // The pivot in the split body's frame: the image's hinge point.
@@ -272,6 +275,23 @@ class Writer {
           unsupported("a " + e->kind() + " on the loop joint '" + pivot.name + "' (it became a connect constraint)");
     }
     out_ << "  </equality>\n";
+  }
+
+  // A bushing becomes a point constraint at frame b's origin, as stiff as
+  // MuJoCo allows: MJCF has no six-component spring between bodies, and a
+  // soft equality's stiffness (solref < 0) is per unit of effective mass,
+  // not N/m, so no setting reproduces the bushing's.
+  void bushing(const sim::Bushing& b) {
+    const auto on = [&](const sim::BushingFrame& f) {
+      return f.body == sim::kBase ? std::pair{sim::kBase, f.point} : written_point(f.body, f.point);
+    };
+    const int body_a = on(b.a).first;
+    const auto [body_b, point_b] = on(b.b);
+    const auto name = [&](int i) { return i == sim::kBase ? std::string("world") : model_.bodies[i].name; };
+    out_ << "    <connect name=\"" << b.name << "\" body1=\"" << name(body_b) << "\" body2=\"" << name(body_a)
+         << "\" anchor=\"" << vec(point_b) << "\" solref=\"1e-9 1\" solimp=\"0.9999 0.9999 0.001 0.5 2\"/>\n";
+    unsupported("the bushing '" + b.name +
+                "' became a rigid point constraint: its stiffness, damping, rotational stiffness and preload are lost");
   }
 
   void latches() {
@@ -322,7 +342,7 @@ class Writer {
     return dynamic_cast<const sim::JointSpring*>(&e) || dynamic_cast<const sim::JointDamper*>(&e) ||
            dynamic_cast<const sim::JointFriction*>(&e) || dynamic_cast<const sim::Latch*>(&e) ||
            dynamic_cast<const sim::PointSpring*>(&e) || dynamic_cast<const sim::Gravity*>(&e) ||
-           dynamic_cast<const sim::AppliedForce*>(&e);
+           dynamic_cast<const sim::AppliedForce*>(&e) || dynamic_cast<const sim::Bushing*>(&e);
   }
 
   void unsupported(const std::string& what) {

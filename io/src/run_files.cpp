@@ -184,6 +184,15 @@ void write_events_csv(const sim::Scene& scene, const sim::Trajectory& trajectory
 
 namespace {
 
+// The element peaks' quantities, each once, in order.
+std::vector<std::string> element_peak_quantities(const sim::RunSummary& summary) {
+  std::vector<std::string> quantities;
+  for (const auto& e : summary.element_peaks)
+    if (std::find(quantities.begin(), quantities.end(), e.quantity) == quantities.end())
+      quantities.push_back(e.quantity);
+  return quantities;
+}
+
 // "units": the unit of every number above with one; per joint where
 // joints differ (a slider's force is in N where a hinge's torque is in N m).
 void write_summary_units(JsonWriter& json, const sim::Scene& scene, const sim::RunSummary& summary) {
@@ -209,6 +218,12 @@ void write_summary_units(JsonWriter& json, const sim::Scene& scene, const sim::R
   json.value("peak_hinge_force", "N").value("peak_hinge_moment", "N m");
   json.value("peak_hinge_force_indeterminate", "N").value("peak_hinge_moment_indeterminate", "N m");
   json.value("indeterminate_spans", "s");
+  for (const std::string& quantity : element_peak_quantities(summary))
+    for (const auto& e : summary.element_peaks)
+      if (e.quantity == quantity) {
+        json.value(quantity, e.unit);
+        break;
+      }
   json.value("energy_initial", "J").value("energy_final", "J").value("energy_dissipated", "J");
   json.begin_object("final_q");
   for (int c = 0; c < m.nq; ++c) json.value(m.position_name(c), m.position_unit(c));
@@ -281,6 +296,13 @@ void write_summary_json(const sim::Scene& scene, const sim::RunResult& result, c
   peaks("peak_latch_torque", summary.peak_latch_torque);
   peaks("peak_hinge_force", summary.peak_hinge_force);
   peaks("peak_hinge_moment", summary.peak_hinge_moment);
+  for (const std::string& quantity : element_peak_quantities(summary)) {
+    json.begin_object(quantity);
+    for (const auto& e : summary.element_peaks)
+      if (e.quantity == quantity && !std::isnan(e.peak.t))
+        json.begin_object(e.name).value("value", e.peak.value).value("t", e.peak.t).end_object();
+    json.end_object();
+  }
   if (summary.loads_determinate)
     json.value("loads_determinate", *summary.loads_determinate);
   else

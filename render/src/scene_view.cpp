@@ -173,11 +173,13 @@ void SceneView::draw(const std::vector<sim::Pose>& poses, const Camera& camera, 
   const Eigen::Vector3f eye = camera.eye();
   glUniform3fv(shader_->uniform("eye"), 1, eye.data());
   for (const Item& item : items_) draw_mesh(*item.mesh, placement(item, poses), nullptr);
-  // Springs orange, cables pale grey.
-  const Eigen::Vector3f spring(0.95f, 0.55f, 0.15f), cable(0.85f, 0.85f, 0.8f);
-  for (const sim::ElementLink& link : links_)
-    draw_mesh(*link_mesh_, link_placement(link, poses),
-              link.style == sim::ElementLink::Style::cable ? &cable : &spring);
+  // Springs orange, cables pale grey, bushings teal.
+  const Eigen::Vector3f spring(0.95f, 0.55f, 0.15f), cable(0.85f, 0.85f, 0.8f), bushing(0.15f, 0.7f, 0.7f);
+  for (const sim::ElementLink& link : links_) {
+    const bool sleeve = link.style == sim::ElementLink::Style::bushing;
+    draw_mesh(*link_mesh_, sleeve ? sleeve_placement(link, poses) : link_placement(link, poses),
+              sleeve ? &bushing : link.style == sim::ElementLink::Style::cable ? &cable : &spring);
+  }
   glBindVertexArray(0);
 }
 
@@ -201,6 +203,17 @@ Eigen::Affine3f SceneView::link_placement(const sim::ElementLink& link, const st
   T.translate(0.5f * (a + b));
   if ((b - a).norm() > 0) T.rotate(Eigen::Quaternionf::FromTwoVectors(Eigen::Vector3f::UnitZ(), b - a));
   T.scale(Eigen::Vector3f(2 * kLinkRadius, 2 * kLinkRadius, length));
+  return T;
+}
+
+Eigen::Affine3f SceneView::sleeve_placement(const sim::ElementLink& link, const std::vector<sim::Pose>& poses) const {
+  const bool on_base = link.body_a == sim::kBase;
+  const sim::Vec3 at = on_base ? link.point_a : poses[link.body_a].to_base(link.point_a);
+  const sim::Vec3 axis = on_base ? link.axis_a : poses[link.body_a].rotation.transpose() * link.axis_a;
+  Eigen::Affine3f T = Eigen::Affine3f::Identity();
+  T.translate(at.cast<float>());
+  T.rotate(Eigen::Quaternionf::FromTwoVectors(Eigen::Vector3f::UnitZ(), axis.cast<float>()));
+  T.scale(Eigen::Vector3f(3 * kPinRadius, 3 * kPinRadius, 1.5f * kPinLength));
   return T;
 }
 

@@ -41,6 +41,7 @@ Dynamics::Dynamics(const Scene& scene)
   layout_.nq = scene_.model.nq;
   layout_.nv = scene_.model.nv;
   columns_ = scene_.load_columns(&element_columns_);
+  element_peaks_ = scene_.element_peaks();
   bool dissipation_needs_poses = false;
   std::size_t most_columns = 0;
   for (std::size_t k = 0; k < scene_.elements.size(); ++k) {

@@ -1,6 +1,7 @@
 #include "run_monitor.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace unfurl::sim {
 
@@ -10,6 +11,7 @@ RunMonitor::RunMonitor(Dynamics& dynamics) : dynamics_(dynamics) {
   peaks_.hinge_moment.resize(dynamics.model().size());
   peaks_.hinge_force_indeterminate.resize(dynamics.model().size());
   peaks_.hinge_moment_indeterminate.resize(dynamics.model().size());
+  peaks_.element.resize(dynamics.element_peaks().size());
 }
 
 std::optional<double> RunMonitor::observe(double t, const double* y) {
@@ -17,6 +19,11 @@ std::optional<double> RunMonitor::observe(double t, const double* y) {
   for (int l = 0; l < dynamics_.latch_count(); ++l)
     if (dynamics_.latch_state().engaged(l))
       peaks_.latch_torque[l].update(std::abs(loads_.element[dynamics_.latch_column(l)]), t);
+  for (std::size_t k = 0; k < peaks_.element.size(); ++k) {
+    double squares = 0;
+    for (const int c : dynamics_.element_peaks()[k].columns) squares += loads_.element[c] * loads_.element[c];
+    peaks_.element[k].update(std::sqrt(squares), t);
+  }
   const bool determinate = loads_.determinacy != Determinacy::indeterminate;
   if (loads_.determinacy == Determinacy::not_assessed) peaks_.loads_assessed = false;
   std::vector<Peak>& force = determinate ? peaks_.hinge_force : peaks_.hinge_force_indeterminate;

@@ -26,6 +26,20 @@ std::vector<LoadColumn> Scene::load_columns(std::vector<std::vector<int>>* of_el
   return columns;
 }
 
+std::vector<TrackedPeak> Scene::element_peaks() const {
+  std::vector<std::vector<int>> of_element;
+  const std::vector<LoadColumn> columns = load_columns(&of_element);
+  std::vector<TrackedPeak> peaks;
+  for (std::size_t k = 0; k < elements.size(); ++k) {
+    for (const ElementPeak& peak : elements[k]->peaks()) {
+      TrackedPeak tracked{peak.quantity, elements[k]->handle(model), columns[of_element[k][peak.first]].unit, {}};
+      for (int c = 0; c < peak.count; ++c) tracked.columns.push_back(of_element[k][peak.first + c]);
+      peaks.push_back(std::move(tracked));
+    }
+  }
+  return peaks;
+}
+
 std::vector<std::string> Scene::element_paths(std::size_t k) const {
   const ForceElement& e = *elements[k];
   const std::string list = e.list(), handle = e.handle(model);

@@ -59,6 +59,11 @@ class SceneReader : private input::YamlFields {
   void read_friction(const YAML::Node& list, SceneBuilder& b) const;
   std::shared_ptr<const SpringCurve> spring_curve(const YAML::Node& table, const std::string& field) const;
   void read_point_springs(const YAML::Node& list, SceneBuilder& b) const;
+  void read_bushings(const YAML::Node& list, SceneBuilder& b) const;
+  Mat6 read_matrix6(const YAML::Node& node, const std::string& field) const;
+  void read_bushing_frame(const YAML::Node& node, char end, const SceneBuilder& b, const std::string& field,
+                          BushingFrame& frame) const;
+  int element_body(const YAML::Node& entry, const char* key, const SceneBuilder& b, const std::string& field) const;
   void read_applied_forces(const YAML::Node& list, SceneBuilder& b) const;
   void read_latches(const YAML::Node& list, SceneBuilder& b) const;
   void read_loops(const YAML::Node& list, SceneBuilder& b) const;
@@ -266,21 +271,78 @@ void SceneReader::read_point_springs(const YAML::Node& list, SceneBuilder& b) co
          auto s = std::make_shared<PointSpring>();
          s->named = static_cast<bool>(node["name"]);
          s->name = s->named ? text(node["name"], field + ".name") : "spring" + std::to_string(n);
-         const auto end = [&](const char* key) {
-           const std::string name = text(require(node, key, field), field + "." + key);
-           if (!b.has_body(name))
-             fail(node[key], field + "." + key,
-                  "unknown body '" + name + "' (nor the base, '" + b.scene().model.base_name + "')");
-           return b.body_index(name, field + "." + key);
-         };
-         s->body_a = end("body_a");
-         s->body_b = end("body_b");
+         s->body_a = element_body(node, "body_a", b, field);
+         s->body_b = element_body(node, "body_b", b, field);
          s->point_a = vec3_or(node, "point_a", Vec3::Zero(), field);
          s->point_b = vec3_or(node, "point_b", Vec3::Zero(), field);
          s->stiffness = number(require(node, "stiffness", field), field + ".stiffness");
          s->rest_length = number(require(node, "rest_length", field), field + ".rest_length");
          s->damping = number_or(node, "damping", 0.0, field);
          if (node["tension_only"]) s->tension_only = flag(node["tension_only"], field + ".tension_only");
+         b.element(s);
+       });
+}
+
+int SceneReader::element_body(const YAML::Node& entry, const char* key, const SceneBuilder& b,
+                              const std::string& field) const {
+  const std::string name = text(require(entry, key, field), field + "." + key);
+  if (!b.has_body(name))
+    fail(entry[key], field + "." + key, "unknown body '" + name + "' (nor the base, '" + b.scene().model.base_name + "')");
+  return b.body_index(name, field + "." + key);
+}
+
+// Six numbers (a diagonal) or six rows of six.
+Mat6 SceneReader::read_matrix6(const YAML::Node& node, const std::string& field) const {
+  if (!node.IsSequence() || node.size() != 6)
+    fail(node, field, "expected 6 numbers (the diagonal: x, y, z, rx, ry, rz) or 6 rows of 6");
+  Mat6 K = Mat6::Zero();
+  if (!node[0].IsSequence()) {
+    const std::vector<double> d = numbers(node, field);
+    for (int k = 0; k < 6; ++k) K(k, k) = d[k];
+    return K;
+  }
+  for (int i = 0; i < 6; ++i) {
+    const std::string row = field + "[" + std::to_string(i) + "]";
+    const std::vector<double> r = numbers(node[i], row);
+    if (r.size() != 6) fail(node[i], row, "expected a row of 6 numbers");
+    for (int j = 0; j < 6; ++j) K(i, j) = r[j];
+  }
+  return K;
+}
+
+// body_a, point_a and rotation_a ([axis x, axis y, axis z, angle in
+// degrees], as a mesh's rotation), or b's.
+void SceneReader::read_bushing_frame(const YAML::Node& node, char end, const SceneBuilder& b,
+                                     const std::string& field, BushingFrame& frame) const {
+  const std::string body = std::string("body_") + end, point = std::string("point_") + end,
+                    rotation = std::string("rotation_") + end;
+  frame.body = element_body(node, body.c_str(), b, field);
+  frame.point = vec3_or(node, point.c_str(), Vec3::Zero(), field);
+  if (const YAML::Node turn = node[rotation]) {
+    const std::vector<double> r = numbers(turn, field + "." + rotation);
+    if (r.size() != 4 || Vec3(r[0], r[1], r[2]).norm() < 1e-12)
+      fail(turn, field + "." + rotation, "expected [axis x, axis y, axis z, angle in degrees] with a nonzero axis");
+    frame.rotation_axis = Vec3(r[0], r[1], r[2]).normalized();
+    frame.rotation_deg = r[3];
+  }
+}
+
+void SceneReader::read_bushings(const YAML::Node& list, SceneBuilder& b) const {
+  each(list, "bushings",
+       {"name", "body_a", "point_a", "rotation_a", "body_b", "point_b", "rotation_b", "stiffness", "damping",
+        "preload"},
+       [&](const YAML::Node& node, const std::string& field, std::size_t) {
+         auto s = std::make_shared<Bushing>();
+         s->name = text(require(node, "name", field), field + ".name");
+         read_bushing_frame(node, 'a', b, field, s->a);
+         read_bushing_frame(node, 'b', b, field, s->b);
+         s->stiffness = read_matrix6(require(node, "stiffness", field), field + ".stiffness");
+         if (node["damping"]) s->damping = read_matrix6(node["damping"], field + ".damping");
+         if (const YAML::Node preload = node["preload"]) {
+           const std::vector<double> p = numbers(preload, field + ".preload");
+           if (p.size() != 6) fail(preload, field + ".preload", "expected 6 numbers (fx, fy, fz, mx, my, mz)");
+           for (int k = 0; k < 6; ++k) s->preload[k] = p[k];
+         }
          b.element(s);
        });
 }
@@ -426,7 +488,7 @@ SceneFile SceneReader::read(const std::string& text_in, const std::vector<Overri
   if (root["loads"]) fail(root["loads"], "loads", "renamed: the constant forces on bodies are `applied_forces:`");
   check_keys(root,
              {"name", "description", "base", "gravity", "bodies", "springs", "dampers", "friction", "point_springs",
-              "applied_forces", "latches", "loops", "regulator", "initial", "closure_tolerance", "run"},
+              "bushings", "applied_forces", "latches", "loops", "regulator", "initial", "closure_tolerance", "run"},
              "");
   SceneBuilder b(root["name"] ? text(root["name"], "name") : "scene",
                  root["description"] ? text(root["description"], "description") : "");
@@ -444,6 +506,7 @@ SceneFile SceneReader::read(const std::string& text_in, const std::vector<Overri
     if (root["latches"]) read_latches(root["latches"], b);
     if (root["applied_forces"]) read_applied_forces(root["applied_forces"], b);
     if (root["point_springs"]) read_point_springs(root["point_springs"], b);
+    if (root["bushings"]) read_bushings(root["bushings"], b);
     if (root["loops"]) read_loops(root["loops"], b);
     if (root["regulator"]) b.regulator(read_regulator(root["regulator"]));
     if (root["initial"]) read_initial(root["initial"], b);

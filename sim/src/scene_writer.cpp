@@ -35,6 +35,17 @@ std::string quoted(const std::string& text) {
   return out + "\"";
 }
 
+// A 6 x 6 matrix: its diagonal when it is diagonal, else its rows.
+std::string matrix6(const Mat6& K) {
+  if (K.isDiagonal(0)) return numbers({K.diagonal().data(), K.diagonal().data() + 6});
+  std::string out = "[";
+  for (int i = 0; i < 6; ++i) {
+    const Vec6 row = K.row(i).transpose();
+    out += (i ? ", " : "") + numbers({row.data(), row.data() + 6});
+  }
+  return out + "]";
+}
+
 std::string visual(const Visual& v) {
   const bool plain = v.scale == Vec3::Ones() && v.rotation_deg == 0 && v.offset.isZero(0);
   if (plain) return v.mesh;
@@ -108,6 +119,18 @@ void elements(std::ostream& out, const Scene& scene) {
            ", point_a: " + vec(s.point_a) + ", body_b: " + body(s.body_b) + ", point_b: " + vec(s.point_b) +
            ", stiffness: " + format_number(s.stiffness) + ", rest_length: " + format_number(s.rest_length) +
            ", damping: " + format_number(s.damping) + ", tension_only: " + (s.tension_only ? "true" : "false");
+  });
+  list("bushings", scene.elements_of<Bushing>(), [&](const Bushing& s) {
+    const auto frame = [&](const BushingFrame& f, const std::string& end) {
+      std::string text = ", body_" + end + ": " + body(f.body) + ", point_" + end + ": " + vec(f.point);
+      if (f.rotation_deg != 0)
+        text += ", rotation_" + end + ": " + numbers({f.rotation_axis[0], f.rotation_axis[1], f.rotation_axis[2],
+                                                      f.rotation_deg});
+      return text;
+    };
+    return "name: " + s.name + frame(s.a, "a") + frame(s.b, "b") + ", stiffness: " + matrix6(s.stiffness) +
+           ", damping: " + matrix6(s.damping) +
+           ", preload: " + numbers({s.preload.data(), s.preload.data() + 6});
   });
 }
 

@@ -29,6 +29,9 @@ RunSummary summarize(const Scene& scene, const RunResult& result) {
     s.peak_hinge_force_indeterminate.push_back({model.joints[j].name, p.hinge_force_indeterminate[j]});
     s.peak_hinge_moment_indeterminate.push_back({model.joints[j].name, p.hinge_moment_indeterminate[j]});
   }
+  const std::vector<TrackedPeak> tracked = scene.element_peaks();
+  for (std::size_t k = 0; k < p.element.size() && k < tracked.size(); ++k)
+    s.element_peaks.push_back({tracked[k].quantity, tracked[k].name, tracked[k].unit, p.element[k]});
   s.indeterminate_spans = p.indeterminate_spans;
   if (p.loads_assessed) s.loads_determinate = p.indeterminate_spans.empty();
   if (!tr.empty()) {

@@ -44,6 +44,8 @@ class SceneView {
   void draw_mesh(const MeshModel& mesh, const Eigen::Affine3f& T, const Eigen::Vector3f* colour) const;
   // An element's link (a point spring) as a thin rod between its two points.
   Eigen::Affine3f link_placement(const sim::ElementLink& link, const std::vector<sim::Pose>& poses) const;
+  // A bushing: a sleeve at its frame a, along the frame's x axis.
+  Eigen::Affine3f sleeve_placement(const sim::ElementLink& link, const std::vector<sim::Pose>& poses) const;
 
   std::vector<Item> items_;
   std::vector<sim::ElementLink> links_;

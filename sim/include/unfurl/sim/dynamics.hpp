@@ -129,6 +129,8 @@ class Dynamics {
   const std::vector<int>& element_columns(std::size_t element) const { return element_columns_[element]; }
   // The column of latch l's torque.
   int latch_column(int l) const { return element_columns_[latch_elements_[l]][0]; }
+  // The peaks the elements ask a run to keep (Scene::element_peaks).
+  const std::vector<TrackedPeak>& element_peaks() const { return element_peaks_; }
 
   // The power the elements take out of the mechanism at positions q and
   // position rates q' (>= 0 for passive elements); its integral is
@@ -163,6 +165,7 @@ class Dynamics {
   LatchState latch_state_;
   std::vector<LoadColumn> columns_;
   std::vector<std::vector<int>> element_columns_;
+  std::vector<TrackedPeak> element_peaks_;
   std::unique_ptr<NewtonPreconditioner> preconditioner_;
   bool elements_need_poses_ = false;
   long rhs_calls_ = 0;

@@ -60,12 +60,22 @@ struct ElementParameter {
 };
 
 // A line the renderer draws between two attachment points (kBase: a point
-// fixed on the base), in the colour of its kind.
+// fixed on the base), in the colour of its kind; a bushing is drawn as a
+// sleeve at point a along its frame's x axis.
 struct ElementLink {
-  enum class Style { spring, cable };
+  enum class Style { spring, cable, bushing };
   int body_a = kBase, body_b = kBase;
   Vec3 point_a = Vec3::Zero(), point_b = Vec3::Zero();  // each body's frame
   Style style = Style::spring;
+  Vec3 axis_a = Vec3::UnitX();  // a bushing's x axis, in body a's frame
+};
+
+// A peak the run keeps of an element's loads over every step: the
+// magnitude of `count` of its load columns from `first` (a bushing's force,
+// x..z), in summary.json under `quantity`, by the element's handle.
+struct ElementPeak {
+  std::string quantity;  // "peak_bushing_force"
+  int first = 0, count = 1;
 };
 
 class ForceElement {
@@ -102,6 +112,8 @@ class ForceElement {
   // Its load columns, and their values at a state (one per column).
   virtual std::vector<LoadColumn> load_columns(const Model&) const { return {}; }
   virtual void load_values(const ElementState&, double* /*values*/) const {}
+  // The peaks of its loads a run reports (for an element with a handle).
+  virtual std::vector<ElementPeak> peaks() const { return {}; }
 
   // A copy for the mechanism scaled by lengths x L and masses x M with time
   // unchanged, by dimensional analysis (a hinge's torque and stiffness x M

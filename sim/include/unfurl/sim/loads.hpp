@@ -28,6 +28,13 @@ struct LoadColumn {
 // The index of the column called `name`, or -1.
 int find_load_column(const std::vector<LoadColumn>& columns, const std::string& name);
 
+// A peak a run keeps of an element's loads (ForceElement::peaks): the
+// magnitude of some load columns.
+struct TrackedPeak {
+  std::string quantity, name, unit;  // "peak_bushing_force", the element's handle, "N"
+  std::vector<int> columns;          // of the run's load columns
+};
+
 // Loads of a mechanism without loops are always determinate; those of one
 // with more loop components than the dense analysis takes
 // (kMaxDenseComponents) are not assessed.
@@ -73,6 +80,7 @@ struct RunPeaks {
   // steps.
   std::vector<std::array<double, 2>> indeterminate_spans;
   bool loads_assessed = true;  // false if some step's were not (Determinacy::not_assessed)
+  std::vector<Peak> element;        // per Scene::element_peaks()
   Peak gap_m, gap_rad;              // over all loops
   Peak gap_m_before_latch, gap_rad_before_latch;
 };

@@ -48,6 +48,8 @@ struct Scene {
   // The load columns of the elements (loads.hpp), one per name in the
   // order first named; with `of_element`, which columns each element writes.
   std::vector<LoadColumn> load_columns(std::vector<std::vector<int>>* of_element = nullptr) const;
+  // The peaks its elements ask a run to keep, on load_columns()' columns.
+  std::vector<TrackedPeak> element_peaks() const;
   // The --set path of element k ("springs.j1", or "springs.3" where its
   // handle is shared or missing), and every path that names it (by index,
   // and by handle where no other element of its list shares it).

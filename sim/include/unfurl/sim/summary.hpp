@@ -26,6 +26,13 @@ struct RunSummary {
   std::vector<NamedPeak> peak_latch_torque;  // per latch
   std::vector<NamedPeak> peak_hinge_force;   // per joint
   std::vector<NamedPeak> peak_hinge_moment;  // per joint
+  // The elements' own peaks (a bushing's force and moment), by quantity
+  // and the element's handle.
+  struct ElementPeakValue {
+    std::string quantity, name, unit;
+    Peak peak;
+  };
+  std::vector<ElementPeakValue> element_peaks;
   // Whether the motion determined every load (nullopt: not assessed, a
   // scene with more loop components than the analysis takes); where it did
   // not, from when to when, and the minimum-norm reactions' peaks there

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "unfurl/sim/elements/applied_force.hpp"
+#include "unfurl/sim/elements/bushing.hpp"
 #include "unfurl/sim/elements/gravity.hpp"
 #include "unfurl/sim/elements/joint_damper.hpp"
 #include "unfurl/sim/elements/joint_friction.hpp"
