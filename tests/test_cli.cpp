@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <sstream>
 
@@ -159,6 +160,44 @@ TEST(Cli, GenerateWritesASceneThatSimulates) {
   const Outcome bad = run("generate zfold --panels 0");
   EXPECT_EQ(bad.code, 64);
   EXPECT_NE(bad.output.find("--panels"), std::string::npos) << bad.output;
+}
+
+// The compliance suite's quick cases: the compliant pantograph's peak
+// hinge force against its pins' stiffness, nominal and off-nominal, and
+// the rigid pantograph's; the off-nominal force grows with the stiffness
+// (the rigid model has no answer there) while the nominal one stays near
+// the rigid 163 N.
+TEST(Cli, ComplianceReportTablesTheHingeForceAgainstPinStiffness) {
+  const fs::path dir = temp_dir() / "compliance";
+  const Outcome o = run("report --suite compliance --quick --quiet --out " + dir.string());
+  ASSERT_EQ(o.code, 0) << o.output;
+  for (const char* f : {"COMPLIANCE.md", "pin_stiffness.csv"}) EXPECT_TRUE(fs::exists(dir / f)) << f;
+#ifdef UNFURL_WITH_RENDER
+  EXPECT_TRUE(fs::exists(dir / "pin_stiffness.png"));
+#endif
+  std::map<std::string, double> peak;  // "deployment model stiffness" -> N
+  std::ifstream csv(dir / "pin_stiffness.csv");
+  std::string line;
+  std::getline(csv, line);
+  int rows = 0;
+  for (; std::getline(csv, line); ++rows) {
+    std::vector<std::string> f;
+    std::string field;
+    bool quoted = false;
+    for (char c : line) {
+      if (c == '"') quoted = !quoted;
+      else if (c == ',' && !quoted) f.push_back(field), field.clear();
+      else field += c;
+    }
+    f.push_back(field);
+    ASSERT_GE(f.size(), 6u) << line;
+    EXPECT_EQ(f[3], "finished") << line;
+    peak[f[0].substr(0, 3) + " " + f[1] + " " + f[2]] = std::stod(f[5]);
+  }
+  EXPECT_EQ(rows, 8);  // 3 stiffnesses and the rigid model, two deployments
+  EXPECT_GT(peak["off compliant 1e+07"], 3 * peak["off compliant 100000"]);
+  EXPECT_NEAR(peak["nom compliant 1e+07"], peak["nom rigid "], 0.01 * peak["nom rigid "]);
+  EXPECT_NEAR(peak["nom rigid "], 162.76, 0.1);
 }
 
 TEST(Cli, SolverFailureReportsWhereAndKeepsResults) {

@@ -8,10 +8,13 @@
 #include "cli.hpp"
 #include "commands.hpp"
 #include "unfurl/io/output_file.hpp"
+#include "unfurl/io/study_files.hpp"
+#include "compliance_files.hpp"
 #include "progress.hpp"
 #include "scaling_files.hpp"
 #include "stability_files.hpp"
 #include "scene_options.hpp"
+#include "unfurl/sim/number_text.hpp"
 #include "work_precision_files.hpp"
 
 namespace unfurl::app {
@@ -23,6 +26,7 @@ const char* kHelp =
     "                     [--steps LIST] [--repeats N] [--set KEY=VALUE ...] [--t-end T]\n"
     "       unfurl report --suite stiff [--out DIR] [--quick] [--budget S]\n"
     "       unfurl report --suite scaling [--out DIR] [--quick] [--budget S]\n"
+    "       unfurl report --suite compliance [--out DIR] [--quick] [--studies DIR]\n"
     "\n"
     "Error against run time (work-precision): runs SCENE with each integrator over a range of\n"
     "tolerances (rk4 over a range of fixed steps), compares every run with a reference (the\n"
@@ -57,6 +61,11 @@ const char* kHelp =
     "10 to 10,000 bodies, and the wall time of 1 s runs against size with CVODE BDF (dense and\n"
     "GMRES Newton solvers) and ARKODE ERK. Writes SCALING.md, rhs_scaling.csv, run_scaling.csv\n"
     "and plots into DIR (default scaling/).\n"
+    "--suite compliance: the compliant pantograph's peak hinge and pin forces against its pins'\n"
+    "stiffness (1e5 .. 1e8 N/m), nominal and with j1's spring 2 % stiffer, beside the rigid\n"
+    "pantograph's. Writes COMPLIANCE.md, pin_stiffness.csv and pin_stiffness.png into DIR\n"
+    "(default compliance/). --studies DIR: also compares the peak hinge forces of the Monte Carlo\n"
+    "studies in DIR/pantograph_monte_carlo and DIR/pantograph_compliant_monte_carlo (cases.csv).\n"
     "  --quick               the small cases only\n"
     "  --budget S            wall-time budget of each run in seconds (default 120; scaling 300)\n"
     "\n"
@@ -224,9 +233,59 @@ int scaling_report(const std::vector<std::string>& argv, const Args& args) {
   return 0;
 }
 
+int compliance_report(const std::vector<std::string>& argv, const Args& args) {
+  if (!args.positionals().empty()) throw UsageError("--suite runs its own scenes: give no SCENE");
+  ComplianceReport report;
+  report.command = command_line(argv);
+  report.rtol = 1e-8;
+  report.t_end = 9;
+  const bool quick = args.has("--quick"), quiet = args.has("--quiet");
+  const std::string dir = args.get("--out").value_or("compliance");
+  io::make_directory(dir);
+  const std::vector<double> stiffnesses =
+      quick ? std::vector<double>{1e5, 1e6, 1e7} : std::vector<double>{1e5, 3e5, 1e6, 3e6, 1e7, 3e7, 1e8};
+  const int deployments = static_cast<int>(studies::pin_stiffness_deployments().size());
+  Progress progress("compliance suite", static_cast<double>(deployments * (stiffnesses.size() + 1)));
+  double done = 0;
+  for (int d = 0; d < deployments; ++d) {
+    for (const double k : stiffnesses) {
+      if (!quiet) progress.update(done++, "pins " + sim::format_number(k) + " N/m");
+      report.compliant.push_back(studies::run_compliant_pins(d, k, report.rtol, report.t_end));
+    }
+    if (!quiet) progress.update(done++, "rigid");
+    report.rigid.push_back(studies::run_rigid_pins(d, report.rtol, report.t_end));
+  }
+  progress.finish();
+  if (const auto studies_dir = args.get("--studies")) {
+    for (const auto& [label, study] : {std::pair{"rigid", "pantograph_monte_carlo"},
+                                       std::pair{"compliant", "pantograph_compliant_monte_carlo"}}) {
+      MonteCarloHingeForces m{label, std::string(study) + "/cases.csv", {}};
+      m.peak_hinge_force = io::read_cases_column(*studies_dir + "/" + m.cases_csv, "peak_hinge_force");
+      std::sort(m.peak_hinge_force.begin(), m.peak_hinge_force.end());
+      report.monte_carlo.push_back(std::move(m));
+    }
+  }
+  write_compliance_csv(report, dir + "/pin_stiffness.csv");
+  const std::vector<std::string> pictures = write_compliance_plots(report, dir);
+  write_compliance_markdown(report, pictures, dir + "/COMPLIANCE.md");
+  int failed = 0;
+  for (const auto* cases : {&report.compliant, &report.rigid})
+    for (const studies::PinStiffnessCase& c : *cases)
+      if (c.loads.status != sim::RunStatus::finished) {
+        ++failed;
+        std::fprintf(stderr, "unfurl report: pins %g N/m did not finish: %s\n", c.stiffness, c.loads.failure.c_str());
+      }
+  if (!quiet)
+    std::printf("compliance   %zu runs\nfiles        %s/COMPLIANCE.md, %s/pin_stiffness.csv and %zu plots\n",
+                report.compliant.size() + report.rigid.size(), dir.c_str(), dir.c_str(), pictures.size());
+  return failed == 0 ? 0 : 1;
+}
+
 int stability_report(const std::vector<std::string>& argv, const Args& args) {
   if (args.get("--suite") == "scaling") return scaling_report(argv, args);
-  if (args.get("--suite") != "stiff") throw UsageError("unknown suite '" + *args.get("--suite") + "' (stiff, scaling)");
+  if (args.get("--suite") == "compliance") return compliance_report(argv, args);
+  if (args.get("--suite") != "stiff")
+    throw UsageError("unknown suite '" + *args.get("--suite") + "' (stiff, scaling, compliance)");
   if (!args.positionals().empty()) throw UsageError("--suite runs its own scenes: give no SCENE");
   StabilityReport report;
   report.command = command_line(argv);
@@ -271,7 +330,7 @@ int stability_report(const std::vector<std::string>& argv, const Args& args) {
 int command_report(const std::vector<std::string>& argv) {
   const Args args(argv,
                   {"--out", "--integrators", "--tolerances", "--steps", "--repeats", "--set", "--t-end", "--sample",
-                   "--suite", "--budget"},
+                   "--suite", "--budget", "--studies"},
                   {"--help", "-h", "--quiet", "--quick"});
   if (args.has("--help") || args.has("-h")) {
     std::printf(kHelp,

@@ -2,6 +2,7 @@
 // plots (the markdown lists none).
 #include <cstdio>
 
+#include "compliance_files.hpp"
 #include "scaling_files.hpp"
 #include "stability_files.hpp"
 #include "study_plots.hpp"
@@ -25,6 +26,7 @@ std::vector<std::string> write_work_precision_plots(const sim::Scene&, const stu
   return no_plots();
 }
 std::vector<std::string> write_scaling_plots(const ScalingReport&, const std::string&) { return no_plots(); }
+std::vector<std::string> write_compliance_plots(const ComplianceReport&, const std::string&) { return no_plots(); }
 std::vector<std::string> write_stability_plots(const StabilityReport&, const std::string&) { return no_plots(); }
 std::vector<std::string> write_study_plots(const io::StudyReport&, const std::string&) { return no_plots(); }
 

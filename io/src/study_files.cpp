@@ -1,10 +1,12 @@
 #include "unfurl/io/study_files.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 #include "unfurl/io/json_writer.hpp"
 #include "unfurl/io/output_file.hpp"
@@ -110,6 +112,27 @@ std::string read_text_file(const std::string& path) {
   std::stringstream text;
   text << in.rdbuf();
   return text.str();
+}
+
+std::vector<double> read_cases_column(const std::string& path, const std::string& name, const std::string& status) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path + ": cannot read it");
+  std::string line;
+  if (!std::getline(in, line)) throw std::runtime_error(path + ": empty file");
+  const std::vector<std::string> header = split_csv_line(line);
+  const auto named = [&](const std::string& cell) { return cell == name || cell.rfind(name + " [", 0) == 0; };
+  const auto column = std::find_if(header.begin(), header.end(), named);
+  const auto status_column = std::find(header.begin(), header.end(), "status");
+  if (column == header.end() || status_column == header.end())
+    throw std::runtime_error(path + ": no column '" + name + "' (or no status column)");
+  const std::size_t c = column - header.begin(), st = status_column - header.begin();
+  std::vector<double> values;
+  while (std::getline(in, line)) {
+    const std::vector<std::string> row = split_csv_line(line);
+    if (row.size() != header.size() || row[st] != status || row[c].empty()) continue;
+    values.push_back(parse_number(row[c]));
+  }
+  return values;
 }
 
 std::string cases_header(const studies::CaseColumns& columns) {

@@ -16,6 +16,12 @@ namespace unfurl::io {
 // The whole of a text file ("" when it cannot be read).
 std::string read_text_file(const std::string& path);
 
+// The values of cases.csv's column `name` (its header without the unit)
+// over the rows of a status ("deployed"), empty cells left out. Throws
+// std::runtime_error when the file or the column is missing.
+std::vector<double> read_cases_column(const std::string& path, const std::string& name,
+                                      const std::string& status = "deployed");
+
 // The header line of cases.csv (and of each case record).
 std::string cases_header(const studies::CaseColumns& columns);
 // One row of cases.csv; numbers round-trip exactly, NaN is empty.
