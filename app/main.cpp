@@ -20,6 +20,7 @@ const char* kUsage =
     "  simulate [SCENE]   run a scene, write trajectory.csv, events.csv, summary.json\n"
     "  render [SCENE]     draw frames, video and plots of a run, headless\n"
     "  gui [SCENE]        the interactive workbench (needs a display)\n"
+    "  modes [SCENE]      natural frequencies, damping and mode shapes about the deployed state\n"
     "  study STUDY.yaml   run an off-nominal or Monte Carlo study (locally or under mpirun)\n"
     "  report [SCENE]     error against run time per integrator (work-precision)\n"
     "  export mjcf [SCENE]  write the scene as a MuJoCo model\n"
@@ -53,6 +54,7 @@ int main(int argc, char** argv) {
     if (command == "gui") return unfurl::app::command_gui(args);
     if (command == "report") return unfurl::app::command_report(args);
     if (command == "study") return unfurl::app::command_study(args);
+    if (command == "modes") return unfurl::app::command_modes(args);
     if (command == "sweep") {  // the command's name until 0.3
       std::fprintf(stderr, "unfurl: `sweep` is now `unfurl study` (running it as that)\n");
       return unfurl::app::command_study(args);

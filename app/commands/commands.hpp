@@ -15,5 +15,6 @@ int command_generate(const std::vector<std::string>& args);
 int command_report(const std::vector<std::string>& args);
 int command_export(const std::vector<std::string>& args);
 int command_study(const std::vector<std::string>& args);
+int command_modes(const std::vector<std::string>& args);
 
 }  // namespace unfurl::app

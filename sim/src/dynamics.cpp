@@ -123,13 +123,8 @@ std::vector<double> Dynamics::initial_state() {
   } else {
     // p = A^T mu with mu the subtree momenta of the given joint rates.
     configure(scene_.q0.data());
-    for (int i = 0; i < model.size(); ++i) {
-      const int k = model.parent[i];
-      v_[i] = sweep_.placement(i).transform_velocity(k == kBase ? model.base_velocity : v_[k]);
-      for (int r = 0; r < model.joints[i].dof(); ++r)
-        v_[i] += sweep_.motion_axes(i).col(r) * scene_.dq0[(model.first_velocity[i] + r).value];
-      F_[i] = model.bodies[i].spatial_mass() * v_[i];
-    }
+    body_velocities(scene_.dq0.data(), true);
+    for (int i = 0; i < model.size(); ++i) F_[i] = model.bodies[i].spatial_mass() * v_[i];
     sweep_.generalized_forces(F_, y.data() + layout_.p());
   }
   if (regulator_ && closure_rank_ && regulator_->uses_feedforward()) start_integral_at_rest(y.data());
@@ -143,6 +138,16 @@ void Dynamics::start_integral_at_rest(double* y) {
   closure_rank_->compute(W);
   closure_rank_->rigid_loop_forces(d_.data(), lambda_.data());
   regulator_->integral_at_rest(W, lambda_.data(), d_.data(), y + layout_.u());
+}
+
+void Dynamics::body_velocities(const double* w, bool base_moves) {
+  const Model& model = scene_.model;
+  for (int i = 0; i < model.size(); ++i) {
+    const int k = model.parent[i];
+    v_[i] = sweep_.placement(i).transform_velocity(k != kBase ? v_[k] : base_moves ? model.base_velocity : Vec6::Zero());
+    for (int r = 0; r < model.joints[i].dof(); ++r)
+      v_[i] += sweep_.motion_axes(i).col(r) * w[(model.first_velocity[i] + r).value];
+  }
 }
 
 ElementState Dynamics::element_state(std::size_t k, const double* q, const double* w, const std::vector<Pose>& poses,

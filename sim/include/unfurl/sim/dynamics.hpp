@@ -132,6 +132,21 @@ class Dynamics {
   // The peaks the elements ask a run to keep (Scene::element_peaks).
   const std::vector<TrackedPeak>& element_peaks() const { return element_peaks_; }
 
+  // For linearizations (modes.hpp), at positions q and velocity
+  // coordinates w, without the regulator (rigid_evaluation.cpp):
+  // - the accelerations w' with the loops closed by the rigid model's loop
+  //   forces, W lambda = d (minimum-norm where redundant, closure_rank.hpp);
+  //   false where the evaluation failed or the loops have more components
+  //   than the dense analysis takes (kMaxDenseComponents);
+  bool rigid_accelerations(const double* q, const double* w, double* w_dot);
+  // - the mass matrix, p = M(q) w;
+  Eigen::MatrixXd mass_matrix(const double* q);
+  // - the loops' gap on the active components in the closure's metric (a
+  //   distance over the mechanism's length, an angle), and its rate per
+  //   unit of each velocity coordinate (m x nv).
+  Eigen::VectorXd loop_gap(const double* q);
+  Eigen::MatrixXd loop_jacobian(const double* q);
+
   // The power the elements take out of the mechanism at positions q and
   // position rates q' (>= 0 for passive elements); its integral is
   // EnergyParts::dissipated.
@@ -148,6 +163,9 @@ class Dynamics {
   void configure(const double* q);
   bool evaluate(const double* y, double* ydot, Regulator::Gains gains);
   void add_element_forces(const double* q, const double* w);
+  // v_i of the configured sweep for velocity coordinates w, the base moving
+  // with its steady velocity when `base_moves`.
+  void body_velocities(const double* w, bool base_moves);
   // Sets y's regulator state to where its integral settles under the rigid
   // loop forces (Regulator::integral_at_rest).
   void start_integral_at_rest(double* y);
