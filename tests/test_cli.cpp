@@ -200,6 +200,40 @@ TEST(Cli, ComplianceReportTablesTheHingeForceAgainstPinStiffness) {
   EXPECT_NEAR(peak["nom rigid "], 162.76, 0.1);
 }
 
+// unfurl modes writes its table and files; render --mode draws a cycle of
+// a mode; a mode beyond the scene's is a usage error naming how many.
+TEST(Cli, ModesWritesItsFilesAndRenderDrawsAMode) {
+  const fs::path dir = temp_dir() / "modes";
+  const Outcome o = run("modes zfold --out " + dir.string());
+  ASSERT_EQ(o.code, 0) << o.output;
+  EXPECT_NE(o.output.find("0.4131"), std::string::npos) << o.output;
+  std::ifstream csv(dir / "modes.csv");
+  std::string header, row;
+  std::getline(csv, header);
+  std::getline(csv, row);
+  EXPECT_EQ(header,
+            "mode,kind,frequency_hz [Hz],damping_ratio,damped_frequency_hz [Hz],shape.j1 [rad],shape.j2 [rad],"
+            "shape.j3 [rad],shape.j4 [rad]");
+  EXPECT_EQ(row.rfind("1,elastic,0.4131", 0), 0u) << row;
+  const std::string json = [&] {
+    std::ifstream in(dir / "modes.json");
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }();
+  EXPECT_NE(json.find("\"kind\": \"elastic\""), std::string::npos) << json;
+  EXPECT_NE(json.find("settled to its static equilibrium"), std::string::npos) << json;
+#ifdef UNFURL_WITH_RENDER
+  const Outcome drawn = run("render zfold --mode 2 --fps 2 --size 320x180 --quiet --out " + (dir / "frames").string());
+  ASSERT_EQ(drawn.code, 0) << drawn.output;
+  EXPECT_TRUE(fs::exists(dir / "frames" / "frame_00004.png"));  // one 2 s cycle at 2 fps: 5 frames
+  EXPECT_FALSE(fs::exists(dir / "frames" / "frame_00005.png"));
+  const Outcome beyond = run("render zfold --mode 9 --out " + (dir / "none").string());
+  EXPECT_EQ(beyond.code, 64);
+  EXPECT_NE(beyond.output.find("has 4 modes"), std::string::npos) << beyond.output;
+#endif
+}
+
 TEST(Cli, SolverFailureReportsWhereAndKeepsResults) {
   // RK4 with a step far beyond the regulator's stability limit diverges.
   const fs::path dir = temp_dir() / "fail";

@@ -333,6 +333,45 @@ TEST(Gui, PinnedRunsAreTabledAndDrawnAgainstTheCurrentRun) {
   EXPECT_TRUE(std::regex_search(other, std::regex("\"pinned\": \\[\\s*\\]"))) << "another scene's pins were kept: " << other;
 }
 
+// The Modes tab: the finished run's modes (the compliant pantograph's first
+// at 0.413 Hz, as `unfurl modes` gives), one of them animated in the view:
+// the view moves between two moments of the cycle with the play-head
+// still, and a new run stops the animation.
+TEST(Gui, TheModesTabAnimatesAModeOfTheDeployedArray) {
+  if (!io::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
+  const Scratch scratch("unfurl_gui_modes");
+  const fs::path& dir = scratch.path;
+  std::ofstream(dir / "session.txt") << "wait_run\n"
+                                        "modes\n"
+                                        "wait 0.2\n"
+                                        "mode 1\n"
+                                        "wait 0.3\n"
+                                        "save_frame " << (dir / "a.png").string() << "\n"
+                                        "wait 1.0\n"
+                                        "save_frame " << (dir / "b.png").string() << "\n"
+                                        "report " << (dir / "shown.json").string() << "\n"
+                                        "set springs.j1.stiffness 0.12\n"
+                                        "wait_run\n"
+                                        "report " << (dir / "rerun.json").string() << "\n"
+                                        "quit\n";
+  ASSERT_EQ(gui_session_failure(dir, "pantograph_compliant --t-end 12"), "");
+  const std::string shown = slurp(dir / "shown.json"), rerun = slurp(dir / "rerun.json");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(shown, m, std::regex("\"modes_hz\": \\[\\s*([0-9.eE+-]+)"))) << shown;
+  EXPECT_NEAR(std::stod(m[1]), 0.41315, 1e-4);
+  EXPECT_NE(shown.find("\"mode_shown\": 1"), std::string::npos) << shown;
+  EXPECT_NE(rerun.find("\"mode_shown\": 0"), std::string::npos) << rerun;
+  // Half a cycle apart (of the 2 s drawn cycle), the array is bent the
+  // other way: the two frames differ.
+  const render::Image a = test::read_png((dir / "a.png").string()), b = test::read_png((dir / "b.png").string());
+  ASSERT_EQ(a.width, b.width);
+  int differ = 0;
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x)
+      if (std::abs(int(a.pixel(x, y)[2]) - int(b.pixel(x, y)[2])) > 40) ++differ;
+  EXPECT_GT(differ, 500);
+}
+
 // A finished study in the workbench: the Study tab lists its cases; picking
 // one (here by the script, as a click does) re-runs that case, whose latch
 // times are the study's own for it; a failure case (a latch removed) then

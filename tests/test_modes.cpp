@@ -94,7 +94,7 @@ TEST(Modes, LatchedZfoldMatchesAnIndependentMassMatrix) {
   const sim::Scene scene = sim::load_builtin_scene("zfold");
   const sim::RunResult run = sim::simulate(scene, scene.run);
   ASSERT_EQ(run.status, sim::RunStatus::finished);
-  const sim::LinearizationState state = sim::state_of_run(scene, run, scene.run.t_end);
+  const sim::LinearizationState state = sim::state_of_run(scene, run.trajectory, scene.run.t_end);
   const sim::ModesResult r = sim::linear_modes(scene, state.q, state.engaged);
   ASSERT_EQ(r.modes.size(), 4u);
   // Independently: M from the tests' dense formulation at the settled
@@ -130,7 +130,7 @@ TEST(Modes, ZfoldsRingingAfterLatchUpHasItsFirstModesFrequency) {
   sim::Scene scene = sim::load_builtin_scene("zfold", {{"run.t_end", "40"}, {"run.sample", "0.002"}});
   const sim::RunResult run = sim::simulate(scene, scene.run);
   ASSERT_EQ(run.status, sim::RunStatus::finished);
-  const sim::LinearizationState state = sim::state_of_run(scene, run, scene.run.t_end);
+  const sim::LinearizationState state = sim::state_of_run(scene, run.trajectory, scene.run.t_end);
   const sim::ModesResult r = sim::linear_modes(scene, state.q, state.engaged);
   const std::vector<double> up = upward_crossings(run, 0, r.q[0], 15.0);
   ASSERT_GE(up.size(), 8u);
@@ -145,7 +145,7 @@ sim::ModesResult fourbar_at_rest(const sim::Scene& fourbar) {
       "fourbar", {{"dampers", "[{joint: crank_pivot, damping: 0.3}]"}, {"run.t_end", "40"}, {"run.rtol", "1e-8"}});
   const sim::RunResult run = sim::simulate(damped, damped.run);
   EXPECT_EQ(run.status, sim::RunStatus::finished);
-  return sim::linear_modes(fourbar, sim::state_of_run(damped, run, 40).q, {});
+  return sim::linear_modes(fourbar, sim::state_of_run(damped, run.trajectory, 40).q, {});
 }
 
 // The four-bar's run from q0 with rates 1e-4 x the mode's shape.
@@ -194,7 +194,7 @@ TEST(Modes, FreeFloatingBusHasSixRigidBodyModes) {
   const sim::Scene scene = sim::load_builtin_scene("zfold_free", {{"run.t_end", "12"}});
   const sim::RunResult run = sim::simulate(scene, scene.run);
   ASSERT_EQ(run.status, sim::RunStatus::finished);
-  const sim::LinearizationState state = sim::state_of_run(scene, run, scene.run.t_end);
+  const sim::LinearizationState state = sim::state_of_run(scene, run.trajectory, scene.run.t_end);
   const sim::ModesResult r = sim::linear_modes(scene, state.q, state.engaged);
   ASSERT_EQ(r.modes.size(), 10u);
   for (int k = 0; k < 6; ++k) EXPECT_EQ(r.modes[k].kind, sim::ModeKind::rigid_body) << k;
@@ -203,14 +203,14 @@ TEST(Modes, FreeFloatingBusHasSixRigidBodyModes) {
   // Free-free: the wing's first mode stiffer than on a clamped bus.
   const sim::Scene clamped = sim::load_builtin_scene("zfold", {{"run.t_end", "12"}});
   const sim::RunResult clamped_run = sim::simulate(clamped, clamped.run);
-  const sim::LinearizationState at = sim::state_of_run(clamped, clamped_run, 12);
+  const sim::LinearizationState at = sim::state_of_run(clamped, clamped_run.trajectory, 12);
   EXPECT_GT(elastic[0]->frequency_hz, sim::linear_modes(clamped, at.q, at.engaged).modes[0].frequency_hz);
 }
 
 TEST(Modes, CompliantPantographIsElasticWhereTheRigidOnesLoopsAreWeak) {
   const sim::Scene compliant = sim::load_builtin_scene("pantograph_compliant");
   const sim::RunResult run = sim::simulate(compliant, compliant.run);
-  const sim::LinearizationState state = sim::state_of_run(compliant, run, compliant.run.t_end);
+  const sim::LinearizationState state = sim::state_of_run(compliant, run.trajectory, compliant.run.t_end);
   const sim::ModesResult c = sim::linear_modes(compliant, state.q, state.engaged);
   ASSERT_EQ(c.modes.size(), 8u);
   EXPECT_EQ(elastic_modes(c).size(), 8u);
@@ -218,14 +218,14 @@ TEST(Modes, CompliantPantographIsElasticWhereTheRigidOnesLoopsAreWeak) {
   // carry nothing.
   const sim::Scene zfold = sim::load_builtin_scene("zfold");
   const sim::RunResult zrun = sim::simulate(zfold, zfold.run);
-  const sim::LinearizationState zstate = sim::state_of_run(zfold, zrun, zfold.run.t_end);
+  const sim::LinearizationState zstate = sim::state_of_run(zfold, zrun.trajectory, zfold.run.t_end);
   EXPECT_NEAR(c.modes[0].frequency_hz, sim::linear_modes(zfold, zstate.q, zstate.engaged).modes[0].frequency_hz,
               1e-4);
   // The rigid pantograph latched sits near its branch point: the loops
   // hold some directions only weakly, and it says so.
   const sim::Scene rigid = sim::load_builtin_scene("pantograph");
   const sim::RunResult rrun = sim::simulate(rigid, rigid.run);
-  const sim::LinearizationState rstate = sim::state_of_run(rigid, rrun, rigid.run.t_end);
+  const sim::LinearizationState rstate = sim::state_of_run(rigid, rrun.trajectory, rigid.run.t_end);
   const sim::ModesResult r = sim::linear_modes(rigid, rstate.q, rstate.engaged);
   EXPECT_GT(r.weak_loop_directions, 0);
 }

@@ -8,7 +8,7 @@
 
 #include "cli.hpp"
 #include "commands.hpp"
-#include "interrupt.hpp"
+#include "modes_state.hpp"
 #include "scene_options.hpp"
 #include "unfurl/io/modes_files.hpp"
 #include "unfurl/io/output_file.hpp"
@@ -32,42 +32,11 @@ const char* kHelp =
     "\n"
     "options:\n"
     "  --out DIR             where modes.csv and modes.json go (default modes)\n"
-    "  --at T                the state of a run of the scene at time T (s), with the latches\n"
-    "                        engaged by then; linearized there as it is unless --settle\n"
-    "  --q NAME=VALUE,...    positions of one-coordinate joints (the rest as the scene starts),\n"
-    "                        latches engaged where their joints are at or past their positions;\n"
-    "                        linearized there as it is unless --settle\n"
-    "  --settle              solve for the static equilibrium near the state first\n"
-    "  --no-settle           linearize at the state as it is\n"
+    "%s"
     "%s"
     "  --quiet               print nothing but errors\n"
     "\n"
     "Exit status: 0 done, 1 the run or the linearization failed, 2 bad scene, 64 bad usage.\n";
-
-// NAME=VALUE,... over the scene's initial positions.
-std::vector<double> given_positions(const sim::Scene& scene, const std::string& text) {
-  std::vector<double> q = scene.q0;
-  std::stringstream items(text);
-  for (std::string item; std::getline(items, item, ',');) {
-    const std::size_t eq = item.find('=');
-    if (eq == std::string::npos) throw UsageError("--q expects NAME=VALUE,..., got '" + item + "'");
-    const std::string name = item.substr(0, eq);
-    const std::optional<int> j = scene.model.find_joint(name);
-    if (!j || !scene.model.joints[*j].is_scalar())
-      throw UsageError("--q: no one-coordinate joint '" + name + "' in the scene");
-    std::size_t used = 0;
-    double value = 0;
-    try {
-      value = std::stod(item.substr(eq + 1), &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != item.size() - eq - 1 || !std::isfinite(value))
-      throw UsageError("--q: '" + item.substr(eq + 1) + "' is not a number (" + name + ")");
-    q[scene.model.position_of(*j).value] = value;
-  }
-  return q;
-}
 
 // The shape's three largest entries, in the coordinates' sizes.
 std::string shape_summary(const sim::Model& model, const sim::Mode& mode, double length) {
@@ -121,54 +90,24 @@ void print_modes(const sim::Scene& scene, const sim::ModesResult& r, const std::
 
 int command_modes(const std::vector<std::string>& argv) {
   std::set<std::string> valued = scene_flags();
-  valued.insert({"--out", "--at", "--q"});
-  const Args args(argv, valued, {"--help", "-h", "--quiet", "--settle", "--no-settle"});
+  valued.insert("--out");
+  valued.insert(modes_state_flags().begin(), modes_state_flags().end());
+  std::set<std::string> switches{"--help", "-h", "--quiet"};
+  switches.insert(modes_state_switches().begin(), modes_state_switches().end());
+  const Args args(argv, valued, switches);
   if (args.has("--help") || args.has("-h")) {
-    std::printf(kHelp, scene_flags_help());
+    std::printf(kHelp, modes_state_help(), scene_flags_help());
     return 0;
   }
   if (args.positionals().size() > 1) throw UsageError("modes takes one SCENE (see --help)");
-  if (args.has("--at") && args.has("--q")) throw UsageError("give --at or --q, not both");
-  if (args.has("--settle") && args.has("--no-settle")) throw UsageError("give --settle or --no-settle, not both");
   const std::optional<std::string> scene_arg =
       args.positionals().empty() ? std::nullopt : std::optional(args.positionals()[0]);
   const sim::Scene scene = load_scene(scene_arg, args);
   const std::string dir = args.get("--out").value_or("modes");
-  const std::optional<double> at = args.number("--at");
-  if (at && !(*at >= 0)) throw UsageError("--at expects a time >= 0");
 
-  sim::LinearizationState state;
   std::string described;
-  if (const auto q = args.get("--q")) {
-    state = sim::given_state(scene, given_positions(scene, *q));
-    described = "the given positions";
-  } else {
-    sim::RunSettings run = scene.run;
-    if (at) run.t_end = std::max(*at, run.sample);
-    const InterruptScope interrupt;
-    sim::RunObserver observer;
-    observer.cancel = &interrupt.flag();
-    const sim::RunResult result = sim::simulate(scene, run, observer);
-    if (result.status == sim::RunStatus::cancelled) return interrupt.exit_status();
-    if (result.status == sim::RunStatus::failed) {
-      std::fprintf(stderr, "unfurl modes: the run to the state failed: %s\n", sim::describe(result.failure).c_str());
-      return 1;
-    }
-    state = sim::state_of_run(scene, result, at.value_or(run.t_end));
-    char text[96];
-    std::snprintf(text, sizeof text, "the run's state at t = %g s", state.t);
-    described = text;
-  }
-  sim::ModesSettings settings;
-  settings.settle = args.has("--settle") || (!args.has("--no-settle") && !at && !args.has("--q"));
-  if (settings.settle) described += ", settled to its static equilibrium";
   sim::ModesResult modes;
-  try {
-    modes = sim::linear_modes(scene, state.q, state.engaged, settings);
-  } catch (const std::runtime_error& e) {
-    std::fprintf(stderr, "unfurl modes: %s\n", e.what());
-    return 1;
-  }
+  if (const int code = scene_modes(scene, args, modes, described)) return code;
   io::make_directory(dir);
   io::write_modes_csv(scene, modes, dir + "/modes.csv");
   io::write_modes_json(scene, modes, described, dir + "/modes.json");

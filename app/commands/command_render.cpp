@@ -13,6 +13,8 @@
 #include "unfurl/render/frame_renderer.hpp"
 #include "unfurl/render/gl_context.hpp"
 #include "interrupt.hpp"
+#include "modes_state.hpp"
+#include "unfurl/sim/modes.hpp"
 #include "unfurl/io/output_file.hpp"
 #include "unfurl/io/png_file.hpp"
 #include "progress.hpp"
@@ -33,6 +35,7 @@ const char* kHelp =
     "                     [--video FILE.mp4] [--camera NAME|AZ,EL,DIST] [--orthographic] [--plots] [--no-frames]\n"
     "                     [--camera-frame bus|inertial]\n"
     "                     [--trajectory FILE] [scene options]\n"
+    "       unfurl render [SCENE] --mode K [--mode-amplitude A] [--mode-period P] [--at T | --q ...]\n"
     "\n"
     "Simulates the scene (or reads a trajectory.csv written by `unfurl simulate`) and draws it\n"
     "offscreen: no display is needed.\n"
@@ -57,6 +60,12 @@ const char* kHelp =
     "  --trajectory FILE     draw this trajectory.csv instead of simulating (events.csv and\n"
     "                        loads.csv beside it give the latch marks and the loads plot); SCENE\n"
     "                        must be the scene it was made from\n"
+    "  --mode K              draw mode K (1, 2, ... as `unfurl modes` lists them) instead of a run:\n"
+    "                        one cycle of q(t) = q_eq + A sin(2 pi t / P) shape, labelled with its\n"
+    "                        frequency and damping\n"
+    "  --mode-amplitude A    the shape's largest coordinate, rad (default 0.1)\n"
+    "  --mode-period P       seconds per drawn cycle, whatever the frequency (default 2)\n"
+    "%s"
     "%s"
     "\n"
     "Frames are frame_00000.png, ... at t = T0 + k / F, interpolated from the trajectory.\n";
@@ -77,10 +86,14 @@ void remove_stale_frames(const std::string& dir, std::size_t written) {
 int command_render(const std::vector<std::string>& argv) {
   std::set<std::string> valued = scene_flags();
   valued.insert(
-      {"--out", "--fps", "--size", "--from", "--to", "--video", "--camera", "--camera-frame", "--trajectory", "--gl"});
-  const Args args(argv, valued, {"--help", "-h", "--plots", "--no-frames", "--quiet", "--orthographic"});
+      {"--out", "--fps", "--size", "--from", "--to", "--video", "--camera", "--camera-frame", "--trajectory", "--gl",
+       "--mode", "--mode-amplitude", "--mode-period"});
+  valued.insert(modes_state_flags().begin(), modes_state_flags().end());
+  std::set<std::string> switches{"--help", "-h", "--plots", "--no-frames", "--quiet", "--orthographic"};
+  switches.insert(modes_state_switches().begin(), modes_state_switches().end());
+  const Args args(argv, valued, switches);
   if (args.has("--help") || args.has("-h")) {
-    std::printf(kHelp, scene_flags_help());
+    std::printf(kHelp, modes_state_help(), scene_flags_help());
     return 0;
   }
   if (args.positionals().size() > 1) throw UsageError("render takes one SCENE (see --help)");
@@ -97,7 +110,33 @@ int command_render(const std::vector<std::string>& argv) {
   // computed is drawn and the video is finished with the frames so far.
   const InterruptScope interrupt;
   sim::Trajectory trajectory;
-  if (const auto path = args.get("--trajectory")) {
+  std::string caption;  // a mode's, in place of the time
+  const bool mode = args.has("--mode");
+  if (!mode && (args.has("--mode-amplitude") || args.has("--mode-period") || args.has("--at") || args.has("--q")))
+    throw UsageError("--mode-amplitude, --mode-period, --at and --q go with --mode");
+  if (mode && (args.has("--trajectory") || args.has("--plots")))
+    throw UsageError("--mode draws a mode, not a run: no --trajectory or --plots");
+  if (mode) {
+    const double k = args.number("--mode", 0), amplitude = args.number("--mode-amplitude", 0.1),
+                 period = args.number("--mode-period", 2);
+    if (!(k >= 1) || k != std::floor(k)) throw UsageError("--mode expects a mode number 1, 2, ...");
+    if (!(amplitude > 0) || !(period > 0)) throw UsageError("--mode-amplitude and --mode-period expect numbers > 0");
+    sim::ModesResult modes;
+    std::string described;
+    if (const int code = scene_modes(scene, args, modes, described)) return code;
+    if (k > static_cast<double>(modes.modes.size()))
+      throw UsageError("--mode " + std::to_string(static_cast<int>(k)) + ": the scene has " +
+                       std::to_string(modes.modes.size()) + " modes");
+    const sim::Mode& m = modes.modes[static_cast<int>(k) - 1];
+    trajectory = sim::mode_animation(scene, modes, static_cast<int>(k) - 1, amplitude, period, 240);
+    char text[128];
+    if (m.kind == sim::ModeKind::elastic)
+      std::snprintf(text, sizeof text, "mode %d: %.4g Hz, damping %.3g", static_cast<int>(k), m.frequency_hz,
+                    m.damping_ratio);
+    else
+      std::snprintf(text, sizeof text, "mode %d: %s", static_cast<int>(k), sim::mode_kind_name(m.kind));
+    caption = text;
+  } else if (const auto path = args.get("--trajectory")) {
     trajectory = io::read_trajectory_csv(scene, *path);
   } else {
     Progress progress("simulating " + scene.name, scene.run.t_end);
@@ -135,7 +174,10 @@ int command_render(const std::vector<std::string>& argv) {
   for (std::size_t k = 0; k < times.size() && !interrupt.flag().load(); ++k, ++drawn) {
     trajectory.coordinates_at(times[k], q);
     render::poses_in_camera_frame(options.camera_frame, scene.model, q.data(), poses);
-    renderer.frame(poses, times[k], camera, image);
+    if (caption.empty())
+      renderer.frame(poses, times[k], camera, image);
+    else
+      renderer.frame(poses, caption, camera, image);
     if (write_frames) {
       char name[32];
       std::snprintf(name, sizeof name, "/frame_%05zu.png", k);

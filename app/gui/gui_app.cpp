@@ -151,6 +151,11 @@ void GuiApp::layout_and_panels(Requests& requests) {
       ImGui::EndTabItem();
     }
     state_.select_runs_tab = false;
+    if (ImGui::BeginTabItem("Modes", nullptr, state_.modes.select_tab ? ImGuiTabItemFlags_SetSelected : 0)) {
+      modes_panel(state_, requests);
+      ImGui::EndTabItem();
+    }
+    state_.modes.select_tab = false;
     if (state_.study &&
         ImGui::BeginTabItem("Study", nullptr, state_.select_study_tab ? ImGuiTabItemFlags_SetSelected : 0)) {
       study_panel(state_, requests);
@@ -234,6 +239,8 @@ void GuiApp::apply(const Requests& r) {
       state_.notice = e.what();
     }
   }
+  if (r.compute_modes) compute_modes();
+  if (r.show_mode) show_mode(*r.show_mode);
   if (r.cancel_export && export_job_) export_job_->cancel();
   if (r.export_range && !export_job_) {
     try {
@@ -250,7 +257,7 @@ void GuiApp::apply(const Requests& r) {
 }
 
 bool GuiApp::busy() const {
-  return state_.playing || !state_.run_settled() ||
+  return state_.playing || state_.modes.shown >= 0 || !state_.run_settled() ||
          export_job_ || (!script_.finished() && !script_.idling()) || ImGui::GetIO().WantTextInput;
 }
 

@@ -50,6 +50,10 @@ class GuiApp : private ScriptTarget {
   // Fonts and sizes for the UI scale times the monitor's content scale.
   void apply_ui_scale();
   void advance_playback(double dt);
+  // The Modes tab (gui_app_modes.cpp): the modes of the current run's end,
+  // and mode k animated in the view (-1: the run again).
+  void compute_modes();
+  void show_mode(int k);
   void watch_scene_file();
   void draw_viewport_texture();
   void draw_plots_texture();
@@ -103,11 +107,12 @@ class GuiApp : private ScriptTarget {
     const render::SceneView* view = nullptr;
     int w = 0, h = 0;
     long generation = 0, samples = 0;
-    double play_time = 0;
+    double play_time = 0;  // or the mode animation's clock
+    int mode = -1;         // the mode animated
     std::array<float, 9> camera{};  // the camera and the frame it rides in
     bool operator==(const ViewportKey& o) const {
       return view == o.view && w == o.w && h == o.h && generation == o.generation && samples == o.samples &&
-             play_time == o.play_time && camera == o.camera;
+             play_time == o.play_time && mode == o.mode && camera == o.camera;
     }
   };
   ViewportKey viewport_key_;

@@ -2,9 +2,12 @@
 // window following it.
 #include "gui_app.hpp"
 
+#include <cmath>
+
 namespace unfurl::app {
 
 void GuiApp::advance_playback(double dt) {
+  if (state_.modes.shown >= 0) state_.modes.clock = std::fmod(state_.modes.clock + dt, ModesView::kPeriod);
   if (!state_.playing) return;
   const double t_end = state_.scene.run.t_end, next = state_.play_time + dt * state_.speed;
   // While the run computes, playback waits at what is known; the play-head

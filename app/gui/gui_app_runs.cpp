@@ -53,6 +53,8 @@ void GuiApp::sync_run() {
     return;
   }
   if (state_.generation != before && state_.ghost.samples.size() < 2) state_.ghost = sim::Trajectory{};
+  // A mode of an earlier run is not this one's: the view goes back to the run.
+  if (state_.generation != before) state_.modes.shown = -1;
 }
 
 }  // namespace unfurl::app

@@ -11,7 +11,10 @@ namespace unfurl::app {
 
 void GuiApp::current_poses(std::vector<sim::Pose>& poses) const {
   std::vector<double> q = state_.scene.q0;
-  if (!state_.trajectory.empty()) state_.trajectory.coordinates_at(state_.play_time, q);
+  if (state_.modes.shown >= 0)
+    state_.modes.animation.coordinates_at(state_.modes.clock, q);
+  else if (!state_.trajectory.empty())
+    state_.trajectory.coordinates_at(state_.play_time, q);
   render::poses_in_camera_frame(state_.camera_frame, state_.scene.model, q.data(), poses);
 }
 
@@ -58,7 +61,8 @@ void GuiApp::draw_viewport_texture() {
                         h,
                         state_.generation,
                         past_computed ? static_cast<long>(tr.samples.size()) : -1L,
-                        state_.play_time,
+                        state_.modes.shown >= 0 ? state_.modes.clock : state_.play_time,
+                        state_.modes.shown,
                         {c.target.x(), c.target.y(), c.target.z(), c.azimuth_deg, c.elevation_deg, c.distance,
                          c.fov_deg, c.orthographic ? 1.0f : 0.0f, static_cast<float>(state_.camera_frame)}};
   if (key == viewport_key_ && viewport_drawn_) return;

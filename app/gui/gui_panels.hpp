@@ -58,6 +58,10 @@ void study_panel(GuiState& state, Requests& requests);
 // (runs_panel.cpp).
 void runs_panel(GuiState& state, Requests& requests);
 
+// The Modes tab: compute the deployed state's modes, list them, animate
+// one in the view.
+void modes_panel(GuiState& state, Requests& requests);
+
 // Shows the file dialog for a path field, starting at the field's path.
 void open_file_dialog(GuiState& state, FileField field);
 

@@ -30,6 +30,8 @@
 //   unpin K|all           drop pinned run K (from 0) or all of them
 //   zoom T0 T1 | zoom all the plots' time span, as the mouse wheel sets it
 //   curves JOINT... | curves first12    the joints the plots draw
+//   modes                 compute the finished run's modes (the Modes tab's button)
+//   mode K                animate mode K (1, 2, ...) in the view; 0: the run again
 //   quit
 //
 // Blank lines and lines starting with # are skipped.

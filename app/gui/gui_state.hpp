@@ -17,6 +17,7 @@
 #include "file_dialog.hpp"
 #include "render_options.hpp"
 #include "run_comparison.hpp"
+#include "unfurl/sim/modes.hpp"
 #include "unfurl/sim/scene.hpp"
 #include "unfurl/sim/scene_file.hpp"
 #include "simulation_worker.hpp"
@@ -46,6 +47,8 @@ struct Requests {
   std::optional<std::string> save_trajectory;  // CSV of the current run
   std::optional<ExportRequest> export_range;   // frames / video of a time range
   bool cancel_export = false;
+  bool compute_modes = false;          // of the current run's end
+  std::optional<int> show_mode;        // animate mode k in the view; -1: the run again
 };
 
 struct ExportProgress {
@@ -63,6 +66,22 @@ struct ExportForm {
   float from = 0, to = 0, fps = 30;
   int size[2] = {1280, 720};
   bool with_video = true, frames = true;
+};
+
+// The Modes tab: the modes of the current run's deployed end (settled to
+// its static equilibrium), one of them animated in the view in place of
+// the run.
+struct ModesView {
+  std::optional<sim::ModesResult> result;
+  long generation = -1;      // the run they are of
+  std::string error;         // why they could not be computed
+  int shown = -1;            // the mode animated, or -1: the run
+  float amplitude = 0.1f;    // its largest coordinate, rad
+  double clock = 0;          // the animation's time, s
+  static constexpr double kPeriod = 2;  // s per drawn cycle
+  sim::Trajectory animation;
+  bool select_tab = false;   // bring the Modes tab to the front once
+  bool current(long generation_now) const { return result && generation == generation_now; }
 };
 
 // Which field a file dialog's choice goes to.
@@ -153,6 +172,7 @@ struct GuiState {
 
   ExportForm export_form;
   ExportProgress export_progress;
+  ModesView modes;
 
   // The last requested run has run to its end (finished or failed): it is
   // neither computing nor waiting for the simulation thread to take it.

@@ -46,6 +46,15 @@ void ScriptRunner::step(ScriptTarget& target, double now) {
       state.speed = std::stof(arg(0));
     } else if (c.name == "loop") {
       state.loop = arg(0) == "on";
+    } else if (c.name == "modes") {
+      Requests r;
+      r.compute_modes = true;
+      target.request(r);
+      state.modes.select_tab = true;
+    } else if (c.name == "mode") {  // 1, 2, ...; 0: the run again
+      Requests r;
+      r.show_mode = std::stoi(arg(0)) - 1;
+      target.request(r);
     } else if (c.name == "scrub") {
       state.play_time = std::stod(arg(0));
     } else if (c.name == "browse") {

@@ -56,6 +56,12 @@ void write_session_report(const GuiState& state, const std::string& path) {
   json.value("run_wall_time_s", state.progress.wall_time_s).value("run_steps", state.progress.steps);
   json.value("edit_to_curves_s", state.curves_at > state.edited_at ? state.curves_at - state.edited_at : -1.0);
   json.value("play_time", state.play_time);
+  if (state.modes.current(state.generation)) {
+    json.begin_array("modes_hz");
+    for (const sim::Mode& m : state.modes.result->modes) json.value("", m.frequency_hz);
+    json.end_array();
+  }
+  json.value("mode_shown", state.modes.shown + 1).value("modes_error", state.modes.error);
   const std::vector<render::PlotKind> kinds = render::plot_kinds(state.scene);
   const auto tab = static_cast<std::size_t>(state.plot_tab);
   json.value("plot", tab < kinds.size() ? render::plot_kind_name(kinds[tab]) : "all");

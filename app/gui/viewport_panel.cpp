@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "panel_widgets.hpp"
 #include "unfurl/io/output_file.hpp"
@@ -45,7 +46,16 @@ void viewport_panel(GuiState& state, unsigned texture, const Eigen::AlignedBox3f
   const ImVec2 size = ImGui::GetContentRegionAvail();
   state.viewport_width = std::max(16, static_cast<int>(size.x));
   state.viewport_height = std::max(16, static_cast<int>(size.y));
+  const ImVec2 corner = ImGui::GetCursorScreenPos();
   ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(texture)), size, ImVec2(0, 1), ImVec2(1, 0));
+  if (state.modes.shown >= 0 && state.modes.result) {
+    const sim::Mode& m = state.modes.result->modes[state.modes.shown];
+    char label[96];
+    std::snprintf(label, sizeof label, "mode %d: %.4g Hz (%s), animated", state.modes.shown + 1, m.frequency_hz,
+                  sim::mode_kind_name(m.kind));
+    ImGui::GetWindowDrawList()->AddText(ImVec2(corner.x + em(8), corner.y + em(6)), IM_COL32(255, 255, 255, 255),
+                                        label);
+  }
   if (!ImGui::IsItemHovered()) return;
   const ImGuiIO& io = ImGui::GetIO();
   render::Camera& c = state.camera;

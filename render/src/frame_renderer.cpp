@@ -12,9 +12,8 @@ FrameRenderer::FrameRenderer(const sim::Scene& scene, const sim::SceneVisuals& v
       view_(std::make_unique<SceneView>(scene, visuals, meshes_)),
       imgui_(std::max(14.0f, height / 40.0f)) {}
 
-void draw_overlay(ImDrawList* draw, const std::string& scene_name, double t) {
-  char time[64];
-  std::snprintf(time, sizeof time, "t = %.3f s", t);
+void draw_overlay(ImDrawList* draw, const std::string& scene_name, const std::string& caption) {
+  const char* time = caption.c_str();
   const float font = ImGui::GetFontSize();
   const ImVec2 at(0.8f * font, 0.6f * font);
   const ImVec2 name_size = ImGui::CalcTextSize(scene_name.c_str()), time_size = ImGui::CalcTextSize(time);
@@ -25,11 +24,22 @@ void draw_overlay(ImDrawList* draw, const std::string& scene_name, double t) {
   draw->AddText(ImVec2(at.x, at.y + 1.2f * font), IM_COL32(210, 220, 255, 255), time);
 }
 
+std::string time_caption(double t) {
+  char time[64];
+  std::snprintf(time, sizeof time, "t = %.3f s", t);
+  return time;
+}
+
 void FrameRenderer::frame(const std::vector<sim::Pose>& poses, double t, const Camera& camera, Image& out) {
+  frame(poses, time_caption(t), camera, out);
+}
+
+void FrameRenderer::frame(const std::vector<sim::Pose>& poses, const std::string& caption, const Camera& camera,
+                          Image& out) {
   framebuffer_.bind();
   view_->draw(poses, camera, width(), height());
   imgui_.begin_frame(width(), height());
-  draw_overlay(imgui_.draw_list(), scene_name_, t);
+  draw_overlay(imgui_.draw_list(), scene_name_, caption);
   imgui_.end_frame();
   framebuffer_.resolve();
   framebuffer_.read(out);

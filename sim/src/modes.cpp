@@ -203,8 +203,7 @@ const char* mode_kind_name(ModeKind kind) {
   return "?";
 }
 
-LinearizationState state_of_run(const Scene& scene, const RunResult& run, double t) {
-  const Trajectory& tr = run.trajectory;
+LinearizationState state_of_run(const Scene& scene, const Trajectory& tr, double t) {
   if (tr.empty()) throw std::runtime_error("the run recorded no state");
   LinearizationState state;
   state.t = std::min(t, tr.t_end());
@@ -225,6 +224,29 @@ LinearizationState given_state(const Scene& scene, const std::vector<double>& q)
     state.engaged.push_back(start * now <= 0);
   }
   return state;
+}
+
+Trajectory mode_animation(const Scene& scene, const ModesResult& modes, int k, double amplitude, double period,
+                          int samples) {
+  const Model& model = scene.model;
+  if (k < 0 || k >= static_cast<int>(modes.modes.size())) throw std::runtime_error("no such mode");
+  Linearizer closer(scene, modes.engaged);
+  Trajectory tr;
+  tr.layout = closer.dynamics().layout();
+  const Eigen::VectorXd& shape = modes.modes[k].shape;
+  for (int s = 0; s <= samples; ++s) {
+    Sample sample;
+    sample.t = period * s / samples;
+    const double phase = 2 * M_PI * sample.t / period;
+    const std::vector<double> q = closer.closed(displaced_positions(model, modes.q, amplitude * std::sin(phase) * shape));
+    sample.y.assign(tr.layout.size(), 0.0);
+    std::copy(q.begin(), q.end(), sample.y.begin() + tr.layout.q());
+    const Eigen::VectorXd rate = amplitude * (2 * M_PI / period) * std::cos(phase) * shape;
+    sample.q_dot.resize(model.nq);
+    position_rates(model, q.data(), rate.data(), sample.q_dot.data());
+    tr.samples.push_back(std::move(sample));
+  }
+  return tr;
 }
 
 std::vector<double> displaced_positions(const Model& model, const std::vector<double>& q, const Eigen::VectorXd& x) {

@@ -26,6 +26,8 @@ class FrameRenderer {
 
   // The scene at these poses, labelled with the scene name and time.
   void frame(const std::vector<sim::Pose>& poses, double t, const Camera& camera, Image& out);
+  // The same with another second line ("mode 1: 0.413 Hz").
+  void frame(const std::vector<sim::Pose>& poses, const std::string& caption, const Camera& camera, Image& out);
 
  private:
   std::string scene_name_;
@@ -35,7 +37,9 @@ class FrameRenderer {
   ImGuiLayer imgui_;
 };
 
-// Writes the scene name and time in the top-left corner.
-void draw_overlay(ImDrawList* draw, const std::string& scene_name, double t);
+// Writes the scene name and a caption (the time) in the top-left corner.
+void draw_overlay(ImDrawList* draw, const std::string& scene_name, const std::string& caption);
+// "t = 1.500 s".
+std::string time_caption(double t);
 
 }  // namespace unfurl::render

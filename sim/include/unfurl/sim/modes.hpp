@@ -90,10 +90,17 @@ struct LinearizationState {
 };
 // A run's state at time t (its last sample where t is beyond it), with the
 // latches that had engaged by then.
-LinearizationState state_of_run(const Scene& scene, const RunResult& run, double t);
+LinearizationState state_of_run(const Scene& scene, const Trajectory& run, double t);
 // Given positions, with the latches engaged whose joints are at or past
 // their positions (on the side away from where they start).
 LinearizationState given_state(const Scene& scene, const std::vector<double>& q);
+
+// Mode k (0-based) drawn as a motion, for pictures: q(t) = q (+) a sin(2 pi
+// t / period) shape, put back on the loops, at samples + 1 instants over
+// one period; a in rad (the shape's largest entry; a length over the
+// mechanism's length). The linear mode at a visible amplitude, not a run.
+Trajectory mode_animation(const Scene& scene, const ModesResult& modes, int k, double amplitude, double period,
+                          int samples);
 
 // Positions q displaced along velocity coordinates x (q (+) x: a joint's
 // rates integrated for unit time to first order, quaternions normalized).
