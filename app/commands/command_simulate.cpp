@@ -74,9 +74,9 @@ void print_hinge_force_peaks(const sim::RunSummary& s) {
 }
 
 // Each element peak quantity's largest (a bushing's force), by name.
-void print_element_peaks(const sim::RunSummary& s) {
+void print_element_peaks(const std::vector<sim::RunSummary::ElementPeakValue>& peaks, const char* label) {
   std::vector<const sim::RunSummary::ElementPeakValue*> largest_of;
-  for (const auto& e : s.element_peaks) {
+  for (const auto& e : peaks) {
     if (std::isnan(e.peak.t)) continue;
     auto same = std::find_if(largest_of.begin(), largest_of.end(), [&](auto* o) { return o->quantity == e.quantity; });
     if (same == largest_of.end())
@@ -87,8 +87,10 @@ void print_element_peaks(const sim::RunSummary& s) {
   for (const auto* e : largest_of) {
     std::string what = e->quantity.substr(e->quantity.rfind("peak_", 0) == 0 ? 5 : 0);
     std::replace(what.begin(), what.end(), '_', ' ');
-    std::printf("             peak %s %.4g %s at %s, t = %.6f s\n", what.c_str(), e->peak.value, e->unit.c_str(),
-                e->name.c_str(), e->peak.t);
+    std::printf("%-13speak %s %.4g %s at %s, t = %.6f s", e == largest_of.front() ? label : "", what.c_str(),
+                e->peak.value, e->unit.c_str(), e->name.c_str(), e->peak.t);
+    if (e->quantity == "peak_acceleration") std::printf(" (%.3g g)", e->peak.value / sim::kStandardGravity);
+    std::printf("\n");
   }
 }
 
@@ -122,14 +124,16 @@ void print_summary(const sim::Scene& scene, const sim::RunResult& result, const 
     std::printf("loads        peak latch torque %.4g N m at %s, t = %.6f s\n", latch->peak.value, latch->joint.c_str(),
                 latch->peak.t);
   print_hinge_force_peaks(s);
-  print_element_peaks(s);
+  print_element_peaks(s.element_peaks, "");
+  print_element_peaks(s.sensor_peaks, "sensors");
   std::printf("energy       %.9g J at t = 0, %.9g J at t = %g s, %.9g J dissipated\n", s.energy_initial, s.energy_final,
               s.t_reached, s.energy_dissipated);
   if (s.free_bus)
     std::printf("bus          turned %.4g rad, peak rate %.4g rad/s; momentum drift %.2g (linear), %.2g (angular)\n",
                 s.free_bus->final_attitude_change, s.free_bus->peak_rate, s.free_bus->linear_momentum_drift,
                 s.free_bus->angular_momentum_drift);
-  std::printf("files        %s/{trajectory,loads,events}.csv, %s/summary.json\n", dir.c_str(), dir.c_str());
+  std::printf("files        %s/{trajectory,loads,events%s}.csv, %s/summary.json\n", dir.c_str(),
+              scene.sensors.empty() ? "" : ",sensors", dir.c_str());
 }
 
 }  // namespace
@@ -161,6 +165,7 @@ int command_simulate(const std::vector<std::string>& argv) {
   io::write_trajectory_csv(scene, result.trajectory, dir + "/trajectory.csv");
   io::write_loads_csv(scene, result.trajectory, dir + "/loads.csv");
   io::write_events_csv(scene, result.trajectory, dir + "/events.csv");
+  if (!scene.sensors.empty()) io::write_sensors_csv(scene, result.trajectory, dir + "/sensors.csv");
   io::write_summary_json(scene, result, summary, dir + "/summary.json");
   if (!args.has("--quiet")) print_summary(scene, result, summary, dir);
   if (result.status == sim::RunStatus::failed) {

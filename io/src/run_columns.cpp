@@ -158,6 +158,18 @@ std::vector<RunColumn> load_file_columns(const sim::Scene& scene, const sim::Tra
   return out;
 }
 
+std::vector<RunColumn> sensor_file_columns(const sim::Trajectory& tr) {
+  std::vector<RunColumn> out;
+  add(
+      out, "t", "s", "", [](const sim::Sample& s) { return s.t; }, [](sim::Sample& s, double x) { s.t = x; });
+  for (std::size_t c = 0; c < tr.sensor_columns.size(); ++c)
+    add(
+        out, tr.sensor_columns[c].name, tr.sensor_columns[c].unit, tr.sensor_columns[c].frame,
+        [c](const sim::Sample& s) { return s.loads.sensor[c]; },
+        [c](sim::Sample& s, double x) { s.loads.sensor[c] = x; });
+  return out;
+}
+
 sim::Sample empty_sample(const sim::Scene& scene, const sim::Trajectory& tr) {
   sim::Sample s;
   s.y.assign(tr.layout.size(), 0.0);
@@ -166,6 +178,7 @@ sim::Sample empty_sample(const sim::Scene& scene, const sim::Trajectory& tr) {
   s.loads.element.assign(tr.load_columns.size(), 0.0);
   s.loads.reaction.assign(scene.model.size(), sim::Vec6::Zero());
   s.loads.loop_force.assign(tr.loop_components.size(), 0.0);
+  s.loads.sensor.assign(tr.sensor_columns.size(), 0.0);
   return s;
 }
 

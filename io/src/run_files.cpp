@@ -142,6 +142,10 @@ void write_loads_csv(const sim::Scene& scene, const sim::Trajectory& trajectory,
   write_columns(load_file_columns(scene, trajectory), trajectory, path);
 }
 
+void write_sensors_csv(const sim::Scene&, const sim::Trajectory& trajectory, const std::string& path) {
+  write_columns(sensor_file_columns(trajectory), trajectory, path);
+}
+
 sim::Trajectory read_trajectory_csv(const sim::Scene& scene, const std::string& path) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error(path + ": cannot open the trajectory");
@@ -152,6 +156,7 @@ sim::Trajectory read_trajectory_csv(const sim::Scene& scene, const std::string& 
   tr.layout.nq = model.nq;
   tr.layout.nv = model.nv;
   tr.load_columns = scene.load_columns();
+  tr.sensor_columns = sim::sensor_columns(scene.sensors);
   const std::filesystem::path dir = std::filesystem::path(path).parent_path();
   // loads.csv beside it, when there is one, says which loop components the
   // run kept.
@@ -171,6 +176,11 @@ sim::Trajectory read_trajectory_csv(const sim::Scene& scene, const std::string& 
   if (with_loads)
     read_columns((dir / "loads.csv").string(), load_file_columns(scene, tr), loads, header_of(loads_line),
                  empty_sample(scene, tr), tr.samples, false);
+  std::ifstream sensors((dir / "sensors.csv").string());
+  std::string sensors_line;
+  if (!tr.sensor_columns.empty() && sensors && std::getline(sensors, sensors_line))
+    read_columns((dir / "sensors.csv").string(), sensor_file_columns(tr), sensors, header_of(sensors_line),
+                 empty_sample(scene, tr), tr.samples, false);
   return tr;
 }
 
@@ -184,10 +194,10 @@ void write_events_csv(const sim::Scene& scene, const sim::Trajectory& trajectory
 
 namespace {
 
-// The element peaks' quantities, each once, in order.
-std::vector<std::string> element_peak_quantities(const sim::RunSummary& summary) {
+// The peaks' quantities, each once, in order.
+std::vector<std::string> peak_quantities(const std::vector<sim::RunSummary::ElementPeakValue>& peaks) {
   std::vector<std::string> quantities;
-  for (const auto& e : summary.element_peaks)
+  for (const auto& e : peaks)
     if (std::find(quantities.begin(), quantities.end(), e.quantity) == quantities.end())
       quantities.push_back(e.quantity);
   return quantities;
@@ -218,12 +228,13 @@ void write_summary_units(JsonWriter& json, const sim::Scene& scene, const sim::R
   json.value("peak_hinge_force", "N").value("peak_hinge_moment", "N m");
   json.value("peak_hinge_force_indeterminate", "N").value("peak_hinge_moment_indeterminate", "N m");
   json.value("indeterminate_spans", "s");
-  for (const std::string& quantity : element_peak_quantities(summary))
-    for (const auto& e : summary.element_peaks)
-      if (e.quantity == quantity) {
-        json.value(quantity, e.unit);
-        break;
-      }
+  for (const auto* list : {&summary.element_peaks, &summary.sensor_peaks})
+    for (const std::string& quantity : peak_quantities(*list))
+      for (const auto& e : *list)
+        if (e.quantity == quantity) {
+          json.value(quantity, e.unit);
+          break;
+        }
   json.value("energy_initial", "J").value("energy_final", "J").value("energy_dissipated", "J");
   json.begin_object("final_q");
   for (int c = 0; c < m.nq; ++c) json.value(m.position_name(c), m.position_unit(c));
@@ -296,13 +307,17 @@ void write_summary_json(const sim::Scene& scene, const sim::RunResult& result, c
   peaks("peak_latch_torque", summary.peak_latch_torque);
   peaks("peak_hinge_force", summary.peak_hinge_force);
   peaks("peak_hinge_moment", summary.peak_hinge_moment);
-  for (const std::string& quantity : element_peak_quantities(summary)) {
-    json.begin_object(quantity);
-    for (const auto& e : summary.element_peaks)
-      if (e.quantity == quantity && !std::isnan(e.peak.t))
-        json.begin_object(e.name).value("value", e.peak.value).value("t", e.peak.t).end_object();
-    json.end_object();
-  }
+  for (const auto* list : {&summary.element_peaks, &summary.sensor_peaks})
+    for (const std::string& quantity : peak_quantities(*list)) {
+      json.begin_object(quantity);
+      for (const auto& e : *list) {
+        if (e.quantity != quantity || std::isnan(e.peak.t)) continue;
+        json.begin_object(e.name).value("value", e.peak.value).value("t", e.peak.t);
+        if (quantity == "peak_acceleration") json.value("g", e.peak.value / sim::kStandardGravity);
+        json.end_object();
+      }
+      json.end_object();
+    }
   if (summary.loads_determinate)
     json.value("loads_determinate", *summary.loads_determinate);
   else

@@ -113,6 +113,21 @@ void add_curves(PlotSpec& spec, PlotKind kind, const sim::Scene& scene, const si
           series(tr, "total + dissipated", palette(7), [](const sim::Sample& s) { return s.energy.balance(); }));
       added.back().dashed = true;
       break;
+    case PlotKind::sensors: {
+      // Each acceleration's magnitude in g.
+      int column = 0, k = 0;
+      for (const sim::Sensor& sensor : scene.sensors) {
+        for (const sim::SensorQuantity q : sensor.measures) {
+          if (q == sim::SensorQuantity::acceleration && !tr.empty() &&
+              column + 2 < static_cast<int>(tr.samples.front().loads.sensor.size()))
+            added.push_back(series(tr, sensor.name, palette(k++), [column](const sim::Sample& s) {
+              return Eigen::Map<const sim::Vec3>(s.loads.sensor.data() + column).norm() / sim::kStandardGravity;
+            }));
+          column += 3;
+        }
+      }
+      break;
+    }
     case PlotKind::bus: {
       if (!model.free_floating()) break;
       // The rotation vector (solid) and the body-frame rate (dashed).
@@ -185,6 +200,10 @@ PlotSpec trajectory_plot(PlotKind kind, const sim::Scene& scene, const sim::Traj
       spec.title = scene.name + (scene.latches().empty() ? ": hinge moments" : ": latch torques and hinge moments");
       spec.y_label = "N m (hinge moments about the hinge point)";
       break;
+    case PlotKind::sensors:
+      spec.title = scene.name + ": the sensors' accelerations";
+      spec.y_label = "|acceleration|, g";
+      break;
     case PlotKind::energy:
       spec.title = scene.name + ": energy";
       spec.y_label = "J";
@@ -214,6 +233,7 @@ const char* plot_kind_name(PlotKind kind) {
     case PlotKind::loads: return "loads";
     case PlotKind::energy: return "energy";
     case PlotKind::bus: return "bus";
+    case PlotKind::sensors: return "sensors";
   }
   return "?";
 }
@@ -224,14 +244,21 @@ std::vector<PlotKind> plot_kinds(const sim::Scene& scene) {
   kinds.push_back(PlotKind::loads);
   kinds.push_back(PlotKind::energy);
   if (scene.model.free_floating()) kinds.push_back(PlotKind::bus);
+  for (const sim::Sensor& sensor : scene.sensors)
+    if (std::count(sensor.measures.begin(), sensor.measures.end(), sim::SensorQuantity::acceleration) > 0) {
+      kinds.push_back(PlotKind::sensors);
+      break;
+    }
   return kinds;
 }
 
 std::vector<NamedPlot> trajectory_plots(const sim::Scene& scene, const sim::Trajectory& trajectory, int max_joints) {
-  static const char* files[] = {"angles.png", "rates.png", "residuals.png", "loads.png", "energy.png", "bus.png"};
+  static const char* files[] = {"angles.png", "rates.png", "residuals.png", "loads.png",
+                                "energy.png", "bus.png",   "sensors.png"};
   std::vector<NamedPlot> plots;
   for (PlotKind kind : plot_kinds(scene)) {
     if (kind == PlotKind::loads && (trajectory.empty() || trajectory.samples.front().loads.reaction.empty())) continue;
+    if (kind == PlotKind::sensors && (trajectory.empty() || trajectory.samples.front().loads.sensor.empty())) continue;
     PlotChoice choice;
     choice.max_joints = max_joints;
     plots.push_back({kind, files[static_cast<int>(kind)], trajectory_plot(kind, scene, trajectory, choice)});

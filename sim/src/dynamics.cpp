@@ -42,6 +42,7 @@ Dynamics::Dynamics(const Scene& scene)
   layout_.nv = scene_.model.nv;
   columns_ = scene_.load_columns(&element_columns_);
   element_peaks_ = scene_.element_peaks();
+  sensor_columns_ = sim::sensor_columns(scene_.sensors);
   bool dissipation_needs_poses = false;
   std::size_t most_columns = 0;
   for (std::size_t k = 0; k < scene_.elements.size(); ++k) {
@@ -309,6 +310,15 @@ bool Dynamics::loads(double, const double* y, Loads& out, std::vector<ClosureErr
   }
   out.loop_force.resize(L.m);
   for (int c = 0; c < L.m; ++c) out.loop_force[c] = -lambda_[c];
+  out.sensor.resize(sensor_columns_.size());
+  if (!scene_.sensors.empty()) {
+    if (!elements_need_poses_ && !regulator_) sweep_.poses(poses_);
+    double* reading = out.sensor.data();
+    for (const Sensor& s : scene_.sensors) {
+      s.read(poses_[s.body], v_[s.body], a_[s.body], reading);
+      reading += 3 * s.measures.size();
+    }
+  }
   if (!closure) return true;
   // evaluate() placed the bodies wherever a loop needs them.
   closure->resize(scene_.loops.size());

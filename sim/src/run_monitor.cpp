@@ -12,6 +12,8 @@ RunMonitor::RunMonitor(Dynamics& dynamics) : dynamics_(dynamics) {
   peaks_.hinge_force_indeterminate.resize(dynamics.model().size());
   peaks_.hinge_moment_indeterminate.resize(dynamics.model().size());
   peaks_.element.resize(dynamics.element_peaks().size());
+  sensor_peaks_ = dynamics.scene().sensor_peaks();
+  peaks_.sensor.resize(sensor_peaks_.size());
 }
 
 std::optional<double> RunMonitor::observe(double t, const double* y) {
@@ -23,6 +25,11 @@ std::optional<double> RunMonitor::observe(double t, const double* y) {
     double squares = 0;
     for (const int c : dynamics_.element_peaks()[k].columns) squares += loads_.element[c] * loads_.element[c];
     peaks_.element[k].update(std::sqrt(squares), t);
+  }
+  for (std::size_t k = 0; k < peaks_.sensor.size(); ++k) {
+    double squares = 0;
+    for (const int c : sensor_peaks_[k].columns) squares += loads_.sensor[c] * loads_.sensor[c];
+    peaks_.sensor[k].update(std::sqrt(squares), t);
   }
   const bool determinate = loads_.determinacy != Determinacy::indeterminate;
   if (loads_.determinacy == Determinacy::not_assessed) peaks_.loads_assessed = false;

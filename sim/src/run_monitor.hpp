@@ -35,6 +35,7 @@ class RunMonitor {
  private:
   Dynamics& dynamics_;
   RunPeaks peaks_;
+  std::vector<TrackedPeak> sensor_peaks_;
   Loads loads_;
   std::vector<ClosureError> closure_;
   bool in_indeterminate_span_ = false;

@@ -40,6 +40,20 @@ std::vector<TrackedPeak> Scene::element_peaks() const {
   return peaks;
 }
 
+std::vector<TrackedPeak> Scene::sensor_peaks() const {
+  std::vector<TrackedPeak> peaks;
+  int first_column = 0;
+  for (const Sensor& s : sensors) {
+    for (const ElementPeak& peak : s.peaks()) {
+      TrackedPeak tracked{peak.quantity, s.name, sensor_quantity_unit(s.measures[peak.first / 3]), {}};
+      for (int c = 0; c < peak.count; ++c) tracked.columns.push_back(first_column + peak.first + c);
+      peaks.push_back(std::move(tracked));
+    }
+    first_column += static_cast<int>(s.columns().size());
+  }
+  return peaks;
+}
+
 std::vector<std::string> Scene::element_paths(std::size_t k) const {
   const ForceElement& e = *elements[k];
   const std::string list = e.list(), handle = e.handle(model);

@@ -89,6 +89,14 @@ SceneBuilder& SceneBuilder::gravity(const Vec3& g) {
   return *this;
 }
 
+SceneBuilder& SceneBuilder::sensor(Sensor sensor, const std::string& body) {
+  const std::string field = "sensors[" + std::to_string(scene_.sensors.size()) + "]";
+  sensor.body = body_index(body, field + ".body");
+  if (sensor.body == kBase) throw SceneInvalid(field + ".body", "a sensor goes on a body, not the base");
+  scene_.sensors.push_back(std::move(sensor));
+  return *this;
+}
+
 SceneBuilder& SceneBuilder::loop(std::string name, const std::string& body, const std::string& image) {
   const std::string field = "loops[" + std::to_string(scene_.loops.size()) + "]";
   Loop loop;

@@ -67,6 +67,7 @@ class SceneReader : private input::YamlFields {
   void read_applied_forces(const YAML::Node& list, SceneBuilder& b) const;
   void read_latches(const YAML::Node& list, SceneBuilder& b) const;
   void read_loops(const YAML::Node& list, SceneBuilder& b) const;
+  void read_sensors(const YAML::Node& list, SceneBuilder& b) const;
   RegulatorSettings read_regulator(const YAML::Node& node) const;
   void read_initial(const YAML::Node& node, SceneBuilder& b) const;
   RunSettings read_run(const YAML::Node& node) const;
@@ -384,6 +385,41 @@ void SceneReader::read_loops(const YAML::Node& list, SceneBuilder& b) const {
   });
 }
 
+void SceneReader::read_sensors(const YAML::Node& list, SceneBuilder& b) const {
+  each(list, "sensors", {"name", "body", "point", "frame", "measure"},
+       [&](const YAML::Node& node, const std::string& field, std::size_t) {
+         Sensor s;
+         s.name = text(require(node, "name", field), field + ".name");
+         s.point = vec3_or(node, "point", Vec3::Zero(), field);
+         if (const YAML::Node frame = node["frame"]) {
+           const std::string f = text(frame, field + ".frame");
+           if (f != "body" && f != "inertial") fail(frame, field + ".frame", "expected body or inertial");
+           s.frame = f == "body" ? SensorFrame::body : SensorFrame::inertial;
+         }
+         if (const YAML::Node measure = node["measure"]) {
+           if (!measure.IsSequence() || measure.size() == 0)
+             fail(measure, field + ".measure",
+                  "expected a list of position, velocity, acceleration, angular_rate, angular_acceleration");
+           s.measures.clear();
+           for (std::size_t k = 0; k < measure.size(); ++k) {
+             const std::string item = input::index_field(field + ".measure", k);
+             const std::string name = text(measure[k], item);
+             bool known = false;
+             for (const SensorQuantity q : {SensorQuantity::position, SensorQuantity::velocity,
+                                            SensorQuantity::acceleration, SensorQuantity::angular_rate,
+                                            SensorQuantity::angular_acceleration})
+               if (name == sensor_quantity_name(q)) s.measures.push_back(q), known = true;
+             if (!known)
+               fail(measure[k], item,
+                    "'" + name + "': expected position, velocity, acceleration, angular_rate or angular_acceleration");
+           }
+         }
+         const std::string body = text(require(node, "body", field), field + ".body");
+         if (!b.has_body(body)) fail(node["body"], field + ".body", "unknown body '" + body + "'");
+         b.sensor(std::move(s), body);
+       });
+}
+
 RegulatorSettings SceneReader::read_regulator(const YAML::Node& node) const {
   check_keys(node, {"gains", "v_max", "p0", "p1", "regularization", "feedforward", "solver"}, "regulator");
   RegulatorSettings r;
@@ -488,7 +524,8 @@ SceneFile SceneReader::read(const std::string& text_in, const std::vector<Overri
   if (root["loads"]) fail(root["loads"], "loads", "renamed: the constant forces on bodies are `applied_forces:`");
   check_keys(root,
              {"name", "description", "base", "gravity", "bodies", "springs", "dampers", "friction", "point_springs",
-              "bushings", "applied_forces", "latches", "loops", "regulator", "initial", "closure_tolerance", "run"},
+              "bushings", "applied_forces", "latches", "loops", "sensors", "regulator", "initial", "closure_tolerance",
+              "run"},
              "");
   SceneBuilder b(root["name"] ? text(root["name"], "name") : "scene",
                  root["description"] ? text(root["description"], "description") : "");
@@ -508,6 +545,7 @@ SceneFile SceneReader::read(const std::string& text_in, const std::vector<Overri
     if (root["point_springs"]) read_point_springs(root["point_springs"], b);
     if (root["bushings"]) read_bushings(root["bushings"], b);
     if (root["loops"]) read_loops(root["loops"], b);
+    if (root["sensors"]) read_sensors(root["sensors"], b);
     if (root["regulator"]) b.regulator(read_regulator(root["regulator"]));
     if (root["initial"]) read_initial(root["initial"], b);
     if (root["closure_tolerance"]) b.closure_tolerance(number(root["closure_tolerance"], "closure_tolerance"));

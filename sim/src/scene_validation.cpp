@@ -177,6 +177,22 @@ void check_regulator(const RegulatorSettings& r) {
 
 // Refuses up front what cannot finish or cannot be stored: more samples
 // than max_samples, or more fixed RK4 steps than max_steps.
+// Named uniquely, on a body, measuring something, each thing once.
+void check_sensors(const Scene& scene) {
+  std::set<std::string> names;
+  for (std::size_t k = 0; k < scene.sensors.size(); ++k) {
+    const Sensor& s = scene.sensors[k];
+    const std::string field = "sensors[" + std::to_string(k) + "]";
+    check_name(s.name, field + ".name");
+    if (!names.insert(s.name).second) throw SceneInvalid(field + ".name", "a sensor named '" + s.name + "' already exists");
+    if (s.body < 0 || s.body >= scene.model.size()) throw SceneInvalid(field + ".body", "no such body");
+    if (!s.point.allFinite()) throw SceneInvalid(field + ".point", "must be finite");
+    if (s.measures.empty()) throw SceneInvalid(field + ".measure", "measures nothing");
+    const std::set<SensorQuantity> distinct(s.measures.begin(), s.measures.end());
+    if (distinct.size() != s.measures.size()) throw SceneInvalid(field + ".measure", "names a quantity twice");
+  }
+}
+
 void check_run(const RunSettings& run) {
   check_positive(run.t_end, "run.t_end");
   check_positive(run.rtol, "run.rtol");
@@ -244,6 +260,7 @@ void validate(Scene& scene) {
                            " (rad, or a distance over the mechanism's length): a loop opener than that is not "
                            "a loop (the regulator would snap it shut)");
   check_loops(scene);
+  check_sensors(scene);
   check_regulator(scene.regulator);
   check_run(scene.run);
 }

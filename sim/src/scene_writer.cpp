@@ -37,7 +37,10 @@ std::string quoted(const std::string& text) {
 
 // A 6 x 6 matrix: its diagonal when it is diagonal, else its rows.
 std::string matrix6(const Mat6& K) {
-  if (K.isDiagonal(0)) return numbers({K.diagonal().data(), K.diagonal().data() + 6});
+  if (K.isDiagonal(0)) {
+    const Vec6 diagonal = K.diagonal();  // a copy: the diagonal's own data has a stride
+    return numbers({diagonal.data(), diagonal.data() + 6});
+  }
   std::string out = "[";
   for (int i = 0; i < 6; ++i) {
     const Vec6 row = K.row(i).transpose();
@@ -223,6 +226,15 @@ std::string write_scene_text(const SceneFile& file, const std::string& comment) 
           << "}\n";
     regulator(out, scene.regulator);
     out << "closure_tolerance: " << format_number(scene.closure_tolerance) << "\n";
+  }
+  if (!scene.sensors.empty()) {
+    out << "\nsensors:\n";
+    for (const Sensor& s : scene.sensors) {
+      std::string measures;
+      for (const SensorQuantity q : s.measures) measures += (measures.empty() ? "" : ", ") + std::string(sensor_quantity_name(q));
+      out << "  - {name: " << s.name << ", body: " << m.bodies[s.body].name << ", point: " << vec(s.point)
+          << ", frame: " << sensor_frame_name(s.frame) << ", measure: [" << measures << "]}\n";
+    }
   }
   initial(out, scene);
   run(out, scene.run);

@@ -77,6 +77,7 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
                                    !scene.regulator.v_max.has_value(), scene.regulator.regularization};
   }
   trajectory.load_columns = dynamics.load_columns();
+  trajectory.sensor_columns = dynamics.sensor_columns();
 
   std::vector<double> y = dynamics.initial_state();
   std::vector<double> ys(y.size());

@@ -32,6 +32,9 @@ RunSummary summarize(const Scene& scene, const RunResult& result) {
   const std::vector<TrackedPeak> tracked = scene.element_peaks();
   for (std::size_t k = 0; k < p.element.size() && k < tracked.size(); ++k)
     s.element_peaks.push_back({tracked[k].quantity, tracked[k].name, tracked[k].unit, p.element[k]});
+  const std::vector<TrackedPeak> sensors = scene.sensor_peaks();
+  for (std::size_t k = 0; k < p.sensor.size() && k < sensors.size(); ++k)
+    s.sensor_peaks.push_back({sensors[k].quantity, sensors[k].name, sensors[k].unit, p.sensor[k]});
   s.indeterminate_spans = p.indeterminate_spans;
   if (p.loads_assessed) s.loads_determinate = p.indeterminate_spans.empty();
   if (!tr.empty()) {

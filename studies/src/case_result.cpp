@@ -54,6 +54,18 @@ void append_determinacy(const sim::RunPeaks& peaks, double peak_indeterminate_fo
   outputs.push_back(spans.empty() ? kNaN : peak_indeterminate_force);
 }
 
+// The nominal scene's element or sensor peaks, as the case's run kept them
+// (NaN for one the case's scene lacks).
+void append_named_peaks(const std::vector<sim::TrackedPeak>& nominal, const std::vector<sim::TrackedPeak>& in_case,
+                        const std::vector<sim::Peak>& kept, std::vector<double>& outputs) {
+  for (const sim::TrackedPeak& p : nominal) {
+    double value = kNaN;
+    for (std::size_t k = 0; k < in_case.size() && k < kept.size(); ++k)
+      if (in_case[k].quantity == p.quantity && in_case[k].name == p.name) value = kept[k].value;
+    outputs.push_back(value);
+  }
+}
+
 }  // namespace
 
 const char* case_status_name(CaseStatus status) {
@@ -77,7 +89,9 @@ std::string output_unit(const std::string& output) {
       {"deployment_time", "s"},     {"latch_time", "s"},          {"wall_time", "s"},
       {"peak_latch_torque", "N m"}, {"peak_hinge_moment", "N m"}, {"peak_hinge_force", "N"},
       {"max_closure_gap", "m"},     {"max_closure_angle", "rad"}, {"final_energy", "J"},
-      {"indeterminate_time", "s"},  {"indeterminate_from", "s"},  {"peak_hinge_force_indeterminate", "N"}};
+      {"indeterminate_time", "s"},  {"indeterminate_from", "s"},  {"peak_hinge_force_indeterminate", "N"},
+      {"peak_bushing_force", "N"},  {"peak_bushing_moment", "N m"}, {"peak_acceleration", "m/s^2"},
+      {"peak_velocity", "m/s"},     {"peak_angular_rate", "rad/s"}, {"peak_angular_acceleration", "rad/s^2"}};
   for (const auto& [name, unit] : units)
     if (quantity == name) return unit;
   return "";
@@ -94,6 +108,8 @@ CaseColumns case_columns(const Study& study, const sim::Scene& nominal) {
   for (const std::string& j : latch_joints(nominal)) c.outputs.push_back("peak_latch_torque." + j);
   for (const sim::Joint& j : nominal.model.joints) c.outputs.push_back("peak_hinge_force." + j.name);
   for (const sim::Joint& j : nominal.model.joints) c.outputs.push_back("peak_hinge_moment." + j.name);
+  for (const std::vector<sim::TrackedPeak>& peaks : {nominal.element_peaks(), nominal.sensor_peaks()})
+    for (const sim::TrackedPeak& p : peaks) c.outputs.push_back(p.quantity + "." + p.name);
   c.outputs.push_back("steps");
   c.outputs.push_back("wall_time");
   return c;
@@ -160,6 +176,8 @@ CaseResult case_result(const Study& study, const sim::Scene& nominal, const Stud
   r.outputs.insert(r.outputs.end(), torques.begin(), torques.end());
   r.outputs.insert(r.outputs.end(), forces.begin(), forces.end());
   r.outputs.insert(r.outputs.end(), moments.begin(), moments.end());
+  append_named_peaks(nominal.element_peaks(), scene.element_peaks(), rr.peaks.element, r.outputs);
+  append_named_peaks(nominal.sensor_peaks(), scene.sensor_peaks(), rr.peaks.sensor, r.outputs);
   r.outputs.push_back(static_cast<double>(rr.stats.steps));
   r.outputs.push_back(rr.wall_time_s);
   if (!tr.empty()) record_overlay(study, scene, tr, r);

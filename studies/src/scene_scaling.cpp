@@ -19,6 +19,7 @@ sim::SceneFile scale_scene(const sim::SceneFile& file, double L, double M) {
   }
   model.base_velocity.head<3>() *= L;
   for (auto& element : scene.elements) element = element->scaled(L, M, model);
+  for (sim::Sensor& s : scene.sensors) s.point *= L;
   for (int c = 0; c < model.nq; ++c)
     if (model.position_unit(c) == "m") scene.q0[c] *= L;
   for (int c = 0; c < model.nv; ++c) {

@@ -1,4 +1,4 @@
-// The columns of trajectory.csv and loads.csv, described once: each column's
+// The columns of trajectory.csv, loads.csv and sensors.csv, described once: each column's
 // name, unit and frame (its header cell reads "name [unit; frame]": no comma,
 // so any CSV reader splits the header as the rows), how a
 // sample gives its value and, for what is read back, how it takes it. The
@@ -34,6 +34,8 @@ std::string column_name(const std::string& header_cell);
 // components and the load columns).
 std::vector<RunColumn> trajectory_columns(const sim::Scene& scene, const sim::Trajectory& trajectory);
 std::vector<RunColumn> load_file_columns(const sim::Scene& scene, const sim::Trajectory& trajectory);
+// sensors.csv: t, then every sensor's readings.
+std::vector<RunColumn> sensor_file_columns(const sim::Trajectory& trajectory);
 
 // A sample sized for the trajectory's columns (state, rates, gaps, loads),
 // to be filled by set().

@@ -2,7 +2,7 @@
 // paper's figure 6), joint rates (figure 7), the loops' geometric gaps on a
 // log axis (figure 8 drawn from the true gap; scenes with loops only), the
 // loads (latch torques and hinge moments), energy and a free bus's attitude
-// and rate; latch events marked.
+// and rate, the sensors' accelerations in g; latch events marked.
 #pragma once
 
 #include <optional>
@@ -16,13 +16,14 @@
 
 namespace unfurl::render {
 
-enum class PlotKind { angles, rates, residuals, loads, energy, bus };
+enum class PlotKind { angles, rates, residuals, loads, energy, bus, sensors };
 
-// "angles", "rates", "loop gaps", "loads", "energy", "bus".
+// "angles", "rates", "loop gaps", "loads", "energy", "bus", "sensors".
 const char* plot_kind_name(PlotKind kind);
 
 // The plots a scene's runs have: no gap plot for a tree; the bus's attitude
-// for a free-floating one.
+// for a free-floating one; the sensors' accelerations, in g, for a scene
+// whose sensors measure any.
 std::vector<PlotKind> plot_kinds(const sim::Scene& scene);
 
 struct NamedPlot {
@@ -32,7 +33,7 @@ struct NamedPlot {
 };
 
 // Every plot of plot_kinds() with its file name (angles.png, rates.png,
-// residuals.png, loads.png, energy.png, bus.png). At most `max_joints` joints are
+// residuals.png, loads.png, energy.png, bus.png, sensors.png). At most `max_joints` joints are
 // drawn, in scene order.
 std::vector<NamedPlot> trajectory_plots(const sim::Scene& scene, const sim::Trajectory& trajectory,
                                         int max_joints = 12);

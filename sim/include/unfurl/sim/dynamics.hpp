@@ -121,14 +121,17 @@ class Dynamics {
 
   // The loads at a state (loads.hpp): the elements' load columns, the
   // reactions from the sweep's accelerations (exact, O(N)), whether the
-  // motion determines them (minimum-norm where it does not); and the loops'
-  // geometric gaps if asked. False where the evaluation at y failed.
+  // motion determines them (minimum-norm where it does not), the sensors'
+  // readings from the same accelerations; and the loops' geometric gaps if
+  // asked. False where the evaluation at y failed.
   bool loads(double t, const double* y, Loads& out, std::vector<ClosureError>* closure = nullptr);
   // What Loads::element holds, and which of its columns each element writes.
   const std::vector<LoadColumn>& load_columns() const { return columns_; }
   const std::vector<int>& element_columns(std::size_t element) const { return element_columns_[element]; }
   // The column of latch l's torque.
   int latch_column(int l) const { return element_columns_[latch_elements_[l]][0]; }
+  // What Loads::sensor holds.
+  const std::vector<LoadColumn>& sensor_columns() const { return sensor_columns_; }
   // The peaks the elements ask a run to keep (Scene::element_peaks).
   const std::vector<TrackedPeak>& element_peaks() const { return element_peaks_; }
 
@@ -184,6 +187,7 @@ class Dynamics {
   std::vector<LoadColumn> columns_;
   std::vector<std::vector<int>> element_columns_;
   std::vector<TrackedPeak> element_peaks_;
+  std::vector<LoadColumn> sensor_columns_;
   std::unique_ptr<NewtonPreconditioner> preconditioner_;
   bool elements_need_poses_ = false;
   long rhs_calls_ = 0;

@@ -70,14 +70,6 @@ struct ElementLink {
   Vec3 axis_a = Vec3::UnitX();  // a bushing's x axis, in body a's frame
 };
 
-// A peak the run keeps of an element's loads over every step: the
-// magnitude of `count` of its load columns from `first` (a bushing's force,
-// x..z), in summary.json under `quantity`, by the element's handle.
-struct ElementPeak {
-  std::string quantity;  // "peak_bushing_force"
-  int first = 0, count = 1;
-};
-
 class ForceElement {
  public:
   virtual ~ForceElement() = default;

@@ -28,8 +28,17 @@ struct LoadColumn {
 // The index of the column called `name`, or -1.
 int find_load_column(const std::vector<LoadColumn>& columns, const std::string& name);
 
-// A peak a run keeps of an element's loads (ForceElement::peaks): the
-// magnitude of some load columns.
+// A peak the run keeps of an element's loads (or a sensor's readings)
+// over every step: the magnitude of `count` of its columns from `first` (a
+// bushing's force, x..z), in summary.json under `quantity`, by the
+// element's handle (the sensor's name).
+struct ElementPeak {
+  std::string quantity;  // "peak_bushing_force"
+  int first = 0, count = 1;
+};
+
+// Such a peak placed among a run's columns: the magnitude of some load
+// columns (or sensor columns).
 struct TrackedPeak {
   std::string quantity, name, unit;  // "peak_bushing_force", the element's handle, "N"
   std::vector<int> columns;          // of the run's load columns
@@ -51,6 +60,8 @@ struct Loads {
   // Per active loop component: the force on the split body from its image
   // (its negative acts on the image), at the body's origin, in its frame.
   std::vector<double> loop_force;
+  // The sensors' readings (Dynamics::sensor_columns).
+  std::vector<double> sensor;
   // Whether the motion determines the loop forces, and with them the
   // reactions inside the loops (closure_rank.hpp). Where it does not, the
   // reactions and loop forces are the minimum-norm ones.
@@ -81,6 +92,7 @@ struct RunPeaks {
   std::vector<std::array<double, 2>> indeterminate_spans;
   bool loads_assessed = true;  // false if some step's were not (Determinacy::not_assessed)
   std::vector<Peak> element;        // per Scene::element_peaks()
+  std::vector<Peak> sensor;         // per Scene::sensor_peaks()
   Peak gap_m, gap_rad;              // over all loops
   Peak gap_m_before_latch, gap_rad_before_latch;
 };

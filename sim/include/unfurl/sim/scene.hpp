@@ -13,6 +13,7 @@
 #include "unfurl/sim/model.hpp"
 #include "unfurl/sim/regulator_settings.hpp"
 #include "unfurl/sim/run_settings.hpp"
+#include "unfurl/sim/sensor.hpp"
 
 namespace unfurl::sim {
 
@@ -24,6 +25,8 @@ struct Scene {
   // Everything that applies force, in the order their forces add up.
   std::vector<std::shared_ptr<const ForceElement>> elements;
   std::vector<Loop> loops;
+  // What the run measures at points of bodies, besides the loads.
+  std::vector<Sensor> sensors;
   RegulatorSettings regulator;
   std::vector<double> q0;     // per position coordinate
   std::vector<double> dq0;    // per velocity coordinate (used when p0 is empty)
@@ -50,6 +53,8 @@ struct Scene {
   std::vector<LoadColumn> load_columns(std::vector<std::vector<int>>* of_element = nullptr) const;
   // The peaks its elements ask a run to keep, on load_columns()' columns.
   std::vector<TrackedPeak> element_peaks() const;
+  // The peaks of the sensors' readings, on sensor_columns(sensors).
+  std::vector<TrackedPeak> sensor_peaks() const;
   // The --set path of element k ("springs.j1", or "springs.3" where its
   // handle is shared or missing), and every path that names it (by index,
   // and by handle where no other element of its list shares it).

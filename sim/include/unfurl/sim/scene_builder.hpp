@@ -49,6 +49,8 @@ class SceneBuilder {
   // A loop opened by splitting `body`; its image hangs on another branch.
   SceneBuilder& loop(std::string name, const std::string& body, const std::string& image);
   SceneBuilder& regulator(const RegulatorSettings& settings);
+  // A sensor on a body (by name, not the base).
+  SceneBuilder& sensor(Sensor sensor, const std::string& body);
   SceneBuilder& closure_tolerance(double tolerance);
   SceneBuilder& run(const RunSettings& settings);
 

@@ -33,6 +33,8 @@ struct RunSummary {
     Peak peak;
   };
   std::vector<ElementPeakValue> element_peaks;
+  // The sensors' (peak_acceleration, ...), by sensor name.
+  std::vector<ElementPeakValue> sensor_peaks;
   // Whether the motion determined every load (nullopt: not assessed, a
   // scene with more loop components than the analysis takes); where it did
   // not, from when to when, and the minimum-norm reactions' peaks there

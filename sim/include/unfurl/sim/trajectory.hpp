@@ -35,6 +35,7 @@ struct Trajectory {
   StateLayout layout;
   std::vector<LoopComponent> loop_components;  // what Loads::loop_force holds
   std::vector<LoadColumn> load_columns;        // what Loads::element holds
+  std::vector<LoadColumn> sensor_columns;      // what Loads::sensor holds
   std::vector<Sample> samples;
   std::vector<LatchEvent> events;
 
