@@ -50,6 +50,15 @@ inline void placement(const sim::Joint& j, const double* q, sim::Mat3& G, sim::V
   G.setIdentity();
   rho = j.parent_point - j.child_point;
   sim::Mat3 R = sim::Mat3::Identity();
+  if (j.compliant) {
+    // The pin tilted about e1, then e2, the child turned about the axis;
+    // the pin moved by (q1, q2, q3) along e1, e2 and the axis.
+    const sim::Vec3 e1 = j.axis.unitOrthogonal(), e2 = j.axis.cross(e1);
+    R = rodrigues(e1, q[4]) * rodrigues(e2, q[5]) * rodrigues(j.axis, q[0]);
+    G = R.transpose();
+    rho = j.parent_point + q[1] * e1 + q[2] * e2 + q[3] * j.axis - R * j.child_point;
+    return;
+  }
   switch (j.type) {
     case sim::JointType::revolute:
       R = rodrigues(j.axis, q[0]);
@@ -150,6 +159,22 @@ inline Eigen::Matrix<double, 6, Eigen::Dynamic> A_of(const sim::Joint& j, const 
   sim::Mat3 G;
   sim::Vec3 rho;
   placement(j, q, G, rho);
+  if (j.compliant) {
+    // Fourth-order differences (q' = w): A to near round-off, as the
+    // Hamiltonian's differences need.
+    const double h = 1e-3;
+    for (int k = 0; k < j.dof(); ++k) {
+      sim::Mat3 Gs[4];
+      sim::Vec3 rs[4];
+      const double steps[] = {2 * h, h, -h, -2 * h};
+      for (int s = 0; s < 4; ++s) placement(j, moved(j, q, k, steps[s]).data(), Gs[s], rs[s]);
+      A.col(k).head<3>() = G * (-rs[0] + 8 * rs[1] - 8 * rs[2] + rs[3]) / (12 * h);
+      const sim::Mat3 w =
+          G * (-Gs[0].transpose() + 8 * Gs[1].transpose() - 8 * Gs[2].transpose() + Gs[3].transpose()) / (12 * h);
+      A.col(k).tail<3>() << w(2, 1), w(0, 2), w(1, 0);
+    }
+    return A;
+  }
   const double eps = 1e-6;
   for (int k = 0; k < j.dof(); ++k) {
     sim::Mat3 Gp, Gm;
@@ -325,6 +350,8 @@ inline sim::Scene random_tree(std::mt19937& rng, int N, bool moving_base, bool m
                              : sim::JointType::free;
       j.axis2 = random_unit(rng);
     }
+    // A compliant hinge now and then (its pin's coordinates free here).
+    if (multi_dof && j.type == sim::JointType::revolute && U(rng) > 0.5) j.compliant = true;
     j.axis = random_unit(rng);
     j.parent_point = 0.5 * sim::Vec3(U(rng), U(rng), U(rng));
     j.child_point = 0.5 * sim::Vec3(U(rng), U(rng), U(rng));

@@ -98,7 +98,7 @@ TEST_P(RandomMultiDofTrees, SweepMatchesTheDenseFormulation) {
       const Eigen::Vector4d r = 0.5 * quaternion_product(q.segment<4>(at), Eigen::Vector4d(0, w[rate], w[rate + 1], w[rate + 2]));
       dq_expected.segment<4>(at) = r;
     };
-    if (j.is_scalar() || j.type == sim::JointType::universal) {
+    if (j.is_scalar() || j.type == sim::JointType::universal || j.compliant) {
       for (int k = 0; k < j.dof(); ++k) dq_expected[c + k] = w[v + k];
     } else if (j.type == sim::JointType::spherical) {
       quaternion_rate(c, v);
@@ -117,7 +117,8 @@ TEST_P(RandomMultiDofTrees, SweepMatchesTheDenseFormulation) {
   // (position index, velocity index) of every coordinate conjugate to its p.
   std::vector<std::pair<int, int>> conjugate;
   for (int i = 0; i < model.size(); ++i)
-    if (model.joints[i].is_scalar() || model.joints[i].type == sim::JointType::universal)
+    if (model.joints[i].is_scalar() || model.joints[i].type == sim::JointType::universal ||
+        model.joints[i].compliant)
       for (int k = 0; k < model.joints[i].dof(); ++k)
         conjugate.emplace_back(model.first_position[i].value + k, model.first_velocity[i].value + k);
   const double h = 1e-4;

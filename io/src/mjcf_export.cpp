@@ -131,7 +131,7 @@ class Writer {
     // ref = q0; a free body where q0 puts it (its qpos is its pose).
     std::vector<double> neutral(std::max(1, joint.positions()));
     joint.neutral_positions(neutral.data());
-    const bool at_q0 = joint.is_scalar() || joint.type == sim::JointType::free;
+    const bool at_q0 = joint.is_scalar() || joint.compliant || joint.type == sim::JointType::free;
     const sim::Placement X = joint.placement(c >= 0 && at_q0 ? &scene_.q0[c] : neutral.data());
     const Eigen::Quaterniond quat(X.G.transpose());
     out_ << pad << "<body name=\"" << m.bodies[i].name << "\" pos=\"" << vec(X.rho) << "\" quat=\"" << num(quat.w())
@@ -182,6 +182,7 @@ class Writer {
     double frictionloss = 0;
     for (const sim::JointFriction* f : scene_.elements_of<sim::JointFriction>())
       if (f->joint == i) frictionloss += f->coulomb, damping += f->viscous;
+    if (j.compliant) compliant_pin(i, pad);
     switch (j.type) {
       case sim::JointType::free:
         out_ << pad << "<freejoint name=\"" << j.name << "\"/>\n";
@@ -215,6 +216,40 @@ class Writer {
     if (damping > 0) out_ << " damping=\"" << num(damping) << "\"";
     if (frictionloss > 0) out_ << " frictionloss=\"" << num(frictionloss) << "\"";
     out_ << "/>\n";
+  }
+
+  // A compliant hinge's pin: three slides and two hinges before the hinge
+  // itself, each with its spring and damper, their axes in the body's
+  // frame at q0 (MuJoCo composes a body's joints in order, as the pin's
+  // coordinates do, joint.hpp).
+  void compliant_pin(int i, const std::string& pad) {
+    const sim::Joint& j = model_.joints[i];
+    const int c = model_.first_position[i].value;
+    const sim::Mat3 to_child = j.placement(&scene_.q0[c]).G;  // the tilts and moves are 0 at q0 in scenes
+    const sim::JointCompliance* pin = nullptr;
+    for (const sim::JointCompliance* e : scene_.elements_of<sim::JointCompliance>())
+      if (e->joint == i) pin = e;
+    if (!pin) return;
+    const sim::Vec3 e1 = j.cross_axis_1(), e2 = j.cross_axis_2();
+    const struct {
+      const char* name;
+      const char* type;
+      sim::Vec3 axis;
+      double stiffness, damping;
+    } parts[] = {{"u1", "slide", e1, pin->radial, pin->radial_damping},
+                 {"u2", "slide", e2, pin->radial, pin->radial_damping},
+                 {"ua", "slide", j.axis, pin->axial, pin->axial_damping},
+                 {"r1", "hinge", e1, pin->tilt, pin->tilt_damping},
+                 {"r2", "hinge", e2, pin->tilt, pin->tilt_damping}};
+    for (int k = 0; k < 5; ++k) {
+      const auto& p = parts[k];
+      out_ << pad << "<joint name=\"" << j.name << "." << p.name << "\" type=\"" << p.type << "\" axis=\""
+           << vec(to_child * p.axis) << "\"";
+      if (std::string(p.type) == "hinge") out_ << " pos=\"" << vec(j.child_point) << "\"";
+      out_ << " ref=\"" << num(scene_.q0[c + 1 + k]) << "\" stiffness=\"" << num(p.stiffness) << "\" springref=\"0\"";
+      if (p.damping > 0) out_ << " damping=\"" << num(p.damping) << "\"";
+      out_ << "/>\n";
+    }
   }
 
   // The body a point is written on (an image is merged into its split
@@ -323,6 +358,10 @@ class Writer {
     for (int i : written_) {
       const sim::Joint& j = model_.joints[i];
       const int c = model_.first_position[i].value, v = model_.first_velocity[i].value;
+      if (j.compliant) {  // the pin's five, then the hinge (compliant_pin)
+        for (const int k : {1, 2, 3, 4, 5, 0}) add(qpos, scene_.q0[c + k]), add(qvel, dq0_[c + k]);
+        continue;
+      }
       for (int k = 0; k < j.positions(); ++k) add(qpos, scene_.q0[c + k]);
       if (j.type == sim::JointType::free) {
         for (int k = 0; k < 3; ++k) add(qvel, dq0_[c + k]);
@@ -342,7 +381,8 @@ class Writer {
     return dynamic_cast<const sim::JointSpring*>(&e) || dynamic_cast<const sim::JointDamper*>(&e) ||
            dynamic_cast<const sim::JointFriction*>(&e) || dynamic_cast<const sim::Latch*>(&e) ||
            dynamic_cast<const sim::PointSpring*>(&e) || dynamic_cast<const sim::Gravity*>(&e) ||
-           dynamic_cast<const sim::AppliedForce*>(&e) || dynamic_cast<const sim::Bushing*>(&e);
+           dynamic_cast<const sim::AppliedForce*>(&e) || dynamic_cast<const sim::Bushing*>(&e) ||
+           dynamic_cast<const sim::JointCompliance*>(&e);
   }
 
   void unsupported(const std::string& what) {

@@ -24,7 +24,7 @@ std::optional<JointType> parse_joint_type(const std::string& name) {
 
 int Joint::dof() const {
   switch (type) {
-    case JointType::revolute:
+    case JointType::revolute: return compliant ? 6 : 1;
     case JointType::prismatic: return 1;
     case JointType::fixed: return 0;
     case JointType::universal: return 2;
@@ -47,8 +47,32 @@ Mat3 quaternion_rotation(const double* q) {
   return Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized().toRotationMatrix();
 }
 
+namespace {
+
+// A compliant hinge's tilts and turn, R = R(e1, r1) R(e2, r2) R(axis, q),
+// and the turn alone.
+struct CompliantTurn {
+  Mat3 R, R_axis;
+};
+
+CompliantTurn compliant_turn(const Joint& j, const double* q) {
+  CompliantTurn t;
+  t.R_axis = Eigen::AngleAxisd(q[0], j.axis).toRotationMatrix();
+  t.R = Eigen::AngleAxisd(q[4], j.cross_axis_1()).toRotationMatrix() *
+        Eigen::AngleAxisd(q[5], j.cross_axis_2()).toRotationMatrix() * t.R_axis;
+  return t;
+}
+
+}  // namespace
+
 Placement Joint::placement(const double* q) const {
   Placement P;
+  if (compliant) {
+    const CompliantTurn t = compliant_turn(*this, q);
+    P.G = t.R.transpose();
+    P.rho = parent_point + q[1] * cross_axis_1() + q[2] * cross_axis_2() + q[3] * axis - t.R * child_point;
+    return P;
+  }
   switch (type) {
     case JointType::revolute:
       // The child turns by q about the axis: G = R(axis, q)^T.
@@ -85,6 +109,21 @@ Mat6 Joint::motion_axes(const double* q) const {
   // A rotation w about the joint point moves the child origin by
   // -w x r^i = r^i x w; a translation moves it by itself.
   Mat6 A = Mat6::Zero();
+  if (compliant) {
+    // The turn as ever; the pin's moves, seen from the child: R^T d for a
+    // move d (parent frame), and the tilts' axes R^T e1 and R_axis^T e2.
+    A.col(0).head<3>() = child_point.cross(axis);
+    A.col(0).tail<3>() = axis;
+    const CompliantTurn t = q ? compliant_turn(*this, q) : CompliantTurn{Mat3::Identity(), Mat3::Identity()};
+    const Vec3 moves[] = {cross_axis_1(), cross_axis_2(), axis};
+    for (int k = 0; k < 3; ++k) A.col(1 + k).head<3>() = t.R.transpose() * moves[k];
+    const Vec3 tilts[] = {t.R.transpose() * cross_axis_1(), t.R_axis.transpose() * cross_axis_2()};
+    for (int k = 0; k < 2; ++k) {
+      A.col(4 + k).head<3>() = child_point.cross(tilts[k]);
+      A.col(4 + k).tail<3>() = tilts[k];
+    }
+    return A;
+  }
   switch (type) {
     case JointType::revolute:
       A.col(0).head<3>() = child_point.cross(axis);
@@ -127,6 +166,20 @@ Mat6 Joint::motion_axes(const double* q) const {
 
 Mat6 Joint::motion_axes_rate(const double* q, const double* w) const {
   Mat6 dA = Mat6::Zero();
+  if (compliant) {
+    // With w_c the child's rate against the parent (its frame), R^T d
+    // turns as -w_c x R^T d; R_axis^T e2 turns with the hinge alone.
+    const Mat6 A = motion_axes(q);
+    Vec3 w_c = Vec3::Zero();
+    for (int k : {0, 4, 5}) w_c += w[k] * A.col(k).tail<3>();
+    for (int k = 1; k <= 3; ++k) dA.col(k).head<3>() = -w_c.cross(Vec3(A.col(k).head<3>()));
+    const Vec3 turning[] = {-w_c.cross(Vec3(A.col(4).tail<3>())), -(w[0] * axis).cross(Vec3(A.col(5).tail<3>()))};
+    for (int k = 0; k < 2; ++k) {
+      dA.col(4 + k).head<3>() = child_point.cross(turning[k]);
+      dA.col(4 + k).tail<3>() = turning[k];
+    }
+    return dA;
+  }
   if (type != JointType::universal) return dA;
   // d/dt (R2^T a1) = -q2' a2 x (R2^T a1).
   const Vec3 first = Eigen::AngleAxisd(q[1], axis2).toRotationMatrix().transpose() * axis;
@@ -149,6 +202,10 @@ void quaternion_rate(const double* q, const double* w, double* dq) {
 }  // namespace
 
 void Joint::position_rates(const double* q, const double* w, double* dq) const {
+  if (compliant) {
+    for (int k = 0; k < 6; ++k) dq[k] = w[k];
+    return;
+  }
   switch (type) {
     case JointType::revolute:
     case JointType::prismatic: dq[0] = w[0]; break;
@@ -185,6 +242,10 @@ void quaternion_to_rate(const double* q, const double* dq, double* w) {
 }  // namespace
 
 void Joint::rates(const double* q, const double* dq, double* w) const {
+  if (compliant) {
+    for (int k = 0; k < 6; ++k) w[k] = dq[k];
+    return;
+  }
   switch (type) {
     case JointType::revolute:
     case JointType::prismatic: w[0] = dq[0]; break;

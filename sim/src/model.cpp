@@ -41,7 +41,10 @@ void Model::finalize() {
 
 namespace {
 
-const char* entry_name(JointType type, int k, bool position) {
+const char* entry_name(const Joint& joint, int k, bool position) {
+  static const char* const compliant[] = {"", "u1", "u2", "ua", "r1", "r2"};
+  if (joint.compliant) return compliant[k];
+  const JointType type = joint.type;
   static const char* const free_q[] = {"x", "y", "z", "qw", "qx", "qy", "qz"};
   static const char* const free_v[] = {"vx", "vy", "vz", "wx", "wy", "wz"};
   static const char* const ball_q[] = {"qw", "qx", "qy", "qz"};
@@ -62,21 +65,23 @@ const char* entry_name(JointType type, int k, bool position) {
 
 std::string Model::position_name(int c) const {
   const int i = joint_of_position[c];
-  if (joints[i].is_scalar()) return joints[i].name;
-  return joints[i].name + "." + entry_name(joints[i].type, c - first_position[i].value, true);
+  // A compliant hinge's angle keeps its joint's name.
+  if (joints[i].is_scalar() || (joints[i].compliant && c == first_position[i].value)) return joints[i].name;
+  return joints[i].name + "." + entry_name(joints[i], c - first_position[i].value, true);
 }
 
 std::string Model::velocity_name(int c) const {
   const int i = joint_of_velocity[c];
-  if (joints[i].is_scalar()) return joints[i].name;
-  return joints[i].name + "." + entry_name(joints[i].type, c - first_velocity[i].value, false);
+  if (joints[i].is_scalar() || (joints[i].compliant && c == first_velocity[i].value)) return joints[i].name;
+  return joints[i].name + "." + entry_name(joints[i], c - first_velocity[i].value, false);
 }
 
 namespace {
 
-// Whether velocity entry k of a joint of this type is a translation.
-bool translational_rate(JointType type, int k) {
-  switch (type) {
+// Whether velocity entry k of a joint is a translation.
+bool translational_rate(const Joint& joint, int k) {
+  if (joint.compliant) return k >= 1 && k <= 3;
+  switch (joint.type) {
     case JointType::prismatic:
       return true;
     case JointType::planar:
@@ -92,19 +97,18 @@ bool translational_rate(JointType type, int k) {
 
 std::string Model::position_unit(int c) const {
   const int i = joint_of_position[c], k = c - first_position[i].value;
-  const JointType type = joints[i].type;
   if (joints[i].has_quaternion() && k >= joints[i].quaternion_offset()) return "";
-  return translational_rate(type, k) ? "m" : "rad";
+  return translational_rate(joints[i], k) ? "m" : "rad";
 }
 
 std::string Model::velocity_unit(int c) const {
   const int i = joint_of_velocity[c];
-  return translational_rate(joints[i].type, c - first_velocity[i].value) ? "m/s" : "rad/s";
+  return translational_rate(joints[i], c - first_velocity[i].value) ? "m/s" : "rad/s";
 }
 
 std::string Model::momentum_unit(int c) const {
   const int i = joint_of_velocity[c];
-  return translational_rate(joints[i].type, c - first_velocity[i].value) ? "N s" : "N m s";
+  return translational_rate(joints[i], c - first_velocity[i].value) ? "N s" : "N m s";
 }
 
 std::optional<int> Model::find_body(const std::string& name) const {

@@ -25,7 +25,7 @@ NewtonPreconditioner::NewtonPreconditioner(Dynamics& dynamics)
   // position: there K couples a velocity coordinate to a position.
   const Model& model = dynamics.model();
   for (int j = 0; j < model.size(); ++j)
-    if (model.joints[j].is_scalar()) spring_position_[model.velocity_of(j).value] = model.position_of(j).value;
+    if (model.joints[j].has_free_coordinate()) spring_position_[model.velocity_of(j).value] = model.position_of(j).value;
 }
 
 void NewtonPreconditioner::setup(const double* y, const double* ydot, double gamma) {

@@ -56,6 +56,7 @@ std::vector<TrackedPeak> Scene::sensor_peaks() const {
 
 std::vector<std::string> Scene::element_paths(std::size_t k) const {
   const ForceElement& e = *elements[k];
+  if (const std::string path = e.file_path(*this); !path.empty()) return {path};
   const std::string list = e.list(), handle = e.handle(model);
   // Its index among its list's elements, and whether another one there is
   // called the same (a --set path names the first it finds).

@@ -157,7 +157,10 @@ SceneFile SceneBuilder::build() {
     const Joint& joint = model.joints[j];
     if (joint.dof() == 0) throw SceneInvalid(field, "joint '" + joint.name + "' is fixed: it has no coordinate");
     const int n = x.which == 0 ? joint.positions() : joint.dof();
-    if (static_cast<int>(x.values.size()) != n) {
+    // A compliant hinge takes its angle alone (its pin starts undeflected)
+    // or all six.
+    const bool hinge_only = joint.compliant && x.values.size() == 1;
+    if (static_cast<int>(x.values.size()) != n && !hinge_only) {
       // "(qw, qx, qy, qz)": what the entries are.
       std::string names;
       const int from = x.which == 0 ? model.first_position[j].value : model.first_velocity[j].value;

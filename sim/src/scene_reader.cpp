@@ -53,6 +53,7 @@ class SceneReader : private input::YamlFields {
   void read_body(const YAML::Node& node, int index, const YAML::Node& all, SceneBuilder& b) const;
   Body read_mass_properties(const YAML::Node& node, const std::string& field) const;
   Joint read_joint(const YAML::Node& node, const std::string& field) const;
+  std::shared_ptr<JointCompliance> read_compliance(const YAML::Node& node, int joint, const std::string& field) const;
   Visual read_visual(const YAML::Node& node, const std::string& field) const;
   void read_springs(const YAML::Node& list, SceneBuilder& b) const;
   void read_dampers(const YAML::Node& list, SceneBuilder& b) const;
@@ -143,7 +144,7 @@ void SceneReader::read_base(const YAML::Node& node, SceneBuilder& b) {
 }
 
 Joint SceneReader::read_joint(const YAML::Node& node, const std::string& field) const {
-  check_keys(node, {"name", "type", "axis", "axis2", "parent_point", "child_point"}, field);
+  check_keys(node, {"name", "type", "axis", "axis2", "parent_point", "child_point", "compliance"}, field);
   Joint j;
   const YAML::Node type = require(node, "type", field);
   const std::string t = text(type, field + ".type");
@@ -165,7 +166,28 @@ Joint SceneReader::read_joint(const YAML::Node& node, const std::string& field) 
   j.parent_point = vec3(require(node, "parent_point", field), field + ".parent_point");
   j.child_point = vec3(require(node, "child_point", field), field + ".child_point");
   if (node["name"]) j.name = text(node["name"], field + ".name");
+  if (const YAML::Node compliance = node["compliance"]) {
+    if (j.type != JointType::revolute)
+      fail(compliance, field + ".compliance",
+           std::string("compliance is for revolute joints (this one is ") + joint_type_name(j.type) + ")");
+    j.compliant = true;
+  }
   return j;
+}
+
+std::shared_ptr<JointCompliance> SceneReader::read_compliance(const YAML::Node& node, int joint,
+                                                               const std::string& field) const {
+  check_keys(node, {"radial", "axial", "tilt", "radial_damping", "axial_damping", "tilt_damping"}, field);
+  auto c = std::make_shared<JointCompliance>();
+  c->joint = joint;
+  c->radial = number(require(node, "radial", field), field + ".radial");
+  c->axial = number(require(node, "axial", field), field + ".axial");
+  c->tilt = number(require(node, "tilt", field), field + ".tilt");
+  const auto optional = [&](const char* key) { return node[key] ? number(node[key], field + "." + key) : 0.0; };
+  c->radial_damping = optional("radial_damping");
+  c->axial_damping = optional("axial_damping");
+  c->tilt_damping = optional("tilt_damping");
+  return c;
 }
 
 // mass, com and inertia of a body (or of a free base).
@@ -207,6 +229,9 @@ void SceneReader::read_body(const YAML::Node& node, int index, const YAML::Node&
     fail(node["joint"]["type"], field + ".joint.type",
          "a free joint is for a free-floating base only: give the base `free: true` and its mass properties");
   b.body(body, parent_name, joint, node["mesh"] ? read_visual(node["mesh"], field + ".mesh") : Visual{});
+  if (joint.compliant)
+    b.element(read_compliance(node["joint"]["compliance"], b.joint_index(joint.name.empty() ? name : joint.name, field),
+                              field + ".joint.compliance"));
 }
 
 void SceneReader::read_springs(const YAML::Node& list, SceneBuilder& b) const {

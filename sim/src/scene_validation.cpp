@@ -1,9 +1,11 @@
 #include "unfurl/sim/scene_validation.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <set>
 #include <sstream>
 
+#include "unfurl/sim/elements/joint_compliance.hpp"
 #include "unfurl/sim/kinematics.hpp"
 #include "unfurl/sim/mechanism_scales.hpp"
 #include "unfurl/sim/number_text.hpp"
@@ -177,6 +179,19 @@ void check_regulator(const RegulatorSettings& r) {
 
 // Refuses up front what cannot finish or cannot be stored: more samples
 // than max_samples, or more fixed RK4 steps than max_steps.
+// A compliant hinge has its pin's stiffness, once.
+void check_compliance(const Scene& scene) {
+  for (int i = 0; i < scene.model.size(); ++i) {
+    const auto of_joint = std::count_if(scene.elements.begin(), scene.elements.end(), [&](const auto& e) {
+      const auto* c = dynamic_cast<const JointCompliance*>(e.get());
+      return c && c->joint == i;
+    });
+    if (scene.model.joints[i].compliant && of_joint != 1)
+      throw SceneInvalid(body_field(scene, i) + ".joint.compliance",
+                         of_joint == 0 ? "a compliant joint needs its pin's stiffness" : "given more than once");
+  }
+}
+
 // Named uniquely, on a body, measuring something, each thing once.
 void check_sensors(const Scene& scene) {
   std::set<std::string> names;
@@ -253,6 +268,7 @@ void validate(Scene& scene) {
   validate_model(scene);
   check_initial_state(scene);
   for (std::size_t k = 0; k < scene.elements.size(); ++k) scene.elements[k]->validate(scene, element_field(scene, k));
+  check_compliance(scene);
   check_positive(scene.closure_tolerance, "closure_tolerance");
   if (scene.closure_tolerance > kLargestClosureTolerance)
     throw SceneInvalid("closure_tolerance",

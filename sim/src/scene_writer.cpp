@@ -70,13 +70,27 @@ void mass_properties(std::ostream& out, const Body& b, const std::string& pad) {
   out << pad << "inertia: " << numbers(inertia) << "\n";
 }
 
-std::string joint_text(const Joint& j) {
+std::string joint_text(const Joint& j, const JointCompliance* compliance) {
   std::string out = "{name: " + j.name + ", type: " + joint_type_name(j.type);
   const bool axial = j.type == JointType::revolute || j.type == JointType::prismatic || j.type == JointType::planar ||
                      j.type == JointType::universal;
   if (axial) out += ", axis: " + vec(j.axis);
   if (j.type == JointType::universal) out += ", axis2: " + vec(j.axis2);
-  return out + ", parent_point: " + vec(j.parent_point) + ", child_point: " + vec(j.child_point) + "}";
+  out += ", parent_point: " + vec(j.parent_point) + ", child_point: " + vec(j.child_point);
+  if (compliance)
+    out += ", compliance: {radial: " + format_number(compliance->radial) + ", axial: " +
+           format_number(compliance->axial) + ", tilt: " + format_number(compliance->tilt) +
+           ", radial_damping: " + format_number(compliance->radial_damping) +
+           ", axial_damping: " + format_number(compliance->axial_damping) +
+           ", tilt_damping: " + format_number(compliance->tilt_damping) + "}";
+  return out + "}";
+}
+
+// Joint i's compliance, if it has one.
+const JointCompliance* compliance_of(const Scene& scene, int i) {
+  for (const JointCompliance* c : scene.elements_of<JointCompliance>())
+    if (c->joint == i) return c;
+  return nullptr;
 }
 
 // Each list of elements, in the reader's order.
@@ -216,7 +230,7 @@ std::string write_scene_text(const SceneFile& file, const std::string& comment) 
         << "\n";
     mass_properties(out, m.bodies[i], "    ");
     if (!file.visuals.bodies[i].mesh.empty()) out << "    mesh: " << visual(file.visuals.bodies[i]) << "\n";
-    out << "    joint: " << joint_text(m.joints[i]) << "\n";
+    out << "    joint: " << joint_text(m.joints[i], compliance_of(scene, i)) << "\n";
   }
   elements(out, scene);
   if (!scene.loops.empty()) {

@@ -16,7 +16,7 @@ void JointElement::validate(const Scene& scene, const std::string& field) const 
   if (joint < 0 || joint >= scene.model.size()) throw SceneInvalid(field + ".joint", "no such joint");
   const Joint& j = scene.model.joints[joint];
   if (j.dof() == 0) throw SceneInvalid(field + ".joint", "joint '" + j.name + "' is fixed: it has no coordinate");
-  if (!j.is_scalar())
+  if (!j.has_free_coordinate())
     throw SceneInvalid(field + ".joint",
                        "joint '" + j.name + "' is " + joint_type_name(j.type) +
                            ": springs, dampers, friction and latches act on revolute and prismatic joints");

@@ -81,6 +81,10 @@ class ForceElement {
   // is then addressed by its index in the list).
   virtual std::string list() const = 0;
   virtual std::string handle(const Model& model) const = 0;
+  // Where it is written in the scene file when that is not its list's
+  // entry (a joint's compliance: "bodies.panel_A1.joint.compliance"); ""
+  // for an entry of list().
+  virtual std::string file_path(const Scene&) const { return ""; }
 
   // Adds its forces at the state.
   virtual void add_forces(const ElementState& s, ElementForces& out) const = 0;

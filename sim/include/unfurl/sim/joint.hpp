@@ -13,8 +13,18 @@
 // q', but its first column turns with q2 in the child frame, so it has
 // the dA_i/dt of (7) (motion_axes_rate).
 //
+// A compliant revolute joint (`compliant`) is a hinge whose pin gives: its
+// child turns by q about the axis as ever, but the pin also moves in its
+// bearing by u1, u2 across the axis (along e1 = the axis' unitOrthogonal,
+// e2 = axis x e1), ua along it, and tilts by r1 about e1, then r2 about
+// e2 as the first tilt carries it: R = R(e1, r1) R(e2, r2) R(axis, q), rho
+// = r^k + u1 e1 + u2 e2 + ua axis - R r^i. Its coordinates are (q, u1, u2,
+// ua, r1, r2), rates their q', and A_i turns with them (motion_axes_rate).
+// The pin's stiffness and damping act on the five (joint_compliance.hpp),
+// and the joint's reaction is what they carry.
+//
 // Coordinates: n_i velocity coordinates (dof) and m_i position coordinates
-// (positions): revolute and prismatic 1/1, fixed 0/0, universal 2/2,
+// (positions): revolute and prismatic 1/1 (a compliant revolute 6/6), fixed 0/0, universal 2/2,
 // spherical 3/4 (a unit quaternion w, x, y, z), planar 3/3 (x1, x2 along
 // two in-plane axes, angle about the normal), free 6/7 (the joint point's
 // displacement x, y, z in the parent frame, then a quaternion).
@@ -40,6 +50,7 @@ struct Joint {
   Vec3 axis2 = Vec3::UnitY();       // a universal joint's second axis (child frame, = parent frame at q = 0)
   Vec3 parent_point = Vec3::Zero(); // r^k: the hinge point in the parent frame
   Vec3 child_point = Vec3::Zero();  // r^i: the same point in the child frame
+  bool compliant = false;           // a revolute joint whose pin gives (above)
 
   // n_i: velocity coordinates (and momenta).
   int dof() const;
@@ -48,6 +59,10 @@ struct Joint {
   // Whether the joint's coordinates are angles or lengths that a spring,
   // a latch or friction can act on (one coordinate, q' its rate).
   bool is_scalar() const { return dof() == 1; }
+  // Whether springs, dampers, friction and latches can act on it: a
+  // revolute or prismatic joint, on its first coordinate (a compliant
+  // hinge's angle).
+  bool has_free_coordinate() const { return type == JointType::revolute || type == JointType::prismatic; }
   // Whether an orientation is a quaternion in q (spherical and free).
   bool has_quaternion() const { return type == JointType::spherical || type == JointType::free; }
   // Offset of the quaternion in the joint's positions.
@@ -65,7 +80,10 @@ struct Joint {
   // The single column of a one-coordinate joint.
   Vec6 motion_axis() const { return motion_axes().col(0); }
   // Whether A_i depends on q (a universal joint).
-  bool has_varying_axes() const { return type == JointType::universal; }
+  bool has_varying_axes() const { return type == JointType::universal || compliant; }
+  // A compliant joint's axes across its own: e1, e2.
+  Vec3 cross_axis_1() const { return axis.unitOrthogonal(); }
+  Vec3 cross_axis_2() const { return axis.cross(cross_axis_1()); }
   // dA_i/dt at positions q and rates w (zero but for a universal joint).
   Mat6 motion_axes_rate(const double* q, const double* w) const;
 

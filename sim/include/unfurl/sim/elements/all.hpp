@@ -5,6 +5,7 @@
 #include "unfurl/sim/elements/applied_force.hpp"
 #include "unfurl/sim/elements/bushing.hpp"
 #include "unfurl/sim/elements/gravity.hpp"
+#include "unfurl/sim/elements/joint_compliance.hpp"
 #include "unfurl/sim/elements/joint_damper.hpp"
 #include "unfurl/sim/elements/joint_friction.hpp"
 #include "unfurl/sim/elements/joint_spring.hpp"
