@@ -6,12 +6,30 @@
 #include <filesystem>
 #include <fstream>
 
-#include "unfurl/io/run_files.hpp"
 #include "support.hpp"
+#include "unfurl/io/run_columns.hpp"
 #include "unfurl/io/run_files.hpp"
 
 namespace unfurl {
 namespace {
+
+// Every header cell of every file, for every built-in scene (with a sensor
+// of every quantity): no comma, so any CSV reader splits it as the rows.
+TEST(RunFiles, NoHeaderCellHoldsAComma) {
+  for (const std::string& name : sim::builtin_scene_names()) {
+    sim::Scene scene = sim::load_builtin_scene(
+        name, {{"run.t_end", "0.02"},
+               {"sensors", "[{name: s, body: " + sim::load_builtin_scene(name).model.bodies.back().name +
+                               ", frame: inertial, measure: [position, velocity, acceleration, angular_rate, "
+                               "angular_acceleration]}]"}});
+    const sim::RunResult run = sim::simulate(scene, scene.run);
+    for (const auto& columns : {io::trajectory_columns(scene, run.trajectory),
+                                io::load_file_columns(scene, run.trajectory),
+                                io::sensor_file_columns(run.trajectory)})
+      for (const io::RunColumn& c : columns)
+        EXPECT_EQ(io::header_cell(c).find(','), std::string::npos) << name << ": " << io::header_cell(c);
+  }
+}
 
 TEST(LoadsFile, HasTheColumnsTheSceneHasAndReadsBack) {
   // The pantograph: springs and latches on j1..j8 only, reactions on every

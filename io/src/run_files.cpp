@@ -247,9 +247,15 @@ void write_summary_units(JsonWriter& json, const sim::Scene& scene, const sim::R
 
 void write_summary_json(const sim::Scene& scene, const sim::RunResult& result, const sim::RunSummary& summary,
                         const std::string& path) {
-  const sim::RunSettings& run = result.settings;
   OutputFile file(path);
-  JsonWriter json(file.stream());
+  file.stream() << summary_json(scene, result, summary);
+  file.commit();
+}
+
+std::string summary_json(const sim::Scene& scene, const sim::RunResult& result, const sim::RunSummary& summary) {
+  const sim::RunSettings& run = result.settings;
+  std::ostringstream text;
+  JsonWriter json(text);
   json.begin_object();
   json.value("scene", scene.name).value("scene_source", scene.source);
   json.value("integrator", sim::integrator_name(run.integrator));
@@ -344,7 +350,7 @@ void write_summary_json(const sim::Scene& scene, const sim::RunResult& result, c
   }
   write_summary_units(json, scene, summary);
   json.end_object();
-  file.commit();
+  return text.str();
 }
 
 }  // namespace unfurl::io

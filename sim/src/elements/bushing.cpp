@@ -126,9 +126,9 @@ double Bushing::dissipated_power(const ElementState& s) const {
 std::vector<LoadColumn> Bushing::load_columns(const Model&) const {
   std::vector<LoadColumn> columns;
   for (int a = 0; a < 3; ++a)
-    columns.push_back({"bushing_force." + name + "." + kAxes[a], "N", "on body b, frame a", -1});
+    columns.push_back({"bushing_force." + name + "." + kAxes[a], "N", "on body b in frame a", -1});
   for (int a = 0; a < 3; ++a)
-    columns.push_back({"bushing_moment." + name + "." + kAxes[a], "N m", "on body b, frame a, about b's origin", -1});
+    columns.push_back({"bushing_moment." + name + "." + kAxes[a], "N m", "on body b in frame a about b's origin", -1});
   columns.push_back({"bushing_energy." + name, "J", "", -1});
   return columns;
 }

@@ -20,6 +20,8 @@ void write_sensors_csv(const sim::Scene& scene, const sim::Trajectory& trajector
 void write_events_csv(const sim::Scene& scene, const sim::Trajectory& trajectory, const std::string& path);
 void write_summary_json(const sim::Scene& scene, const sim::RunResult& result, const sim::RunSummary& summary,
                         const std::string& path);
+// summary.json's text.
+std::string summary_json(const sim::Scene& scene, const sim::RunResult& result, const sim::RunSummary& summary);
 
 // A trajectory.csv for the scene it came from, with the events.csv,
 // loads.csv and sensors.csv beside it where they are. Throws std::runtime_error naming the
