@@ -234,6 +234,40 @@ TEST(Cli, ModesWritesItsFilesAndRenderDrawsAMode) {
 #endif
 }
 
+// Small frictions: plots without frames draw no frame; an initial angle that
+// looks like degrees is warned about; a spring's preload may be a torque at
+// an angle (the same spring as its free angle).
+TEST(Cli, PlotsWithoutFramesDrawNoFrameAndDegreesAreWarnedAbout) {
+  const fs::path dir = temp_dir() / "friction";
+#ifdef UNFURL_WITH_RENDER
+  const Outcome plots = run("render zfold --plots --no-frames --out " + (dir / "plots").string());
+  ASSERT_EQ(plots.code, 0) << plots.output;
+  EXPECT_NE(plots.output.find("frames       none drawn"), std::string::npos) << plots.output;
+  EXPECT_TRUE(fs::exists(dir / "plots" / "loads.png"));
+#endif
+  const Outcome degrees = run("simulate zfold --t-end 0.1 --set initial.q.j1=-90 --out " + (dir / "deg").string());
+  ASSERT_EQ(degrees.code, 0) << degrees.output;
+  EXPECT_NE(degrees.output.find("warning: built-in:zfold: initial.q.j1: -90 rad is more than a turn"),
+            std::string::npos)
+      << degrees.output;
+  const Outcome plain = run("simulate zfold --t-end 0.1 --out " + (dir / "plain").string());
+  EXPECT_EQ(plain.output.find("warning"), std::string::npos) << plain.output;
+  const sim::Scene as_torque = sim::load_builtin_scene(
+      "zfold", {{"springs.j1", "{joint: j1, stiffness: 0.1, preload_torque: 0.3141592653589793, "
+                               "preload_angle: -1.5707963267948966, damping: 0.02}"}});
+  EXPECT_NEAR(as_torque.elements_of<sim::JointSpring>()[0]->free_position, M_PI / 2, 1e-15);
+  EXPECT_NE(test::scene_error(R"(
+name: both
+bodies:
+  - {name: a, parent: base, mass: 1, inertia: [1, 1, 1],
+     joint: {name: h, type: revolute, axis: [1, 0, 0], parent_point: [0, 0, 0], child_point: [0, 0, 0]}}
+springs:
+  - {joint: h, stiffness: 1, free_position: 0.2, preload_torque: 1, preload_angle: 0}
+)")
+                .find("springs[0].free_position: give the preload as free_position or as preload_torque"),
+            std::string::npos);
+}
+
 TEST(Cli, SolverFailureReportsWhereAndKeepsResults) {
   // RK4 with a step far beyond the regulator's stability limit diverges.
   const fs::path dir = temp_dir() / "fail";

@@ -333,6 +333,35 @@ TEST(Gui, PinnedRunsAreTabledAndDrawnAgainstTheCurrentRun) {
   EXPECT_TRUE(std::regex_search(other, std::regex("\"pinned\": \\[\\s*\\]"))) << "another scene's pins were kept: " << other;
 }
 
+// A screenshot right after a command shows what the command asked for (a
+// frame is drawn between them), not the frame before it.
+TEST(Gui, AScreenshotShowsWhatTheCommandsBeforeItAskedFor) {
+  if (!io::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
+  const Scratch scratch("unfurl_gui_shot");
+  const fs::path& dir = scratch.path;
+  std::ofstream(dir / "session.txt") << "wait_run\n"
+                                        "plot angles\n"
+                                        "wait 0.5\n"
+                                        "screenshot " << (dir / "a.png").string() << "\n"
+                                        "plot energy\n"
+                                        "screenshot " << (dir / "b.png").string() << "\n"
+                                        "scrub 19\n"
+                                        "save_frame " << (dir / "c.png").string() << "\n"
+                                        "quit\n";
+  ASSERT_EQ(gui_session_failure(dir, "zfold"), "");
+  const render::Image a = test::read_png((dir / "a.png").string()), b = test::read_png((dir / "b.png").string());
+  // The plot panel (bottom left) changed from the angles to the energy.
+  int differ = 0;
+  for (int y = a.height * 2 / 3; y < a.height - 40; ++y)
+    for (int x = 0; x < a.width * 6 / 10; ++x)
+      if (std::abs(int(a.pixel(x, y)[0]) - int(b.pixel(x, y)[0])) > 40) ++differ;
+  EXPECT_GT(differ, 1000);
+  // The view at t = 19 shows the deployed wing: the cells' blue, not the
+  // stowed stack at t = 0.
+  const render::Image c = test::read_png((dir / "c.png").string());
+  EXPECT_GT(cell_pixels(c, 0, 0, c.width, c.height), 2000);
+}
+
 // The Modes tab: the finished run's modes (the compliant pantograph's first
 // at 0.413 Hz, as `unfurl modes` gives), one of them animated in the view:
 // the view moves between two moments of the cycle with the play-head

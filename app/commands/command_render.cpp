@@ -153,7 +153,11 @@ int command_render(const std::vector<std::string>& argv) {
     trajectory = std::move(run.trajectory);
   }
 
-  const std::vector<double> times = frame_times(options, trajectory.t_begin(), trajectory.t_end());
+  // Frames only where they go somewhere: --no-frames without a video draws none.
+  const bool write_frames = !args.has("--no-frames");
+  const std::vector<double> times = write_frames || options.video
+                                        ? frame_times(options, trajectory.t_begin(), trajectory.t_end())
+                                        : std::vector<double>{};
   auto context = render::make_offscreen_context(options.gl);
   render::FrameRenderer renderer(scene, file.visuals, options.width, options.height, mesh_directories(scene));
   const render::Camera camera =
@@ -164,7 +168,6 @@ int command_render(const std::vector<std::string>& argv) {
     video = std::make_unique<io::VideoPipe>(*options.video, options.width, options.height, options.fps);
     if (!video->note().empty()) std::fprintf(stderr, "unfurl render: %s\n", video->note().c_str());
   }
-  const bool write_frames = !args.has("--no-frames");
   Progress progress("rendering " + std::to_string(times.size()) + " frames", static_cast<double>(times.size()));
   render::Image image;
   std::vector<double> q;
@@ -204,10 +207,13 @@ int command_render(const std::vector<std::string>& argv) {
   if (!quiet) {
     std::printf("scene        %s (%s)\n", scene.name.c_str(), scene.source.c_str());
     std::printf("context      %s\n", context->description().c_str());
-    std::printf("frames       %zu at %g fps, t = %g .. %g s, %dx%d, %.1f frames/s%s\n", times.size(), options.fps,
-                times.empty() ? 0.0 : times.front(), times.empty() ? 0.0 : times.back(), options.width, options.height,
-                seconds > 0 ? times.size() / seconds : 0.0,
-                write_frames ? (", " + dir + "/frame_*.png").c_str() : " (not written)");
+    if (times.empty())
+      std::printf("frames       none drawn (--no-frames and no --video)\n");
+    else
+      std::printf("frames       %zu at %g fps, t = %g .. %g s, %dx%d, %.1f frames/s%s\n", times.size(), options.fps,
+                  times.front(), times.back(), options.width, options.height,
+                  seconds > 0 ? times.size() / seconds : 0.0,
+                  write_frames ? (", " + dir + "/frame_*.png").c_str() : " (not written)");
     if (video) std::printf("video        %s\n", options.video->c_str());
     for (const std::string& p : plots) std::printf("plot         %s\n", p.c_str());
   }

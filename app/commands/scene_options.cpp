@@ -1,9 +1,11 @@
 #include "scene_options.hpp"
 
+#include <cstdio>
 #include <filesystem>
 
 #include "unfurl/io/study_files.hpp"
 #include "unfurl/sim/scene_file.hpp"
+#include "unfurl/sim/scene_validation.hpp"
 
 namespace unfurl::app {
 
@@ -24,14 +26,17 @@ const char* scene_flags_help() {
          "                        Jacobian, LU), krylov (GMRES, O(N) preconditioner), auto (dense up\n"
          "                        to 100 states; run.linear_solver)\n"
          "  --rtol X              relative tolerance of the adaptive integrators (run.rtol)\n"
-         "  --atol X              absolute tolerance of the joint angles (run.atol); momenta get\n"
-         "                        100 X, regulator states 1e4 X\n"
+         "  --atol X              absolute tolerance of the joint angles (run.atol); lengths, momenta\n"
+         "                        and regulator states in the mechanism's own sizes\n"
          "  --dt X                step of the fixed-step rk4 (run.dt)\n"
          "  --sample DT           output interval in seconds (run.sample, default 0.01)\n";
 }
 
 sim::SceneFile read_scene(const std::optional<std::string>& argument, const Args& args) {
-  return read_scene_named(argument.value_or("pantograph"), overrides_from(args));
+  sim::SceneFile file = read_scene_named(argument.value_or("pantograph"), overrides_from(args));
+  for (const std::string& warning : sim::scene_warnings(file.scene))
+    std::fprintf(stderr, "unfurl: warning: %s: %s\n", file.scene.source.c_str(), warning.c_str());
+  return file;
 }
 
 sim::Scene load_scene(const std::optional<std::string>& argument, const Args& args) {

@@ -1,5 +1,6 @@
 #include "script_runner.hpp"
 
+#include <algorithm>
 #include <ctime>
 
 #include "gui_panels.hpp"
@@ -10,9 +11,19 @@ namespace unfurl::app {
 
 void ScriptRunner::step(ScriptTarget& target, double now) {
   GuiState& state = target.state();
+  // Called once a frame, after it is drawn: what earlier calls changed is in it.
+  changed_since_frame_ = false;
   while (next_ < script_.size()) {
     const ScriptCommand& c = script_[next_];
     const auto arg = [&](std::size_t i) { return c.args[i]; };
+    // A picture waits for a frame drawn after the commands before it (the
+    // script runs between drawing a frame and showing it).
+    const bool picture = c.name == "screenshot" || c.name == "save_frame";
+    if (picture && changed_since_frame_) return;
+    static const char* const unchanging[] = {"wait", "idle", "wait_run", "wait_export", "report", "screenshot",
+                                             "save_frame", "quit"};
+    if (std::find(std::begin(unchanging), std::end(unchanging), c.name) == std::end(unchanging))
+      changed_since_frame_ = true;
     if (c.name == "wait") {
       if (wait_until_ == 0) wait_until_ = now + std::stod(arg(0));
       if (now < wait_until_) return;

@@ -40,6 +40,9 @@ class ScriptRunner {
 
  private:
   std::vector<ScriptCommand> script_;
+  // A command of this step (since the frame was drawn) changed what the
+  // next frame shows.
+  bool changed_since_frame_ = false;
   std::size_t next_ = 0;
   double wait_until_ = 0;
   double idle_until_ = 0;

@@ -19,6 +19,32 @@ bool contains(const YAML::Node& haystack, const YAML::Node& needle) {
 }
 
 // Throws at the second occurrence of a key in any mapping under `node`.
+// Counts the nodes `node` expands to, each alias as many times as it is
+// used, and stops at kMostNodes: a document of nested aliases (an alias
+// bomb) is refused before anything walks it whole.
+void count_nodes(const YAML::Node& node, long& count) {
+  if (++count > kMostNodes) return;
+  if (node.IsSequence())
+    for (const YAML::Node& item : node) {
+      count_nodes(item, count);
+      if (count > kMostNodes) return;
+    }
+  if (node.IsMap())
+    for (const auto& item : node) {
+      count_nodes(item.first, count);
+      count_nodes(item.second, count);
+      if (count > kMostNodes) return;
+    }
+}
+
+void check_size(const YAML::Node& node, const std::string& source) {
+  long count = 0;
+  count_nodes(node, count);
+  if (count > kMostNodes)
+    throw InputError(source + ": the YAML expands to more than " + std::to_string(kMostNodes) +
+                     " values (anchors repeated through aliases); refused");
+}
+
 void check_unique_keys(const YAML::Node& node, const YamlFields& fields) {
   if (node.IsSequence())
     for (const YAML::Node& item : node) check_unique_keys(item, fields);
@@ -80,8 +106,21 @@ YAML::Node YamlFields::load_document(const std::string& text) const {
                      ": YAML syntax error: " + e.msg);
   }
   if (!document || document.IsNull()) throw InputError(source_ + ": the scene file is empty or holds no YAML mapping");
+  check_size(document, source_);
   check_unique_keys(document, *this);
   return document;
+}
+
+YAML::Node YamlFields::load_value(const std::string& text, const std::string& origin) {
+  YAML::Node value;
+  try {
+    value = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw InputError(origin + ": the value is not valid YAML: " + e.msg);
+  }
+  check_size(value, origin);
+  check_unique_keys(value, YamlFields(origin));
+  return value;
 }
 
 void YamlFields::check_map(const YAML::Node& node, const std::string& field) const {

@@ -5,6 +5,7 @@
 #include "py_types.hpp"
 #include "scene_options.hpp"
 #include "unfurl/sim/scene_builder.hpp"
+#include "unfurl/sim/scene_validation.hpp"
 
 namespace unfurl::python {
 
@@ -69,7 +70,8 @@ void bind_scene(py::module_& m) {
            [](const PyScene& s, const std::vector<std::pair<std::string, std::string>>& pairs) {
              return PyScene{sim::apply_overrides(s.file, overrides_from(pairs))};
            })
-      .def("_yaml", [](const PyScene& s) { return sim::write_scene_text(s.file); });
+      .def("_yaml", [](const PyScene& s) { return sim::write_scene_text(s.file); })
+      .def("_warnings", [](const PyScene& s) { return sim::scene_warnings(s.file.scene); });
   m.def("_load", [](const std::string& name, const std::vector<std::pair<std::string, std::string>>& pairs) {
     return PyScene{app::read_scene_named(name, overrides_from(pairs))};
   });

@@ -98,3 +98,8 @@ def test_the_builder_checks_as_a_file_is_checked():
         pendulum_builder().spring("nowhere", stiffness=1, free_position=0)
     with pytest.raises(ValueError, match="joint type 'hinge'"):
         pendulum_builder().body("x", parent="rod", mass=1, inertia=[1, 1, 1], joint=dict(type="hinge"))
+
+
+def test_an_angle_that_looks_like_degrees_is_warned_about():
+    with pytest.warns(UserWarning, match=r"initial.q.j1: -90 rad is more than a turn"):
+        unfurl.load("zfold", set={"initial.q.j1": -90})

@@ -14,6 +14,7 @@ here too. Every function has a docstring: help(unfurl.simulate).
 import json
 import math
 import os
+import warnings
 
 import numpy as np
 
@@ -65,6 +66,9 @@ class Scene:
 
     def __init__(self, native):
         self._native = native
+        # What is valid but likely a mistake (an angle in degrees), as the CLI warns.
+        for warning in native._warnings():
+            warnings.warn(f"{native.source}: {warning}", UserWarning, stacklevel=3)
 
     name = property(lambda self: self._native.name, doc="The scene's name.")
     description = property(lambda self: self._native.description, doc="Its description.")

@@ -99,12 +99,7 @@ void apply_override(YAML::Node& root, const Override& o, input::YamlFields& fiel
   const std::string origin = "--set " + o.path + "=" + o.value;
   const std::vector<std::string> parts = path_parts(o.path);
   if (parts.empty() || o.path.empty()) throw input::InputError(origin + ": empty path");
-  YAML::Node value;
-  try {
-    value = YAML::Load(o.value);
-  } catch (const YAML::Exception& e) {
-    throw input::InputError(origin + ": the value is not valid YAML: " + e.msg);
-  }
+  const YAML::Node value = input::YamlFields::load_value(o.value, origin);
   YAML::Node cur;
   cur.reset(root);
   for (std::size_t k = 0; k < parts.size(); ++k) {

@@ -235,16 +235,28 @@ void SceneReader::read_body(const YAML::Node& node, int index, const YAML::Node&
 }
 
 void SceneReader::read_springs(const YAML::Node& list, SceneBuilder& b) const {
-  each(list, "springs", {"joint", "stiffness", "free_position", "damping", "table"},
+  each(list, "springs", {"joint", "stiffness", "free_position", "preload_torque", "preload_angle", "damping", "table"},
        [&](const YAML::Node& s, const std::string& field, std::size_t) {
          auto spring = std::make_shared<JointSpring>(element_joint(s, b, field));
          if (const YAML::Node table = s["table"]) {
-           for (const char* key : {"stiffness", "free_position"})
+           for (const char* key : {"stiffness", "free_position", "preload_torque", "preload_angle"})
              if (s[key]) fail(s[key], field + "." + key, "a spring with a table takes its torque from the table alone");
            spring->curve = spring_curve(table, field + ".table");
          } else {
            spring->stiffness = number(require(s, "stiffness", field), field + ".stiffness");
            spring->free_position = number_or(s, "free_position", 0.0, field);
+           // The preload as a torque at an angle: tau = -k (q - q_free) is
+           // preload_torque at preload_angle.
+           if (s["preload_torque"] || s["preload_angle"]) {
+             if (s["free_position"])
+               fail(s["free_position"], field + ".free_position",
+                    "give the preload as free_position or as preload_torque at preload_angle, not both");
+             const double torque = number(require(s, "preload_torque", field), field + ".preload_torque");
+             const double angle = number(require(s, "preload_angle", field), field + ".preload_angle");
+             if (!(spring->stiffness > 0))
+               fail(s["stiffness"], field + ".stiffness", "a preload given as a torque needs a positive stiffness");
+             spring->free_position = angle + torque / spring->stiffness;
+           }
          }
          spring->damping = number_or(s, "damping", 0.0, field);
          b.element(spring);

@@ -1,6 +1,7 @@
 #include "unfurl/sim/scene_validation.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <cmath>
 #include <algorithm>
 #include <set>
 #include <sstream>
@@ -262,6 +263,19 @@ void check_positive(double x, const std::string& field) {
 
 void check_non_negative(double x, const std::string& field) {
   if (x < 0) throw SceneInvalid(field, "must not be negative, got " + format_number(x));
+}
+
+std::vector<std::string> scene_warnings(const Scene& scene) {
+  std::vector<std::string> out;
+  const Model& m = scene.model;
+  for (int c = 0; c < m.nq && c < static_cast<int>(scene.q0.size()); ++c) {
+    const Joint& j = m.joints[m.joint_of_position[c]];
+    if (m.position_unit(c) != "rad" || j.type == JointType::spherical || j.type == JointType::free) continue;
+    if (std::abs(scene.q0[c]) > 2 * M_PI)
+      out.push_back("initial.q." + m.position_name(c) + ": " + format_number(scene.q0[c]) +
+                    " rad is more than a turn; angles are in radians (degrees meant?)");
+  }
+  return out;
 }
 
 void validate(Scene& scene) {

@@ -23,6 +23,10 @@ std::string index_field(const std::string& list, std::size_t i);
 // Numbers beyond this magnitude are refused: products of a few of them (a
 // mass, a gravity, an offset, an inertia) would overflow a double.
 inline constexpr double kLargestMagnitude = 1e15;
+// The most nodes a document may expand to, aliases counted every time they
+// are used: far above any scene (a 1000-stage array is about 1e5), far
+// below what an alias bomb (anchors repeating anchors) reaches.
+inline constexpr long kMostNodes = 2'000'000;
 
 class YamlFields {
  public:
@@ -42,6 +46,9 @@ class YamlFields {
   // syntax error, a second document, or a key given twice in one mapping
   // (YAML leaves both to the reader; one would silently win).
   YAML::Node load_document(const std::string& text) const;
+  // A --set value's YAML (`origin` names the override in errors), through
+  // the same checks: syntax, keys given twice, and the expanded size.
+  static YAML::Node load_value(const std::string& text, const std::string& origin);
 
   void check_keys(const YAML::Node& map, Keys allowed, const std::string& field) const;
   void check_map(const YAML::Node& node, const std::string& field) const;

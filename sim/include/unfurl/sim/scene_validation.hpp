@@ -38,6 +38,11 @@ void validate(Scene& scene);
 // given by joint need).
 void validate_model(Scene& scene);
 
+// What is valid but likely a mistake, each "field: what", for the front
+// ends to show: an initial angle of more than a turn (degrees given where
+// radians are meant: `j1: -90`).
+std::vector<std::string> scene_warnings(const Scene& scene);
+
 // Body, joint, loop and element names: letters, digits, '_' and '-' (at
 // most 64), so they stand as they are in CSV headers, --set paths and file
 // names.
