@@ -64,6 +64,17 @@ void expect_conserved(const FreeRun& r, double least_turn) {
     ASSERT_NEAR(Eigen::Vector4d(s.y[c], s.y[c + 1], s.y[c + 2], s.y[c + 3]).norm(), 1.0, 1e-6) << "t = " << s.t;
 }
 
+// The bus's free joint joins it to nothing: it is no hinge, and neither the
+// summary's hinge peaks nor the loads' columns list it (they listed zeros).
+TEST(FreeFloating, TheBusIsNoHingeInTheLoads) {
+  const sim::Scene scene = sim::load_builtin_scene("zfold_free", {{"run.t_end", "1"}});
+  const sim::RunResult run = sim::simulate(scene, scene.run);
+  const sim::RunSummary s = sim::summarize(scene, run);
+  ASSERT_EQ(s.peak_hinge_force.size(), 4u);
+  for (const auto& p : s.peak_hinge_force) EXPECT_NE(p.joint, "bus");
+  EXPECT_EQ(scene.model.joints[0].name, "bus");
+}
+
 TEST(FreeFloating, ZfoldConservesMomentumWhileTheBusTurns) { expect_conserved(run_free("zfold_free"), 0.1); }
 
 TEST(FreeFloating, PantographConservesMomentumWhileTheBusTurns) {

@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "support.hpp"
+#include "unfurl/sim/summary.hpp"
 #include "unfurl/studies/case_result.hpp"
 #include "unfurl/studies/study_statistics.hpp"
 
@@ -126,9 +127,11 @@ TEST(StudyCases, FailuresChangeTheSceneAsNamed) {
   EXPECT_DOUBLE_EQ(half.elements_of<sim::JointSpring>()[1]->free_position - q0,
                    0.5 * (nominal.elements_of<sim::JointSpring>()[1]->free_position - q0));
   const sim::Scene stuck = studies::case_scene(study, cases[4]);  // j1
-  ASSERT_EQ(stuck.latches().size(), 9u);
-  EXPECT_EQ(stuck.latches().back()->joint, 0);
-  EXPECT_EQ(stuck.latches().back()->position, nominal.q0[0]);
+  // A stop, not a latch: the latches are the scene's own.
+  EXPECT_EQ(stuck.latches().size(), 8u);
+  ASSERT_EQ(stuck.elements_of<sim::JointStop>().size(), 1u);
+  EXPECT_EQ(stuck.elements_of<sim::JointStop>()[0]->joint, 0);
+  EXPECT_EQ(stuck.elements_of<sim::JointStop>()[0]->position, nominal.q0[0]);
   EXPECT_EQ(cases.back().id, "fail-hinge-j4-friction-0.05Nm-0.01Nms");
   const sim::Scene cold = studies::case_scene(study, cases.back());
   const std::vector<const sim::JointFriction*> friction = cold.elements_of<sim::JointFriction>();
@@ -136,6 +139,17 @@ TEST(StudyCases, FailuresChangeTheSceneAsNamed) {
   EXPECT_EQ(nominal.model.joints[friction.back()->joint].name, "j4");
   EXPECT_EQ(friction.back()->coulomb, 0.05);
   EXPECT_EQ(friction.back()->viscous, 0.01);
+}
+
+// A failure applies only to joints it can act on: "*" on a free-floating
+// scene leaves out the bus's free joint, and naming it is an error.
+TEST(StudyCases, FailuresLeaveOutAFreeBus) {
+  const auto cases = studies::study_cases(study_from("scene: zfold_free\nfailures:\n  - {stuck: \"*\"}\n"
+                                                     "  - {extra_friction: \"*\", coulomb: 0.01}\n"));
+  ASSERT_EQ(cases.size(), 1u + 4 + 4);
+  for (const auto& c : cases) EXPECT_EQ(c.id.find("bus"), std::string::npos) << c.id;
+  EXPECT_NE(error_of("scene: zfold_free\nfailures:\n  - {stuck: bus}\n").find("not a joint with a hinge or slider"),
+            std::string::npos);
 }
 
 // The workbench's edits of a case go over the case's own values, its
@@ -181,9 +195,24 @@ TEST(StudyCases, FailedCasesReportWhatHappened) {
   EXPECT_EQ(latch.reason, "never latched: j3");
   EXPECT_TRUE(std::isnan(studies::output_value(columns, latch, "latch_time.j3")));
   EXPECT_FALSE(std::isnan(studies::output_value(columns, latch, "latch_time.j2")));
-  const studies::CaseResult stuck =
-      studies::case_result(study, nominal, cases[2], studies::simulate_case(study, cases[2]));
+  const studies::CaseRun stuck_run = studies::simulate_case(study, cases[2]);
+  const studies::CaseResult stuck = studies::case_result(study, nominal, cases[2], stuck_run);
   EXPECT_EQ(stuck.status, studies::CaseStatus::not_deployed);
+  // One source of truth: the case's row says what its own summary says. Its
+  // latch j1 never engaged (no time, no torque: the stop is not a latch).
+  const sim::RunSummary own = sim::summarize(stuck_run.scene, stuck_run.run);
+  EXPECT_TRUE(std::isnan(studies::output_value(columns, stuck, "latch_time.j1")));
+  EXPECT_TRUE(std::isnan(studies::output_value(columns, stuck, "peak_latch_torque.j1")));
+  for (const auto& p : own.peak_latch_torque)
+    if (p.joint == "j1") {
+      EXPECT_TRUE(std::isnan(p.peak.t));
+    }
+  for (const auto& p : own.peak_hinge_force)
+    EXPECT_EQ(studies::output_value(columns, stuck, "peak_hinge_force." + p.joint), p.peak.value) << p.joint;
+  bool held = false;
+  for (const auto& e : own.element_peaks)
+    held = held || (e.quantity == "peak_stop_torque" && e.name == "j1" && e.peak.value > 1.0);
+  EXPECT_TRUE(held);
   // j1 (the overlay joint) stays stowed: its stop, as stiff as a latch
   // (1000 N m/rad), yields 0.01 rad to the other seven springs, against the
   // 1.56 rad it travels when free.
@@ -194,6 +223,42 @@ TEST(StudyCases, FailedCasesReportWhatHappened) {
       studies::case_result(study, nominal, cases[3], studies::simulate_case(study, cases[3]));
   EXPECT_EQ(cold.status, studies::CaseStatus::deployed) << cold.reason;
   EXPECT_GT(studies::output_value(columns, cold, "deployment_time"), 7.3921759 + 0.1);
+}
+
+// Inputs that moved together (a zip) are not ranked as one driver, and tail
+// percentiles are given only where the sample reaches beyond them.
+TEST(StudyStatistics, NoDriverAmongInputsThatMovedTogetherAndNoPercentileBeyondTheSample) {
+  studies::CaseColumns columns;
+  columns.inputs = {"springs.j1.preload_factor", "springs.j2.preload_factor", "latches.j1.stiffness"};
+  columns.outputs = studies::CaseColumns::headline();
+  std::vector<studies::CaseResult> results;
+  for (int k = 0; k < 30; ++k) {
+    studies::CaseResult r;
+    r.status = studies::CaseStatus::deployed;
+    const double f = 0.9 + 0.01 * k;
+    r.inputs = {f, f, 1000.0 + 37 * ((k * 7) % 11)};
+    r.outputs.assign(columns.outputs.size(), 8.0 - f);
+    results.push_back(r);
+  }
+  const studies::StudyStatistics st = studies::study_statistics(columns, results, true);
+  ASSERT_FALSE(st.drivers.empty());
+  EXPECT_EQ(st.drivers.front().input, "springs.j1.preload_factor");
+  EXPECT_EQ(st.drivers.front().together,
+            (std::vector<std::string>{"springs.j2.preload_factor", "latches.j1.stiffness"}));
+  EXPECT_TRUE(studies::study_statistics(columns, results, false).drivers.front().together.empty());
+  // A zip of lists moved its inputs together; a product or random draws did not.
+  EXPECT_TRUE(studies::inputs_moved_together(study_from(
+      "scene: zfold\ncombine: zip\nvary:\n  - {path: springs.*.preload, values: [0.9, 1.1]}\n")));
+  EXPECT_FALSE(studies::inputs_moved_together(study_from(
+      "scene: zfold\nvary:\n  - {path: springs.*.preload, values: [0.9, 1.1]}\n")));
+  // 30 cases: p5 and p95, no p1 and p99.
+  EXPECT_FALSE(std::isnan(st.outputs.front().p5));
+  EXPECT_TRUE(std::isnan(st.outputs.front().p1));
+  EXPECT_TRUE(std::isnan(st.outputs.front().p99));
+  results.resize(3);
+  const studies::StudyStatistics three = studies::study_statistics(columns, results);
+  EXPECT_TRUE(std::isnan(three.outputs.front().p5));
+  EXPECT_FALSE(std::isnan(three.outputs.front().p50));
 }
 
 TEST(StudyStatistics, CountsAndDriversOverDeployedCasesWithoutInjectedFailures) {

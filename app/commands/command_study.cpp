@@ -104,7 +104,7 @@ int command_study(const std::vector<std::string>& argv) {
                          results,
                          static_cast<long>(run.cases().size()),
                          static_cast<long>(run.cases().size() - run.pending().size()),
-                         studies::study_statistics(run.columns(), results),
+                         studies::study_statistics(run.columns(), results, studies::inputs_moved_together(study)),
                          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                          processes,
                          options.jobs,

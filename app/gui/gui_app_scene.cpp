@@ -25,11 +25,12 @@ bool GuiApp::show_case(const std::string& id) {
 namespace {
 
 // Whether a run of `a` can be drawn as the ghost of `b`: the same bodies,
-// coordinates, latches and loops (a study's failure cases add or remove
-// latches).
+// coordinates and loops (the plots index them). Latches may differ: a
+// study's failure case removes one, and the nominal run is what it is
+// compared with.
 bool same_structure(const sim::Scene& a, const sim::Scene& b) {
   return a.name == b.name && a.model.size() == b.model.size() && a.model.nq == b.model.nq &&
-         a.latches().size() == b.latches().size() && a.loops.size() == b.loops.size();
+         a.loops.size() == b.loops.size();
 }
 
 }  // namespace

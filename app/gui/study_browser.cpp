@@ -76,8 +76,8 @@ std::vector<std::string> failure_elements(const sim::Scene& scene, const studies
     for (const std::string& path : scene.element_paths(k)) paths.push_back(path);
   };
   // The last element of a kind on the failure's joint: a spring that
-  // breaks or loses its preload, the stop of a stuck hinge (the last
-  // latch), the added friction (the last friction).
+  // breaks or loses its preload, the stop of a stuck hinge, the added
+  // friction (the last friction).
   const auto last_on_joint = [&](auto* of_kind) {
     using Kind = std::remove_pointer_t<decltype(of_kind)>;
     std::size_t found = scene.elements.size();
@@ -98,7 +98,7 @@ std::vector<std::string> failure_elements(const sim::Scene& scene, const studies
           add(k);
       break;
     case studies::StudyFailure::Kind::stuck:
-      last_on_joint(static_cast<const sim::Latch*>(nullptr));
+      last_on_joint(static_cast<const sim::JointStop*>(nullptr));
       break;
     case studies::StudyFailure::Kind::extra_friction:
       last_on_joint(static_cast<const sim::JointFriction*>(nullptr));

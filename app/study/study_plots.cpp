@@ -50,7 +50,8 @@ render::PlotSpec scatter(const io::StudyReport& report, const studies::Driver& d
   render::PlotSpec spec;
   char rho[32];
   std::snprintf(rho, sizeof rho, "%.3f", d.rho);
-  spec.title = d.output + " against " + d.input + " (Spearman rho " + rho + ")";
+  spec.title = d.output + " against " + d.input + " (Spearman rho " + rho + ")" +
+               (d.together.empty() ? "" : ", with " + std::to_string(d.together.size()) + " inputs that moved with it");
   spec.x_label = d.input;
   spec.y_label = d.output;
   const auto input = static_cast<std::size_t>(

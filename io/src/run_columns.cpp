@@ -138,6 +138,7 @@ std::vector<RunColumn> load_file_columns(const sim::Scene& scene, const sim::Tra
   for (int j = 0; j < m.size(); ++j) {
     for (std::size_t c = 0; c < element.size(); ++c)
       if (element[c].joint == j) element_column(c);
+    if (!m.joints[j].has_reaction()) continue;
     for (int a = 0; a < 6; ++a)
       add(
           out, std::string(a < 3 ? "hinge_force." : "hinge_moment.") + m.joints[j].name + "." + kAxes[a % 3],

@@ -237,8 +237,12 @@ void write_study_summary_json(const StudyReport& report, const std::string& path
   }
   json.end_object();
   json.begin_object("drivers");
-  for (const studies::Driver& d : st.drivers)
-    json.begin_object(d.output).value("input", d.input).value("spearman_rho", d.rho).end_object();
+  for (const studies::Driver& d : st.drivers) {
+    json.begin_object(d.output).value("input", d.input).value("spearman_rho", d.rho);
+    json.begin_array("moved_with");
+    for (const std::string& other : d.together) json.value("", other);
+    json.end_array().end_object();
+  }
   json.end_object();
   json.begin_array("correlations");
   for (const studies::Driver& d : st.correlations)
@@ -312,21 +316,31 @@ void write_study_markdown(const StudyReport& report, const std::vector<std::stri
         "|\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const studies::OutputStatistics& o : st.outputs) {
     if (std::find(studies::CaseColumns::headline().begin(), studies::CaseColumns::headline().end(), o.output) ==
-        studies::CaseColumns::headline().end())
+            studies::CaseColumns::headline().end() ||
+        o.n == 0)  // a gap for a scene without loops
       continue;
     md << "| " << o.output << " | " << o.n << " | " << fmt(o.min) << " | " << fmt(o.p1) << " | " << fmt(o.p5) << " | "
        << fmt(o.p50) << " | " << fmt(o.p95) << " | " << fmt(o.p99) << " | " << fmt(o.max) << " | " << fmt(o.mean)
        << " | " << fmt(o.sd) << " |\n";
   }
-  md << "\nEvery output column (per latch and per joint) is summarized in summary.json.\n";
+  md << "\nEvery output column (per latch and per joint) is summarized in summary.json. A tail percentile is "
+        "given only where the sample reaches beyond it (p1 and p99 from 100 cases, p5 and p95 from 20; \"-\" "
+        "otherwise).\n";
   if (!st.drivers.empty()) {
     md << "\n## What drives the spread\n\nSpearman's rank correlation of each output with each varied input, over the "
           "deployed cases; the strongest per output:\n\n| output | strongest input | rho |\n|---|---|---:|\n";
     for (const studies::Driver& d : st.drivers)
-      md << "| " << d.output << " | " << d.input << " | " << fmt(d.rho) << " |\n";
+      md << "| " << d.output << " | " << d.input
+         << (d.together.empty() ? "" : " and the " + std::to_string(d.together.size()) + " inputs that moved with it")
+         << " | " << fmt(d.rho) << " |\n";
     const studies::Driver& d = st.drivers.front();
-    md << "\nThe deployment time is driven most by `" << d.input << "` (rho = " << fmt(d.rho) << ": "
-       << (d.rho < 0 ? "a larger value deploys sooner" : "a larger value deploys later") << ").\n";
+    if (d.together.empty())
+      md << "\nThe deployment time is driven most by `" << d.input << "` (rho = " << fmt(d.rho) << ": "
+         << (d.rho < 0 ? "a larger value deploys sooner" : "a larger value deploys later") << ").\n";
+    else
+      md << "\n`" << d.input << "` moved together with " << d.together.size()
+         << " other inputs over these cases (a zip, or one variable applied to many): their effects cannot be "
+            "told apart, and none of them is named the driver.\n";
   }
   write_indeterminate_loads(report, md);
   bool any_failure = false;

@@ -79,7 +79,7 @@ void bind_study(py::module_& m) {
                                  results,
                                  static_cast<long>(run.cases().size()),
                                  0,
-                                 studies::study_statistics(run.columns(), results),
+                                 studies::study_statistics(run.columns(), results, studies::inputs_moved_together(study)),
                                  std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                                  1,
                                  threads,

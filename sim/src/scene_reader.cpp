@@ -57,6 +57,7 @@ class SceneReader : private input::YamlFields {
   Visual read_visual(const YAML::Node& node, const std::string& field) const;
   void read_springs(const YAML::Node& list, SceneBuilder& b) const;
   void read_dampers(const YAML::Node& list, SceneBuilder& b) const;
+  void read_stops(const YAML::Node& list, SceneBuilder& b) const;
   void read_friction(const YAML::Node& list, SceneBuilder& b) const;
   std::shared_ptr<const SpringCurve> spring_curve(const YAML::Node& table, const std::string& field) const;
   void read_point_springs(const YAML::Node& list, SceneBuilder& b) const;
@@ -288,6 +289,17 @@ void SceneReader::read_dampers(const YAML::Node& list, SceneBuilder& b) const {
     damper->damping = number(require(d, "damping", field), field + ".damping");
     b.element(damper);
   });
+}
+
+void SceneReader::read_stops(const YAML::Node& list, SceneBuilder& b) const {
+  each(list, "stops", {"joint", "position", "stiffness", "damping"},
+       [&](const YAML::Node& s, const std::string& field, std::size_t) {
+         auto stop = std::make_shared<JointStop>(element_joint(s, b, field));
+         stop->position = number(require(s, "position", field), field + ".position");
+         stop->stiffness = number(require(s, "stiffness", field), field + ".stiffness");
+         stop->damping = number_or(s, "damping", 0.0, field);
+         b.element(stop);
+       });
 }
 
 void SceneReader::read_friction(const YAML::Node& list, SceneBuilder& b) const {
@@ -560,7 +572,7 @@ SceneFile SceneReader::read(const std::string& text_in, const std::vector<Overri
   // former are applied_forces since 0.3.
   if (root["loads"]) fail(root["loads"], "loads", "renamed: the constant forces on bodies are `applied_forces:`");
   check_keys(root,
-             {"name", "description", "base", "gravity", "bodies", "springs", "dampers", "friction", "point_springs",
+             {"name", "description", "base", "gravity", "bodies", "springs", "dampers", "stops", "friction", "point_springs",
               "bushings", "applied_forces", "latches", "loops", "sensors", "regulator", "initial", "closure_tolerance",
               "run"},
              "");
@@ -576,6 +588,7 @@ SceneFile SceneReader::read(const std::string& text_in, const std::vector<Overri
     // The elements in the order their forces add up.
     if (root["springs"]) read_springs(root["springs"], b);
     if (root["dampers"]) read_dampers(root["dampers"], b);
+    if (root["stops"]) read_stops(root["stops"], b);
     if (root["friction"]) read_friction(root["friction"], b);
     if (root["latches"]) read_latches(root["latches"], b);
     if (root["applied_forces"]) read_applied_forces(root["applied_forces"], b);

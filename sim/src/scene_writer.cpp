@@ -122,6 +122,10 @@ void elements(std::ostream& out, const Scene& scene) {
     return "joint: " + joint(f.joint) + ", coulomb: " + format_number(f.coulomb) +
            ", viscous: " + format_number(f.viscous) + ", velocity_scale: " + format_number(f.velocity_scale);
   });
+  list("stops", scene.elements_of<JointStop>(), [&](const JointStop& s) {
+    return "joint: " + joint(s.joint) + ", position: " + format_number(s.position) +
+           ", stiffness: " + format_number(s.stiffness) + ", damping: " + format_number(s.damping);
+  });
   list("latches", scene.latches(), [&](const Latch& l) {
     return "joint: " + joint(l.joint) + ", position: " + format_number(l.position) +
            ", stiffness: " + format_number(l.stiffness) + ", damping: " + format_number(l.damping) +

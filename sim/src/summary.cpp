@@ -24,6 +24,7 @@ RunSummary summarize(const Scene& scene, const RunResult& result) {
   for (std::size_t l = 0; l < p.latch_torque.size(); ++l)
     s.peak_latch_torque.push_back({model.joints[latches[l]->joint].name, p.latch_torque[l]});
   for (std::size_t j = 0; j < p.hinge_force.size(); ++j) {
+    if (!model.joints[j].has_reaction()) continue;
     s.peak_hinge_force.push_back({model.joints[j].name, p.hinge_force[j]});
     s.peak_hinge_moment.push_back({model.joints[j].name, p.hinge_moment[j]});
     s.peak_hinge_force_indeterminate.push_back({model.joints[j].name, p.hinge_force_indeterminate[j]});

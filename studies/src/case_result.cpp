@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "unfurl/sim/summary.hpp"
+
 namespace unfurl::studies {
 
 namespace {
@@ -15,21 +17,6 @@ std::vector<std::string> latch_joints(const sim::Scene& scene) {
   std::vector<std::string> names;
   for (const sim::Latch* l : scene.latches()) names.push_back(scene.model.joints[l->joint].name);
   return names;
-}
-
-// The case scene's latch on `joint` that the nominal scene also has (a
-// stuck hinge's stop comes after them), or -1.
-int case_latch(const sim::Scene& scene, const std::string& joint) {
-  const std::vector<const sim::Latch*> latches = scene.latches();
-  for (int l = 0; l < static_cast<int>(latches.size()); ++l)
-    if (scene.model.joints[latches[l]->joint].name == joint) return l;
-  return -1;
-}
-
-double engagement_time(const sim::Trajectory& tr, int latch) {
-  for (const sim::LatchEvent& e : tr.events)
-    if (e.latch == latch) return e.t;
-  return kNaN;
 }
 
 void record_overlay(const Study& study, const sim::Scene& scene, const sim::Trajectory& tr, CaseResult& r) {
@@ -54,14 +41,14 @@ void append_determinacy(const sim::RunPeaks& peaks, double peak_indeterminate_fo
   outputs.push_back(spans.empty() ? kNaN : peak_indeterminate_force);
 }
 
-// The nominal scene's element or sensor peaks, as the case's run kept them
-// (NaN for one the case's scene lacks).
-void append_named_peaks(const std::vector<sim::TrackedPeak>& nominal, const std::vector<sim::TrackedPeak>& in_case,
-                        const std::vector<sim::Peak>& kept, std::vector<double>& outputs) {
+// The nominal scene's element or sensor peaks, as the case's summary has
+// them (NaN for one the case's scene lacks).
+void append_named_peaks(const std::vector<sim::TrackedPeak>& nominal,
+                        const std::vector<sim::RunSummary::ElementPeakValue>& in_case, std::vector<double>& outputs) {
   for (const sim::TrackedPeak& p : nominal) {
     double value = kNaN;
-    for (std::size_t k = 0; k < in_case.size() && k < kept.size(); ++k)
-      if (in_case[k].quantity == p.quantity && in_case[k].name == p.name) value = kept[k].value;
+    for (const auto& e : in_case)
+      if (e.quantity == p.quantity && e.name == p.name && !std::isnan(e.peak.t)) value = e.peak.value;
     outputs.push_back(value);
   }
 }
@@ -106,8 +93,10 @@ CaseColumns case_columns(const Study& study, const sim::Scene& nominal) {
     c.outputs.push_back(name);
   for (const std::string& j : latch_joints(nominal)) c.outputs.push_back("latch_time." + j);
   for (const std::string& j : latch_joints(nominal)) c.outputs.push_back("peak_latch_torque." + j);
-  for (const sim::Joint& j : nominal.model.joints) c.outputs.push_back("peak_hinge_force." + j.name);
-  for (const sim::Joint& j : nominal.model.joints) c.outputs.push_back("peak_hinge_moment." + j.name);
+  for (const sim::Joint& j : nominal.model.joints)
+    if (j.has_reaction()) c.outputs.push_back("peak_hinge_force." + j.name);
+  for (const sim::Joint& j : nominal.model.joints)
+    if (j.has_reaction()) c.outputs.push_back("peak_hinge_moment." + j.name);
   for (const std::vector<sim::TrackedPeak>& peaks : {nominal.element_peaks(), nominal.sensor_peaks()})
     for (const sim::TrackedPeak& p : peaks) c.outputs.push_back(p.quantity + "." + p.name);
   c.outputs.push_back("steps");
@@ -127,17 +116,27 @@ CaseResult case_result(const Study& study, const sim::Scene& nominal, const Stud
   const sim::Scene& scene = run.scene;
   const sim::RunResult& rr = run.run;
   const sim::Trajectory& tr = rr.trajectory;
+  // Every figure from the case's own summary (what its summary.json says),
+  // by the nominal scene's joint names.
+  const sim::RunSummary summary = sim::summarize(scene, rr);
   CaseResult r;
   r.id = c.id;
   r.failure = c.failure ? c.failure->describe() : "";
   r.inputs = c.inputs;
 
+  const auto named = [](const std::vector<sim::RunSummary::NamedPeak>& peaks, const std::string& joint) {
+    for (const auto& p : peaks)
+      if (p.joint == joint && !std::isnan(p.peak.t)) return p.peak.value;
+    return kNaN;
+  };
   std::vector<double> times, torques;
   std::string unlatched;
   for (const std::string& joint : latch_joints(nominal)) {
-    const int l = case_latch(scene, joint);
-    times.push_back(l < 0 ? kNaN : engagement_time(tr, l));
-    torques.push_back(l < 0 ? kNaN : rr.peaks.latch_torque[l].value);
+    double t = kNaN;
+    for (const auto& [j, at] : summary.latch_times)
+      if (j == joint && std::isnan(t)) t = at;
+    times.push_back(t);
+    torques.push_back(named(summary.peak_latch_torque, joint));
     if (std::isnan(times.back())) unlatched += (unlatched.empty() ? "" : ", ") + joint;
   }
   if (rr.status == sim::RunStatus::failed) {
@@ -157,27 +156,27 @@ CaseResult case_result(const Study& study, const sim::Scene& nominal, const Stud
     return m;
   };
   std::vector<double> forces, moments, indeterminate_forces;
-  for (std::size_t j = 0; j < nominal.model.joints.size(); ++j) {
-    forces.push_back(j < rr.peaks.hinge_force.size() ? rr.peaks.hinge_force[j].value : kNaN);
-    moments.push_back(j < rr.peaks.hinge_moment.size() ? rr.peaks.hinge_moment[j].value : kNaN);
-    indeterminate_forces.push_back(
-        j < rr.peaks.hinge_force_indeterminate.size() ? rr.peaks.hinge_force_indeterminate[j].value : kNaN);
+  for (const sim::Joint& j : nominal.model.joints) {
+    if (!j.has_reaction()) continue;
+    forces.push_back(named(summary.peak_hinge_force, j.name));
+    moments.push_back(named(summary.peak_hinge_moment, j.name));
+    indeterminate_forces.push_back(named(summary.peak_hinge_force_indeterminate, j.name));
   }
   const double deployment = r.status == CaseStatus::deployed && !times.empty() ? largest(times) : kNaN;
   r.outputs = {deployment,
                largest(torques),
                largest(forces),
                largest(moments),
-               scene.loops.empty() ? kNaN : rr.peaks.gap_m.value,
-               tr.empty() ? kNaN : tr.samples.back().energy.total(),
-               scene.loops.empty() ? kNaN : rr.peaks.gap_rad.value};
+               scene.loops.empty() ? kNaN : summary.max_closure_gap,
+               tr.empty() ? kNaN : summary.energy_final,
+               scene.loops.empty() ? kNaN : summary.max_closure_angle};
   append_determinacy(rr.peaks, largest(indeterminate_forces), r.outputs);
   r.outputs.insert(r.outputs.end(), times.begin(), times.end());
   r.outputs.insert(r.outputs.end(), torques.begin(), torques.end());
   r.outputs.insert(r.outputs.end(), forces.begin(), forces.end());
   r.outputs.insert(r.outputs.end(), moments.begin(), moments.end());
-  append_named_peaks(nominal.element_peaks(), scene.element_peaks(), rr.peaks.element, r.outputs);
-  append_named_peaks(nominal.sensor_peaks(), scene.sensor_peaks(), rr.peaks.sensor, r.outputs);
+  append_named_peaks(nominal.element_peaks(), summary.element_peaks, r.outputs);
+  append_named_peaks(nominal.sensor_peaks(), summary.sensor_peaks, r.outputs);
   r.outputs.push_back(static_cast<double>(rr.stats.steps));
   r.outputs.push_back(rr.wall_time_s);
   if (!tr.empty()) record_overlay(study, scene, tr, r);

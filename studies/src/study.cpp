@@ -288,7 +288,9 @@ class StudyReader {
       for (const sim::Latch* l : nominal_.latches()) candidates.push_back(m.joints[l->joint].name);
     else if (kind == StudyFailure::Kind::stuck || kind == StudyFailure::Kind::extra_friction)
       for (const sim::Joint& j : m.joints) {
-        if (j.dof() > 0) candidates.push_back(j.name);
+        // What a stop or friction acts on: a hinge's or a slider's coordinate
+        // (not a free bus, as the scene loader has it).
+        if (j.has_free_coordinate()) candidates.push_back(j.name);
       }
     else
       for (const sim::JointSpring* s : nominal_.elements_of<sim::JointSpring>())
@@ -298,7 +300,7 @@ class StudyReader {
     if (std::find(candidates.begin(), candidates.end(), name) == candidates.end()) {
       const char* what = kind == StudyFailure::Kind::latch_fails ? "a latch"
                          : kind == StudyFailure::Kind::stuck || kind == StudyFailure::Kind::extra_friction
-                             ? "a moving joint"
+                             ? "a hinge or slider (revolute or prismatic)"
                                                                  : "a spring";
       fields_.fail(node, field, "'" + name + "' is not a joint with " + what + " (or \"*\" for every one)");
     }

@@ -2,11 +2,12 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <string>
 #include <random>
+#include <string>
 
 #include "unfurl/sim/elements/joint_friction.hpp"
 #include "unfurl/sim/elements/joint_spring.hpp"
+#include "unfurl/sim/elements/joint_stop.hpp"
 
 namespace unfurl::studies {
 
@@ -116,11 +117,10 @@ void scale_preload(sim::Scene& scene, int joint, double factor) {
   s.free_position = q0 + factor * (s.free_position - q0);
 }
 
-// A stuck hinge is held where it starts by a stop as stiff as the scene's
-// stiffest latch, engaged from t = 0 (it starts at its position). It acts
-// after the scene's latches.
+// A stuck hinge is held where it starts by a stop (not a latch: its latch
+// stays unlatched) as stiff as the scene's stiffest latch.
 void make_stuck(sim::Scene& scene, int joint) {
-  auto stop = std::make_shared<sim::Latch>(joint);
+  auto stop = std::make_shared<sim::JointStop>(joint);
   stop->position = initial_q(scene, joint);
   stop->stiffness = 1000.0;
   stop->damping = 10.0;

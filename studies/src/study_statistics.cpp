@@ -40,6 +40,15 @@ double pearson(const std::vector<double>& x, const std::vector<double>& y) {
   return sxy / std::sqrt(sxx * syy);
 }
 
+// A tail percentile only where the sample reaches beyond it: the p-th (and
+// the (100 - p)-th) needs at least 100 / p cases (p1 and p99: 100; p5 and
+// p95: 20); else NaN, printed as "-".
+double supported_percentile(const std::vector<double>& sorted, double p) {
+  const double tail = std::min(p, 100 - p);
+  if (static_cast<double>(sorted.size()) * tail < 100) return kNaN;
+  return percentile(sorted, p);
+}
+
 OutputStatistics describe_output(const std::string& name, std::vector<double> x) {
   OutputStatistics s;
   s.output = name;
@@ -55,11 +64,11 @@ OutputStatistics describe_output(const std::string& name, std::vector<double> x)
   double ss = 0;
   for (double v : x) ss += (v - s.mean) * (v - s.mean);
   s.sd = x.size() > 1 ? std::sqrt(ss / static_cast<double>(x.size() - 1)) : 0.0;
-  s.p1 = percentile(x, 1);
-  s.p5 = percentile(x, 5);
+  s.p1 = supported_percentile(x, 1);
+  s.p5 = supported_percentile(x, 5);
   s.p50 = percentile(x, 50);
-  s.p95 = percentile(x, 95);
-  s.p99 = percentile(x, 99);
+  s.p95 = supported_percentile(x, 95);
+  s.p99 = supported_percentile(x, 99);
   return s;
 }
 
@@ -78,7 +87,9 @@ double spearman(const std::vector<double>& x, const std::vector<double>& y) {
   return pearson(ranks(x), ranks(y));
 }
 
-StudyStatistics study_statistics(const CaseColumns& columns, const std::vector<CaseResult>& results) {
+bool inputs_moved_together(const Study& study) { return study.zip && study.runs == 0 && study.variables.size() > 1; }
+
+StudyStatistics study_statistics(const CaseColumns& columns, const std::vector<CaseResult>& results, bool together) {
   StudyStatistics st;
   std::vector<const CaseResult*> deployed;
   for (const CaseResult& r : results) {
@@ -94,19 +105,29 @@ StudyStatistics study_statistics(const CaseColumns& columns, const std::vector<C
       if (std::isfinite(r->outputs[o])) x.push_back(r->outputs[o]);
     st.outputs.push_back(describe_output(columns.outputs[o], std::move(x)));
   }
+  const auto moved_with = [&](std::size_t i) {
+    std::vector<std::string> others;
+    if (together)
+      for (std::size_t j = 0; j < columns.inputs.size(); ++j)
+        if (j != i) others.push_back(columns.inputs[j]);
+    return others;
+  };
   for (const std::string& output : CaseColumns::headline()) {
-    Driver strongest{output, "", kNaN};
+    Driver strongest{output, "", kNaN, {}};
     for (std::size_t i = 0; i < columns.inputs.size(); ++i) {
       std::vector<double> x, y;
       for (const CaseResult* r : deployed) {
         const double v = output_value(columns, *r, output);
         if (std::isfinite(v) && std::isfinite(r->inputs[i])) x.push_back(r->inputs[i]), y.push_back(v);
       }
-      const Driver d{output, columns.inputs[i], spearman(x, y)};
+      const Driver d{output, columns.inputs[i], spearman(x, y), {}};
       st.correlations.push_back(d);
       if (!std::isnan(d.rho) && (std::isnan(strongest.rho) || std::abs(d.rho) > std::abs(strongest.rho))) strongest = d;
     }
-    if (!std::isnan(strongest.rho)) st.drivers.push_back(strongest);
+    if (std::isnan(strongest.rho)) continue;
+    const auto at = std::find(columns.inputs.begin(), columns.inputs.end(), strongest.input);
+    strongest.together = moved_with(static_cast<std::size_t>(at - columns.inputs.begin()));
+    st.drivers.push_back(strongest);
   }
   return st;
 }

@@ -59,6 +59,9 @@ struct Joint {
   // Whether the joint's coordinates are angles or lengths that a spring,
   // a latch or friction can act on (one coordinate, q' its rate).
   bool is_scalar() const { return dof() == 1; }
+  // Whether it carries a reaction: a free joint (a free-floating bus) joins
+  // its body to nothing, so its wrench is zero and is not reported.
+  bool has_reaction() const { return type != JointType::free; }
   // Whether springs, dampers, friction and latches can act on it: a
   // revolute or prismatic joint, on its first coordinate (a compliant
   // hinge's angle).

@@ -11,6 +11,8 @@
 
 namespace unfurl::studies {
 
+// The tail percentiles are NaN where the sample does not reach beyond them:
+// p1 and p99 need 100 cases, p5 and p95 20.
 struct OutputStatistics {
   std::string output;
   long n = 0;  // deployed cases (no injected failure) with a finite value
@@ -21,6 +23,9 @@ struct OutputStatistics {
 struct Driver {
   std::string output, input;
   double rho = 0;  // Spearman's rank correlation over the deployed cases
+  // The other inputs that moved with `input` (a zip): then no one of them
+  // is the driver.
+  std::vector<std::string> together;
 };
 
 struct StudyStatistics {
@@ -30,7 +35,13 @@ struct StudyStatistics {
   std::vector<Driver> correlations;       // every headline output against every input
 };
 
-StudyStatistics study_statistics(const CaseColumns& columns, const std::vector<CaseResult>& results);
+// `together`: the inputs moved together (a zip of lists: one case per
+// index), so that no one of them can be named a driver; else each varied
+// on its own (a product of lists, random draws).
+StudyStatistics study_statistics(const CaseColumns& columns, const std::vector<CaseResult>& results,
+                                 bool together = false);
+// Whether a study's inputs moved together: a zip of lists.
+bool inputs_moved_together(const Study& study);
 
 // The p-th percentile (0..100) of sorted values, linear between ranks.
 double percentile(const std::vector<double>& sorted, double p);

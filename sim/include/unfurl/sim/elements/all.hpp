@@ -9,5 +9,6 @@
 #include "unfurl/sim/elements/joint_damper.hpp"
 #include "unfurl/sim/elements/joint_friction.hpp"
 #include "unfurl/sim/elements/joint_spring.hpp"
+#include "unfurl/sim/elements/joint_stop.hpp"
 #include "unfurl/sim/elements/latch.hpp"
 #include "unfurl/sim/elements/point_spring.hpp"
