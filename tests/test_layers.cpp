@@ -72,7 +72,8 @@ TEST(Layers, RendererReadsTheSolversDescriptionsNeverItsDynamics) {
   const std::set<std::string> readable{"spatial",      "joint",      "model",       "kinematics", "loop",
                                        "loads",        "scene",      "visuals",     "energy",     "state_layout",
                                        "run_settings", "trajectory", "number_text", "momentum",   "regulator_settings",
-                                       "force_element", "elements/latch"};
+                                       "force_element", "elements/latch", "torque_margin_result",
+                                       "torque_margin_factors"};
   for (const Include& i : includes_under("render", false)) {
     EXPECT_FALSE(starts_with(i.target, "unfurl/studies/")) << i.file << " includes " << i.target;
     if (!starts_with(i.target, "unfurl/sim/")) continue;

@@ -23,6 +23,7 @@
 #include "unfurl/sim/simulation.hpp"
 #include "unfurl/io/run_files.hpp"
 #include "unfurl/render/plot_renderer.hpp"
+#include "unfurl/render/torque_margin_plot.hpp"
 #include "unfurl/render/trajectory_plots.hpp"
 #include "unfurl/io/video_pipe.hpp"
 
@@ -54,8 +55,9 @@ const char* kHelp =
     "  --gl egl|osmesa|auto  the offscreen OpenGL context (default auto: EGL when it works, else\n"
     "                        OSMesa)\n"
     "  --plots               also write angles.png, rates.png, residuals.png (the loops' gaps;\n"
-    "                        scenes with loops), loads.png, energy.png and bus.png (a\n"
-    "                        free-floating bus's attitude and rate)\n"
+    "                        scenes with loops), loads.png, energy.png, bus.png (a\n"
+    "                        free-floating bus's attitude and rate), sensors.png and\n"
+    "                        torque_margin.png (the driven joints' motorization factors)\n"
     "  --no-frames           do not write frame PNGs (with --video or --plots)\n"
     "  --trajectory FILE     draw this trajectory.csv instead of simulating (events.csv and\n"
     "                        loads.csv beside it give the latch marks and the loads plot); SCENE\n"
@@ -201,6 +203,11 @@ int command_render(const std::vector<std::string>& argv) {
       plotter.draw(p.spec, image);
       io::write_png(image, dir + "/" + p.file, 6);
       plots.push_back(dir + "/" + p.file);
+    }
+    if (const auto margins = sim::torque_margins(scene, trajectory); !margins.empty()) {
+      plotter.draw(render::torque_margin_plot(scene.name, margins, scene.torque_margin), image);
+      io::write_png(image, dir + "/torque_margin.png", 6);
+      plots.push_back(dir + "/torque_margin.png");
     }
   }
 

@@ -94,6 +94,33 @@ void print_element_peaks(const std::vector<sim::RunSummary::ElementPeakValue>& p
   }
 }
 
+// The driven joints' smallest motorization factor, and every joint short of
+// the required one by name.
+void print_torque_margins(const sim::RunSummary& s) {
+  if (s.torque_margins.empty()) return;
+  const double required = s.torque_margin_factors.required;
+  const sim::JointTorqueMargin* worst = &s.torque_margins.front();
+  for (const auto& m : s.torque_margins)
+    if (m.worst() < worst->worst()) worst = &m;
+  const auto where = [](const sim::JointTorqueMargin& m) {
+    char text[128];
+    const bool run = m.worst_run >= 0 && (m.worst_quasi_static < 0 || m.run[m.worst_run].factor <=
+                                                                          m.quasi_static[m.worst_quasi_static].factor);
+    const sim::TorqueMarginPoint& p = run ? m.run[m.worst_run] : m.quasi_static[m.worst_quasi_static];
+    if (run)
+      std::snprintf(text, sizeof text, "at q = %.4g, t = %.4g s", p.q, p.t);
+    else
+      std::snprintf(text, sizeof text, "at q = %.4g (quasi-static)", p.q);
+    return std::string(text);
+  };
+  std::printf("margin       smallest motorization factor %.3g at %s, %s (required %g: %s)\n", worst->worst(),
+              worst->joint.c_str(), where(*worst).c_str(), required, s.torque_margins_pass() ? "every driven joint passes" : "FAILS");
+  for (const auto& m : s.torque_margins)
+    if (!m.passes(s.torque_margin_factors))
+      std::printf("warning      torque margin of %s fails: motorization factor %.3g %s, below %g\n", m.joint.c_str(),
+                  m.worst(), where(m).c_str(), required);
+}
+
 void print_summary(const sim::Scene& scene, const sim::RunResult& result, const sim::RunSummary& s,
                    const std::string& dir) {
   const sim::RunSettings& run = result.settings;
@@ -126,6 +153,7 @@ void print_summary(const sim::Scene& scene, const sim::RunResult& result, const 
   print_hinge_force_peaks(s);
   print_element_peaks(s.element_peaks, "");
   print_element_peaks(s.sensor_peaks, "sensors");
+  print_torque_margins(s);
   std::printf("energy       %.9g J at t = 0, %.9g J at t = %g s, %.9g J dissipated\n", s.energy_initial, s.energy_final,
               s.t_reached, s.energy_dissipated);
   if (s.free_bus)

@@ -203,6 +203,42 @@ std::vector<std::string> peak_quantities(const std::vector<sim::RunSummary::Elem
   return quantities;
 }
 
+// "torque_margin": the factors, and per driven joint the smallest
+// motorization factor along the run and quasi-statically, and where.
+void write_torque_margins(JsonWriter& json, const sim::RunSummary& summary) {
+  const sim::TorqueMarginFactors& f = summary.torque_margin_factors;
+  json.begin_object("torque_margin");
+  json.value("required_motorization_factor", f.required);
+  json.begin_object("uncertainty_factors")
+      .value("spring", f.spring)
+      .value("friction", f.friction)
+      .value("damping", f.damping)
+      .value("harness", f.harness)
+      .value("inertia", f.inertia)
+      .end_object();
+  json.value("required_acceleration", f.required_acceleration);
+  const double worst = summary.worst_motorization_factor();
+  json.value("motorization_factor", worst).value("torque_margin", worst - 1);
+  json.value("passes", summary.torque_margins_pass());
+  json.begin_object("joints");
+  for (const sim::JointTorqueMargin& m : summary.torque_margins) {
+    json.begin_object(m.joint);
+    json.value("motorization_factor", m.worst()).value("torque_margin", m.worst() - 1);
+    json.value("passes", m.passes(f));
+    if (m.worst_run >= 0) {
+      const sim::TorqueMarginPoint& p = m.run[m.worst_run];
+      json.begin_object("run").value("motorization_factor", p.factor).value("q", p.q).value("t", p.t).end_object();
+    }
+    if (m.worst_quasi_static >= 0) {
+      const sim::TorqueMarginPoint& p = m.quasi_static[m.worst_quasi_static];
+      json.begin_object("quasi_static").value("motorization_factor", p.factor).value("q", p.q).end_object();
+    }
+    json.end_object();
+  }
+  json.end_object();
+  json.end_object();
+}
+
 // "units": the unit of every number above with one; per joint where
 // joints differ (a slider's force is in N where a hinge's torque is in N m).
 void write_summary_units(JsonWriter& json, const sim::Scene& scene, const sim::RunSummary& summary) {
@@ -236,6 +272,7 @@ void write_summary_units(JsonWriter& json, const sim::Scene& scene, const sim::R
           break;
         }
   json.value("energy_initial", "J").value("energy_final", "J").value("energy_dissipated", "J");
+  json.value("torque_margin", "motorization factors: none; torque_margin = motorization factor - 1; q as q.J");
   json.begin_object("final_q");
   for (int c = 0; c < m.nq; ++c) json.value(m.position_name(c), m.position_unit(c));
   json.end_object();
@@ -334,6 +371,7 @@ std::string summary_json(const sim::Scene& scene, const sim::RunResult& result, 
   json.end_array();
   peaks("peak_hinge_force_indeterminate", summary.peak_hinge_force_indeterminate);
   peaks("peak_hinge_moment_indeterminate", summary.peak_hinge_moment_indeterminate);
+  write_torque_margins(json, summary);
   json.value("energy_initial", summary.energy_initial);
   json.value("energy_final", summary.energy_final);
   json.value("energy_dissipated", summary.energy_dissipated);

@@ -257,6 +257,39 @@ namespace {
 
 // The cases whose loads rigid mechanics cannot determine somewhere
 // (CaseResult's loads_determinate = 0), counted and listed.
+// Cases whose torque margin (the smallest motorization factor less one)
+// falls below the required one, counted and listed with their joints.
+void write_torque_margins(const StudyReport& report, std::ostream& md) {
+  const double required = studies::nominal_scene(report.study).scene.torque_margin.required;
+  std::vector<std::string> rows;
+  long assessed = 0;
+  for (const studies::CaseResult& r : report.results) {
+    const double margin = studies::output_value(report.columns, r, "torque_margin");
+    if (std::isnan(margin)) continue;
+    ++assessed;
+    if (margin + 1 >= required) continue;
+    std::string joints;
+    for (std::size_t o = 0; o < report.columns.outputs.size(); ++o) {
+      const std::string& name = report.columns.outputs[o];
+      if (name.rfind("torque_margin.", 0) != 0 || o >= r.outputs.size() || !(r.outputs[o] + 1 < required)) continue;
+      joints += (joints.empty() ? "" : ", ") + name.substr(14) + " " + fmt(r.outputs[o] + 1);
+    }
+    rows.push_back("| " + r.id + " | " + (r.failure.empty() ? "-" : cell(r.failure)) + " | " + fmt(margin + 1) + " | " +
+                   joints + " |\n");
+  }
+  if (assessed == 0) return;
+  md << "\n## Torque margins\n\n";
+  if (rows.empty()) {
+    md << "Every driven joint of every case reaches the required motorization factor (" << fmt(required) << ").\n";
+    return;
+  }
+  md << "**Warning:** in " << rows.size() << " of " << assessed
+     << " cases a driven joint's motorization factor (its driving torque over its resistive torques, each with its "
+        "uncertainty factor; torque_margin = the factor less one) falls below the required "
+     << fmt(required) << ":\n\n| case | failure | smallest motorization factor | joints below |\n|---|---|---:|---|\n";
+  for (const std::string& row : rows) md << row;
+}
+
 void write_indeterminate_loads(const StudyReport& report, std::ostream& md) {
   const auto value = [&](const studies::CaseResult& r, const char* name) {
     return studies::output_value(report.columns, r, name);
@@ -343,6 +376,7 @@ void write_study_markdown(const StudyReport& report, const std::vector<std::stri
             "told apart, and none of them is named the driver.\n";
   }
   write_indeterminate_loads(report, md);
+  write_torque_margins(report, md);
   bool any_failure = false;
   for (const studies::CaseResult& r : report.results)
     any_failure = any_failure || !r.failure.empty() || r.status != studies::CaseStatus::deployed;

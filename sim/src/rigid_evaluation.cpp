@@ -1,6 +1,6 @@
-// Dynamics evaluated without the regulator, for linearizations: the
-// accelerations with the rigid model's loop forces, the mass matrix, and
-// the loops' gap and its Jacobian (dynamics.hpp).
+// Dynamics evaluated without the regulator, for analyses: the accelerations
+// with the rigid model's loop forces, an element's generalized forces, the
+// mass matrix, and the loops' gap and its Jacobian (dynamics.hpp).
 #include <cmath>
 
 #include "closure_rank.hpp"
@@ -28,6 +28,20 @@ bool Dynamics::rigid_accelerations(const double* q, const double* w, double* w_d
   for (int c = 0; c < layout_.nv; ++c)
     if (!std::isfinite(w_dot[c])) return false;
   return true;
+}
+
+Eigen::VectorXd Dynamics::element_generalized_forces(std::size_t k, const double* q, const double* w) {
+  const Model& model = scene_.model;
+  configure(q);
+  body_velocities(w, true);
+  sweep_.poses(poses_);
+  for (Vec6& f : F_) f.setZero();
+  Eigen::VectorXd Q = Eigen::VectorXd::Zero(model.nv);
+  ElementForces out{RatesOut(Q.data()), F_};
+  scene_.elements[k]->add_forces(element_state(k, q, w, poses_, v_, model.base_velocity), out);
+  sweep_.generalized_forces(F_, Q_.data());
+  for (int c = 0; c < model.nv; ++c) Q[c] += Q_[c];
+  return Q;
 }
 
 Eigen::MatrixXd Dynamics::mass_matrix(const double* q) {

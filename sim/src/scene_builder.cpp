@@ -123,6 +123,11 @@ SceneBuilder& SceneBuilder::run(const RunSettings& settings) {
   return *this;
 }
 
+SceneBuilder& SceneBuilder::torque_margin(const TorqueMarginFactors& factors) {
+  scene_.torque_margin = factors;
+  return *this;
+}
+
 void SceneBuilder::set_initial(const std::string& joint, std::vector<double> values, int which) {
   initial_.push_back({joint, std::move(values), which});
 }

@@ -73,6 +73,7 @@ class SceneReader : private input::YamlFields {
   RegulatorSettings read_regulator(const YAML::Node& node) const;
   void read_initial(const YAML::Node& node, SceneBuilder& b) const;
   RunSettings read_run(const YAML::Node& node) const;
+  TorqueMarginFactors read_torque_margin(const YAML::Node& node) const;
   // Each item of a list, checked to be a mapping of the given keys.
   template <class Read>
   void each(const YAML::Node& list, const char* name, Keys keys, Read read) const;
@@ -525,6 +526,20 @@ void SceneReader::read_initial(const YAML::Node& node, SceneBuilder& b) const {
   }
 }
 
+TorqueMarginFactors SceneReader::read_torque_margin(const YAML::Node& node) const {
+  check_keys(node, {"spring", "friction", "damping", "harness", "inertia", "required", "required_acceleration"},
+             "torque_margin");
+  TorqueMarginFactors f;
+  f.spring = number_or(node, "spring", f.spring, "torque_margin");
+  f.friction = number_or(node, "friction", f.friction, "torque_margin");
+  f.damping = number_or(node, "damping", f.damping, "torque_margin");
+  f.harness = number_or(node, "harness", f.harness, "torque_margin");
+  f.inertia = number_or(node, "inertia", f.inertia, "torque_margin");
+  f.required = number_or(node, "required", f.required, "torque_margin");
+  f.required_acceleration = number_or(node, "required_acceleration", f.required_acceleration, "torque_margin");
+  return f;
+}
+
 RunSettings SceneReader::read_run(const YAML::Node& node) const {
   check_keys(node,
              {"t_end", "integrator", "linear_solver", "rtol", "atol", "dt", "sample", "max_closure", "event_window",
@@ -574,6 +589,7 @@ SceneFile SceneReader::read(const std::string& text_in, const std::vector<Overri
   check_keys(root,
              {"name", "description", "base", "gravity", "bodies", "springs", "dampers", "stops", "friction", "point_springs",
               "bushings", "applied_forces", "latches", "loops", "sensors", "regulator", "initial", "closure_tolerance",
+              "torque_margin",
               "run"},
              "");
   SceneBuilder b(root["name"] ? text(root["name"], "name") : "scene",
@@ -599,6 +615,7 @@ SceneFile SceneReader::read(const std::string& text_in, const std::vector<Overri
     if (root["regulator"]) b.regulator(read_regulator(root["regulator"]));
     if (root["initial"]) read_initial(root["initial"], b);
     if (root["closure_tolerance"]) b.closure_tolerance(number(root["closure_tolerance"], "closure_tolerance"));
+    if (root["torque_margin"]) b.torque_margin(read_torque_margin(root["torque_margin"]));
     b.run(read_run(root["run"] ? root["run"] : YAML::Node(YAML::NodeType::Map)));
     return b.build();
   } catch (const SceneInvalid& e) {

@@ -291,6 +291,11 @@ void validate(Scene& scene) {
                            "a loop (the regulator would snap it shut)");
   check_loops(scene);
   check_sensors(scene);
+  for (const auto& [name, x] : {std::pair{"spring", scene.torque_margin.spring}, {"friction", scene.torque_margin.friction},
+                               {"damping", scene.torque_margin.damping}, {"harness", scene.torque_margin.harness},
+                               {"inertia", scene.torque_margin.inertia}, {"required", scene.torque_margin.required}})
+    check_positive(x, std::string("torque_margin.") + name);
+  check_non_negative(scene.torque_margin.required_acceleration, "torque_margin.required_acceleration");
   check_regulator(scene.regulator);
   check_run(scene.run);
 }

@@ -254,6 +254,15 @@ std::string write_scene_text(const SceneFile& file, const std::string& comment) 
           << ", frame: " << sensor_frame_name(s.frame) << ", measure: [" << measures << "]}\n";
     }
   }
+  const TorqueMarginFactors& f = scene.torque_margin;
+  if (!(f.spring == TorqueMarginFactors{}.spring && f.friction == TorqueMarginFactors{}.friction &&
+        f.damping == TorqueMarginFactors{}.damping && f.harness == TorqueMarginFactors{}.harness &&
+        f.inertia == TorqueMarginFactors{}.inertia && f.required == TorqueMarginFactors{}.required &&
+        f.required_acceleration == TorqueMarginFactors{}.required_acceleration))
+    out << "\ntorque_margin: {spring: " << format_number(f.spring) << ", friction: " << format_number(f.friction)
+        << ", damping: " << format_number(f.damping) << ", harness: " << format_number(f.harness)
+        << ", inertia: " << format_number(f.inertia) << ", required: " << format_number(f.required)
+        << ", required_acceleration: " << format_number(f.required_acceleration) << "}\n";
   initial(out, scene);
   run(out, scene.run);
   return out.str();

@@ -38,6 +38,8 @@ RunSummary summarize(const Scene& scene, const RunResult& result) {
     s.sensor_peaks.push_back({sensors[k].quantity, sensors[k].name, sensors[k].unit, p.sensor[k]});
   s.indeterminate_spans = p.indeterminate_spans;
   if (p.loads_assessed) s.loads_determinate = p.indeterminate_spans.empty();
+  s.torque_margin_factors = scene.torque_margin;
+  s.torque_margins = torque_margins(scene, tr);
   if (!tr.empty()) {
     s.energy_initial = tr.samples.front().energy.total();
     s.energy_final = tr.samples.back().energy.total();
@@ -48,6 +50,12 @@ RunSummary summarize(const Scene& scene, const RunResult& result) {
     if (model.free_floating()) s.free_bus = summarize_free_bus(model, tr);
   }
   return s;
+}
+
+double RunSummary::worst_motorization_factor() const {
+  double worst = std::numeric_limits<double>::infinity();
+  for (const JointTorqueMargin& m : torque_margins) worst = std::min(worst, m.worst());
+  return worst;
 }
 
 RunSummary::FreeBus summarize_free_bus(const Model& model, const Trajectory& tr) {

@@ -78,7 +78,8 @@ std::string output_unit(const std::string& output) {
       {"max_closure_gap", "m"},     {"max_closure_angle", "rad"}, {"final_energy", "J"},
       {"indeterminate_time", "s"},  {"indeterminate_from", "s"},  {"peak_hinge_force_indeterminate", "N"},
       {"peak_bushing_force", "N"},  {"peak_bushing_moment", "N m"}, {"peak_acceleration", "m/s^2"},
-      {"peak_velocity", "m/s"},     {"peak_angular_rate", "rad/s"}, {"peak_angular_acceleration", "rad/s^2"}};
+      {"peak_velocity", "m/s"},     {"peak_angular_rate", "rad/s"}, {"peak_angular_acceleration", "rad/s^2"},
+      {"torque_margin", ""},        {"peak_stop_torque", "N m"}};
   for (const auto& [name, unit] : units)
     if (quantity == name) return unit;
   return "";
@@ -97,6 +98,8 @@ CaseColumns case_columns(const Study& study, const sim::Scene& nominal) {
     if (j.has_reaction()) c.outputs.push_back("peak_hinge_force." + j.name);
   for (const sim::Joint& j : nominal.model.joints)
     if (j.has_reaction()) c.outputs.push_back("peak_hinge_moment." + j.name);
+  c.outputs.push_back("torque_margin");
+  for (const int j : sim::driven_joints(nominal)) c.outputs.push_back("torque_margin." + nominal.model.joints[j].name);
   for (const std::vector<sim::TrackedPeak>& peaks : {nominal.element_peaks(), nominal.sensor_peaks()})
     for (const sim::TrackedPeak& p : peaks) c.outputs.push_back(p.quantity + "." + p.name);
   c.outputs.push_back("steps");
@@ -175,6 +178,15 @@ CaseResult case_result(const Study& study, const sim::Scene& nominal, const Stud
   r.outputs.insert(r.outputs.end(), torques.begin(), torques.end());
   r.outputs.insert(r.outputs.end(), forces.begin(), forces.end());
   r.outputs.insert(r.outputs.end(), moments.begin(), moments.end());
+  // The torque margin: the smallest motorization factor less one, overall
+  // and per driven joint (NaN where the case has none).
+  r.outputs.push_back(summary.torque_margins.empty() ? kNaN : summary.worst_motorization_factor() - 1);
+  for (const int j : sim::driven_joints(nominal)) {
+    double margin = kNaN;
+    for (const sim::JointTorqueMargin& m : summary.torque_margins)
+      if (m.joint == nominal.model.joints[j].name) margin = m.worst() - 1;
+    r.outputs.push_back(margin);
+  }
   append_named_peaks(nominal.element_peaks(), summary.element_peaks, r.outputs);
   append_named_peaks(nominal.sensor_peaks(), summary.sensor_peaks, r.outputs);
   r.outputs.push_back(static_cast<double>(rr.stats.steps));

@@ -142,6 +142,9 @@ class Dynamics {
   //   false where the evaluation failed or the loops have more components
   //   than the dense analysis takes (kMaxDenseComponents);
   bool rigid_accelerations(const double* q, const double* w, double* w_dot);
+  // - the generalized force element k alone puts on every velocity
+  //   coordinate (nv), at rates w;
+  Eigen::VectorXd element_generalized_forces(std::size_t k, const double* q, const double* w);
   // - the mass matrix, p = M(q) w;
   Eigen::MatrixXd mass_matrix(const double* q);
   // - the loops' gap on the active components in the closure's metric (a

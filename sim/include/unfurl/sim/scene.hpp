@@ -14,6 +14,7 @@
 #include "unfurl/sim/regulator_settings.hpp"
 #include "unfurl/sim/run_settings.hpp"
 #include "unfurl/sim/sensor.hpp"
+#include "unfurl/sim/torque_margin_factors.hpp"
 
 namespace unfurl::sim {
 
@@ -35,6 +36,8 @@ struct Scene {
   // the mechanism's length (MechanismScales).
   double closure_tolerance = 1e-6;
   RunSettings run;
+  // How the driven joints' torque margins are weighed (torque_margin.hpp).
+  TorqueMarginFactors torque_margin;
 
   // The elements of one kind, in scene order.
   template <class Element>

@@ -53,6 +53,7 @@ class SceneBuilder {
   SceneBuilder& sensor(Sensor sensor, const std::string& body);
   SceneBuilder& closure_tolerance(double tolerance);
   SceneBuilder& run(const RunSettings& settings);
+  SceneBuilder& torque_margin(const TorqueMarginFactors& factors);
 
   // Initial values of a joint's coordinates (its positions, its rates or
   // its momenta); the rest start at the joint's neutral position, at rest.

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "unfurl/sim/simulation.hpp"
+#include "unfurl/sim/torque_margin.hpp"
 
 namespace unfurl::sim {
 
@@ -43,6 +44,14 @@ struct RunSummary {
   std::vector<std::array<double, 2>> indeterminate_spans;
   std::vector<NamedPeak> peak_hinge_force_indeterminate;
   std::vector<NamedPeak> peak_hinge_moment_indeterminate;
+  // The driven joints' torque margins (torque_margin.hpp), with the
+  // factors they were weighed by.
+  std::vector<JointTorqueMargin> torque_margins;
+  TorqueMarginFactors torque_margin_factors;
+  // The smallest motorization factor over the driven joints (infinite
+  // without any), and whether every one reaches the required factor.
+  double worst_motorization_factor() const;
+  bool torque_margins_pass() const { return worst_motorization_factor() >= torque_margin_factors.required; }
   double energy_initial = 0;
   double energy_final = 0;
   double energy_dissipated = 0;  // by dampers, friction and latches up to t_reached
