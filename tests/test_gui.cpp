@@ -266,6 +266,39 @@ std::vector<double> comparison_row(const std::string& report, const std::string&
   return values;
 }
 
+// A run whose bodies go through each other: the spans the timeline marks
+// are the run's own (as `simulate` finds them), and the Runs table gives
+// the clearance beside the loads and the torque margin.
+TEST(Gui, ContactsAreTheRunsOwnAndTabledWithTheLoads) {
+  if (!io::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
+  const Scratch scratch("unfurl_gui_contacts");
+  const fs::path& dir = scratch.path;
+  std::ofstream(dir / "session.txt") << "wait_run\n"
+                                        "report " << (dir / "report.json").string() << "\n"
+                                        "quit\n";
+  ASSERT_EQ(gui_session_failure(dir, "zfold"), "");
+  const std::string report = slurp(dir / "report.json");
+  const test::CommandOutcome run = test::run_command(std::string(UNFURL_BINARY) + " simulate zfold --out " +
+                                                     (dir / "run").string());
+  ASSERT_EQ(run.code, 0) << run.output;
+  // Every contact simulate warns about is in the session's report.
+  std::size_t warned = 0;
+  const std::regex contact("warning +(\\w+) and (\\w+) touch or interpenetrate from t = ([0-9.]+) s");
+  for (std::sregex_iterator it(run.output.begin(), run.output.end(), contact), end; it != end; ++it, ++warned) {
+    std::smatch m;
+    const std::regex entry("\"body_a\": \"" + (*it)[1].str() + "\",\\s*\"body_b\": \"" + (*it)[2].str() +
+                           "\",\\s*\"t_begin\": ([-0-9.e]+)");
+    ASSERT_TRUE(std::regex_search(report, m, entry)) << (*it)[0] << "\n" << report;
+    EXPECT_NEAR(std::stod(m[1]), std::stod((*it)[3]), 1e-6);
+  }
+  EXPECT_EQ(warned, 5u) << run.output;
+  EXPECT_EQ(comparison_row(report, "clearance, m"), std::vector<double>{0.0}) << report;
+  EXPECT_EQ(comparison_row(report, "spans of contact"), std::vector<double>{5.0}) << report;
+  ASSERT_EQ(comparison_row(report, "peak hinge force, N").size(), 1u) << report;
+  EXPECT_GT(comparison_row(report, "peak hinge force, N")[0], 0.0);
+  EXPECT_EQ(comparison_row(report, "torque margin").size(), 1u) << report;
+}
+
 // Pixels of the second pinned run's yellow over the dark plots.
 int pinned_yellow_pixels(const render::Image& image, int x0, int y0, int x1, int y1) {
   int count = 0;

@@ -69,9 +69,17 @@ TEST(StudyCommand, WritesTheTablesTheReportAndThePlots) {
                          "peak_hinge_force_indeterminate [N]"),
             std::string::npos)
       << rows[0];
+  // The clearance: a column per case, and (where the meshes can be read)
+  // a section of the report: the pantograph's panels abut when deployed
+  // but do not overlap.
+  EXPECT_NE(rows[0].find(",min_clearance [m],contacts,"), std::string::npos) << rows[0];
 #ifdef UNFURL_WITH_RENDER
-  for (const char* png :
-       {"hist_deployment_time.png", "hist_peak_latch_torque.png", "overlay_angles.png", "scatter_deployment_time.png"})
+  EXPECT_NE(report.find("## Clearance\n\nNo two bodies that are not jointed together touch in any case"),
+            std::string::npos)
+      << report;
+  for (const char* png : {"hist_deployment_time.png", "hist_peak_latch_torque.png", "overlay_angles.png",
+                          "scatter_deployment_time.png", "failures_deployment_time.png", "failures_peak_latch_torque.png",
+                          "failures_peak_hinge_force.png", "failures_torque_margin.png", "failures_min_clearance.png"})
     EXPECT_TRUE(fs::is_regular_file(out / png)) << png;
 #endif
 }

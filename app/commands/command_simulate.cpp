@@ -11,6 +11,7 @@
 #include "unfurl/io/output_file.hpp"
 #include "progress.hpp"
 #include "unfurl/io/run_files.hpp"
+#include "scene_clearance.hpp"
 #include "scene_options.hpp"
 #include "unfurl/sim/summary.hpp"
 
@@ -32,7 +33,8 @@ const char* kHelp =
     "                   force; other elements' columns (tension.NAME), at the same times\n"
     "  events.csv       latch engagements (t, event, joint)\n"
     "  summary.json     integrator, statistics, latch times, peak loads, largest loop gap,\n"
-    "                   energy, and the units of its numbers\n"
+    "                   torque margins, clearance (the closest approach of bodies not\n"
+    "                   jointed together, and any contact), energy, and the units of its numbers\n"
     "\n"
     "options:\n"
     "  --out DIR             output directory (default out)\n"
@@ -121,6 +123,37 @@ void print_torque_margins(const sim::RunSummary& s) {
                   m.worst(), where(m).c_str(), required);
 }
 
+// The closest pair, every contact by name and span, and what was left out.
+void print_clearance(const sim::RunSummary& s) {
+  if (!s.clearance) return;
+  const sim::Clearance& c = *s.clearance;
+  if (const sim::PairClearance* p = c.closest())
+    std::printf("clearance    closest %.4g m, %s and %s at t = %.6f s (%zu pairs, %d samples, %.3g s)\n", p->distance,
+                p->body_a.c_str(), p->body_b.c_str(), p->t, c.pairs.size(), c.samples, c.wall_time_s);
+  else
+    std::printf("clearance    no two bodies that are not jointed together both have a solid\n");
+  for (const sim::ClearanceContact& x : c.contacts) {
+    if (x.t_begin == x.t_end)
+      std::printf("warning      %s and %s touch or interpenetrate at t = %.6f s%s\n", x.body_a.c_str(),
+                  x.body_b.c_str(), x.t_begin, x.at_start ? " (at the start)" : "");
+    else
+      std::printf("warning      %s and %s touch or interpenetrate from t = %.6f s to %.6f s%s\n", x.body_a.c_str(),
+                  x.body_b.c_str(), x.t_begin, x.t_end, x.at_start ? " (from the start: the stowed solids overlap)" : "");
+  }
+  // A build without the renderer reads no meshes: one line says so, not a
+  // warning per body.
+  std::size_t unbuilt = 0;
+  for (const std::string& u : c.unread) {
+    if (u.find(studies::kNoMeshReader) != std::string::npos)
+      ++unbuilt;
+    else
+      std::printf("warning      clearance left out %s\n", u.c_str());
+  }
+  if (unbuilt > 0)
+    std::printf("clearance    %zu bodies' meshes left out (%s): declare their collision: shapes\n", unbuilt,
+                studies::kNoMeshReader);
+}
+
 void print_summary(const sim::Scene& scene, const sim::RunResult& result, const sim::RunSummary& s,
                    const std::string& dir) {
   const sim::RunSettings& run = result.settings;
@@ -154,6 +187,7 @@ void print_summary(const sim::Scene& scene, const sim::RunResult& result, const 
   print_element_peaks(s.element_peaks, "");
   print_element_peaks(s.sensor_peaks, "sensors");
   print_torque_margins(s);
+  print_clearance(s);
   std::printf("energy       %.9g J at t = 0, %.9g J at t = %g s, %.9g J dissipated\n", s.energy_initial, s.energy_final,
               s.t_reached, s.energy_dissipated);
   if (s.free_bus)
@@ -177,7 +211,8 @@ int command_simulate(const std::vector<std::string>& argv) {
   if (args.positionals().size() > 1) throw UsageError("simulate takes one SCENE (see --help)");
   const std::optional<std::string> scene_arg =
       args.positionals().empty() ? std::nullopt : std::optional(args.positionals()[0]);
-  const sim::Scene scene = load_scene(scene_arg, args);
+  const sim::SceneFile file = read_scene(scene_arg, args);
+  const sim::Scene& scene = file.scene;
   const std::string dir = args.get("--out").value_or("out");
   io::make_directory(dir);
 
@@ -188,7 +223,8 @@ int command_simulate(const std::vector<std::string>& argv) {
   if (!args.has("--quiet")) observer.on_progress = [&](const sim::StepProgress& p) { progress.update(p.t); };
   const sim::RunResult result = sim::simulate(scene, scene.run, observer);
   progress.finish();
-  const sim::RunSummary summary = sim::summarize(scene, result);
+  sim::RunSummary summary = sim::summarize(scene, result);
+  summary.clearance = run_clearance(scene, file.visuals, result.trajectory);
 
   io::write_trajectory_csv(scene, result.trajectory, dir + "/trajectory.csv");
   io::write_loads_csv(scene, result.trajectory, dir + "/loads.csv");

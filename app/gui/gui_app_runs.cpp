@@ -2,6 +2,8 @@
 // samples, pinning finished runs and keeping those still comparable.
 #include "gui_app.hpp"
 
+#include "scene_clearance.hpp"
+
 namespace unfurl::app {
 
 void GuiApp::keep_comparable_pins(const SceneShape& previous) {
@@ -41,7 +43,9 @@ void GuiApp::pin_current_run(const std::string& name) {
   state_.notice = "pinned " + state_.pinned.back().name;
 }
 
-void GuiApp::start_run() { state_.requested_generation = worker_.run(state_.scene); }
+void GuiApp::start_run() {
+  state_.requested_generation = worker_.run(state_.scene, scene_solids(state_.scene, state_.visuals, nullptr));
+}
 
 void GuiApp::sync_run() {
   const long before = state_.generation;

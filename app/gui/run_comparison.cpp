@@ -26,6 +26,19 @@ std::vector<RunFigure> run_figures(const sim::RunSummary& s) {
   double peak = s.peak_latch_torque.empty() ? kNone : 0;
   for (const auto& p : s.peak_latch_torque) peak = std::max(peak, p.peak.value);
   figures.push_back({"peak latch torque, N m", peak});
+  // Hinge loads over the steps where rigid mechanics determines them.
+  const auto largest = [](const std::vector<sim::RunSummary::NamedPeak>& peaks) {
+    double m = kNone;
+    for (const auto& p : peaks)
+      if (!std::isnan(p.peak.t) && !(p.peak.value <= m)) m = p.peak.value;
+    return m;
+  };
+  figures.push_back({"peak hinge force, N", largest(s.peak_hinge_force)});
+  figures.push_back({"peak hinge moment, N m", largest(s.peak_hinge_moment)});
+  figures.push_back({"torque margin", s.torque_margins.empty() ? kNone : s.worst_motorization_factor() - 1});
+  const sim::PairClearance* closest = s.clearance ? s.clearance->closest() : nullptr;
+  figures.push_back({"clearance, m", closest ? closest->distance : kNone});
+  figures.push_back({"spans of contact", closest ? static_cast<double>(s.clearance->contacts.size()) : kNone});
   figures.push_back({"final energy, J", s.energy_final});
   figures.push_back({"dissipated, J", s.energy_dissipated});
   figures.push_back({"largest gap, m", s.max_closure_gap});

@@ -24,6 +24,15 @@ void write_session_report(const GuiState& state, const std::string& path) {
   };
   run("current", state.trajectory);
   run("previous", state.ghost);
+  // The spans of contact the timeline marks.
+  json.begin_array("contacts");
+  if (state.progress.summary && state.progress.summary->clearance)
+    for (const sim::ClearanceContact& c : state.progress.summary->clearance->contacts) {
+      json.begin_object();
+      json.value("body_a", c.body_a).value("body_b", c.body_b).value("t_begin", c.t_begin).value("t_end", c.t_end);
+      json.end_object();
+    }
+  json.end_array();
   json.begin_array("pinned");
   for (const PinnedRun& p : state.pinned) {
     json.begin_object();

@@ -2,6 +2,8 @@
 
 #include <chrono>
 
+#include "unfurl/studies/clearance.hpp"
+
 namespace unfurl::app {
 
 SimulationWorker::SimulationWorker() : thread_([this] { loop(); }) {}
@@ -16,9 +18,10 @@ SimulationWorker::~SimulationWorker() {
   thread_.join();
 }
 
-long SimulationWorker::run(const sim::Scene& scene) {
+long SimulationWorker::run(const sim::Scene& scene, studies::BodySolids solids) {
   std::lock_guard<std::mutex> lock(mutex_);
   pending_ = scene;
+  pending_solids_ = std::move(solids);
   cancel_ = true;
   wake_.notify_one();
   // The generation the request will run as: the worker takes requests in
@@ -54,11 +57,13 @@ void SimulationWorker::loop() {
   // instead of 41-43 while it computes.
   for (;;) {
     sim::Scene scene;
+    studies::BodySolids solids;
     {
       std::unique_lock<std::mutex> lock(mutex_);
       wake_.wait(lock, [this] { return quit_ || pending_.has_value(); });
       if (quit_) return;
       scene = std::move(*pending_);
+      solids = std::move(pending_solids_);
       pending_.reset();
       cancel_ = false;
       buffer_ = sim::Trajectory{};
@@ -94,8 +99,12 @@ void SimulationWorker::loop() {
       result.failure = {0, 0, "setup", e.what()};
     }
     std::shared_ptr<const sim::RunSummary> summary;
-    if (result.status != sim::RunStatus::cancelled)
-      summary = std::make_shared<const sim::RunSummary>(sim::summarize(scene, result));
+    if (result.status != sim::RunStatus::cancelled) {
+      sim::RunSummary s = sim::summarize(scene, result);
+      if (solids.bodies.size() == static_cast<std::size_t>(scene.model.size()))
+        s.clearance = studies::check_clearance(scene, solids, result.trajectory);
+      summary = std::make_shared<const sim::RunSummary>(std::move(s));
+    }
     std::lock_guard<std::mutex> lock(mutex_);
     progress_.summary = std::move(summary);
     progress_.closure = result.closure;

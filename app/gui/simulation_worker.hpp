@@ -16,6 +16,7 @@
 #include "unfurl/sim/scene.hpp"
 #include "unfurl/sim/simulation.hpp"
 #include "unfurl/sim/summary.hpp"
+#include "unfurl/studies/body_solids.hpp"
 
 namespace unfurl::app {
 
@@ -42,8 +43,9 @@ class SimulationWorker {
   SimulationWorker& operator=(const SimulationWorker&) = delete;
 
   // Cancels the run in progress (promptly: at its next step) and runs this
-  // scene instead. Returns the new run's generation.
-  long run(const sim::Scene& scene);
+  // scene instead, its clearance measured between `solids` (none without
+  // them). Returns the new run's generation.
+  long run(const sim::Scene& scene, studies::BodySolids solids = {});
 
   // Copies the samples and events the UI has not seen yet into `copy`
   // (which must hold the first copy.samples.size() samples of `generation`).
@@ -57,6 +59,7 @@ class SimulationWorker {
   std::mutex mutex_;
   std::condition_variable wake_;
   std::optional<sim::Scene> pending_;  // the next run, taken by the worker
+  studies::BodySolids pending_solids_;
   bool quit_ = false;
   std::atomic<bool> cancel_{false};
   std::atomic<long> steps_live_{0}, rhs_live_{0};

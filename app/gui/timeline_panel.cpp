@@ -1,5 +1,5 @@
 // The timeline: play, pause, speed, single steps, the scrubber with the
-// computed span and the latches marked.
+// computed span, the latches and the spans of contact marked.
 #include "gui_panels.hpp"
 
 #include <algorithm>
@@ -66,6 +66,20 @@ void timeline_panel(GuiState& state) {
   };
   marks(state.ghost, 0.5f * (lo.y + hi.y), IM_COL32(170, 170, 170, 220), "previous");
   marks(state.trajectory, lo.y, IM_COL32(255, 90, 90, 255), "this");
+  // Spans in which two bodies not jointed together touch or interpenetrate:
+  // an orange band along the top, the pair on hover.
+  if (state.progress.summary && state.progress.summary->clearance)
+    for (const sim::ClearanceContact& c : state.progress.summary->clearance->contacts) {
+      const float x0 = lo.x + static_cast<float>(c.t_begin / t_end) * (hi.x - lo.x);
+      const float x1 = std::max(x0 + 2, lo.x + static_cast<float>(c.t_end / t_end) * (hi.x - lo.x));
+      draw->AddRectFilled(ImVec2(x0, lo.y), ImVec2(x1, lo.y + 4), IM_COL32(255, 150, 30, 255));
+      if (hovered && mouse_x >= x0 - 3 && mouse_x <= x1 + 3) {
+        char line[256];
+        std::snprintf(line, sizeof line, "%s%s and %s touch or interpenetrate from %.6f s to %.6f s",
+                      names.empty() ? "" : "\n", c.body_a.c_str(), c.body_b.c_str(), c.t_begin, c.t_end);
+        names += line;
+      }
+    }
   if (!names.empty()) ImGui::SetTooltip("%s", names.c_str());
   // Time ticks under the scrubber, as many as fit.
   const float label_width = ImGui::CalcTextSize("00.0 s").x + 12;

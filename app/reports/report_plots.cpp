@@ -79,7 +79,14 @@ std::vector<std::string> write_plot_pngs(const std::vector<std::pair<render::Plo
   render::Image image;
   std::vector<std::string> files;
   for (const auto& [spec, name] : plots) {
-    plotter.draw(spec, image);
+    // A chart of named rows grows to give each its line.
+    const int rows = static_cast<int>(spec.y_categories.size());
+    if (rows > 24) {
+      render::PlotRenderer tall(1280, 160 + 24 * rows);
+      tall.draw(spec, image);
+    } else {
+      plotter.draw(spec, image);
+    }
     io::write_png(image, dir + "/" + name, 6);
     files.push_back(name);
   }

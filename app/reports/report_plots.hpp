@@ -22,8 +22,9 @@ render::PlotSpec work_precision_plot(const studies::WorkPrecision& report, Preci
 // Measured points as markered curves, one per label, in the palette's order.
 std::vector<render::Series> marked_series(std::map<std::string, render::Series> curves);
 
-// Draws each plot at 1280x720 in an offscreen context and writes it as a
-// PNG in dir; returns the file names.
+// Draws each plot at 1280x720 (taller for a chart of more than 24 named
+// rows) in an offscreen context and writes it as a PNG in dir; returns the
+// file names.
 std::vector<std::string> write_plot_pngs(const std::vector<std::pair<render::PlotSpec, std::string>>& plots,
                                          const std::string& dir);
 

@@ -1,8 +1,13 @@
 // The study's plots (needs the renderer): histograms of the deployment time
 // and the peak latch torque, each headline output against its strongest
-// driver, and one joint's angle in every case with the nominal case on top.
+// driver, one joint's angle in every case with the nominal case on top, and
+// for a study of failures each failure case's outcomes against the nominal.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "report_plots.hpp"
 #include "study_plots.hpp"
@@ -102,6 +107,56 @@ render::PlotSpec overlay(const io::StudyReport& report) {
   return spec;
 }
 
+// One outcome of every failure case, a row each, against the nominal
+// case's (the dashed line). A case without the outcome (a deployment time
+// where it did not deploy) has no dot, and its row says why.
+struct Outcome {
+  std::string output, name, axis;  // the column, what the title calls it, the axis' label less the unit
+};
+
+render::PlotSpec failure_outcomes(const io::StudyReport& report, const Outcome& outcome,
+                                  const studies::CaseResult& nominal) {
+  const std::string& output = outcome.output;
+  const std::string unit = studies::output_unit(output);
+  render::PlotSpec spec;
+  spec.title = outcome.name + " of each failure case against the nominal";
+  spec.x_label = unit.empty() ? outcome.axis : outcome.axis + ", " + unit;
+  render::Series deployed, not_deployed;
+  deployed.label = "deployed";
+  not_deployed.label = "not deployed or failed";
+  deployed.color = render::palette(0);
+  not_deployed.color = render::palette(3);
+  for (render::Series* s : {&deployed, &not_deployed}) s->markers = true, s->lines = false;
+  for (const studies::CaseResult& r : report.results) {
+    if (r.failure.empty()) continue;
+    const double row = static_cast<double>(spec.y_categories.size());
+    spec.y_categories.push_back(r.id + (r.status == studies::CaseStatus::deployed ? "" : " (" + std::string(studies::case_status_name(r.status)) + ")"));
+    const double v = studies::output_value(report.columns, r, output);
+    if (!std::isfinite(v)) continue;
+    render::Series& s = r.status == studies::CaseStatus::deployed ? deployed : not_deployed;
+    s.x.push_back(v);
+    s.y.push_back(row);
+  }
+  const double at = studies::output_value(report.columns, nominal, output);
+  if (std::isfinite(at)) {
+    spec.events.push_back(at);
+    char text[64];
+    std::snprintf(text, sizeof text, "nominal (%.4g)", at);
+    spec.event_label = text;
+  }
+  // Every dot and the nominal inside the axes, with room at both ends.
+  std::vector<double> x = spec.events;
+  for (const render::Series* s : {&deployed, &not_deployed}) x.insert(x.end(), s->x.begin(), s->x.end());
+  if (!x.empty()) {
+    const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
+    const double pad = *hi > *lo ? 0.06 * (*hi - *lo) : 0.1 * std::max(std::abs(*lo), 1e-12);
+    spec.x_range = std::make_pair(*lo - pad, *hi + pad);
+  }
+  for (render::Series* s : {&deployed, &not_deployed})
+    if (!s->x.empty()) spec.series.push_back(std::move(*s));
+  return spec;
+}
+
 }  // namespace
 
 std::vector<std::string> write_study_plots(const io::StudyReport& report, const std::string& dir) {
@@ -115,6 +170,18 @@ std::vector<std::string> write_study_plots(const io::StudyReport& report, const 
   for (const studies::Driver& d : report.statistics.drivers)
     plots.emplace_back(scatter(report, d), "scatter_" + d.output + ".png");
   plots.emplace_back(overlay(report), "overlay_angles.png");
+  const auto nominal = std::find_if(report.results.begin(), report.results.end(),
+                                    [](const studies::CaseResult& r) { return r.id == "nominal"; });
+  const bool failures = std::any_of(report.results.begin(), report.results.end(),
+                                    [](const studies::CaseResult& r) { return !r.failure.empty(); });
+  if (failures && nominal != report.results.end())
+    for (const Outcome& o : std::vector<Outcome>{
+             {"deployment_time", "deployment time", "deployment time (last latch engaged)"},
+             {"peak_latch_torque", "peak latch torque", "peak latch torque over all latches"},
+             {"peak_hinge_force", "peak hinge force", "peak hinge force over all hinges"},
+             {"torque_margin", "torque margin", "torque margin (smallest motorization factor - 1)"},
+             {"min_clearance", "clearance", "closest approach of two bodies not jointed together (0: contact)"}})
+      plots.emplace_back(failure_outcomes(report, o, *nominal), "failures_" + o.output + ".png");
   return write_plot_pngs(plots, dir);
 }
 

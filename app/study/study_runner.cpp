@@ -11,11 +11,17 @@
 #include "unfurl/io/run_files.hpp"
 #include "unfurl/io/study_files.hpp"
 #include "unfurl/sim/summary.hpp"
+#include "unfurl/studies/clearance.hpp"
+#include "commands/scene_clearance.hpp"
 
 namespace unfurl::app {
 
 StudyRun::StudyRun(const studies::Study& study, SweepOptions options, const std::atomic<bool>& cancel)
-    : study_(study), options_(std::move(options)), cancel_(cancel), nominal_(studies::nominal_scene(study).scene) {
+    : study_(study), options_(std::move(options)), cancel_(cancel) {
+  const sim::SceneFile nominal = studies::nominal_scene(study);
+  nominal_ = nominal.scene;
+  // Read once: every case has the nominal scene's bodies and meshes.
+  solids_ = scene_solids(nominal_, nominal.visuals, nullptr);
   columns_ = studies::case_columns(study_, nominal_);
   cases_ = studies::study_cases(study_);
   results_.resize(cases_.size());
@@ -31,11 +37,13 @@ std::optional<std::string> StudyRun::run_case(std::size_t i) const {
   try {
     const studies::CaseRun run = studies::simulate_case(study_, c, &cancel_);
     if (run.run.status == sim::RunStatus::cancelled) return std::nullopt;
-    result = studies::case_result(study_, nominal_, c, run);
+    const sim::Clearance clearance = studies::check_clearance(run.scene, solids_, run.run.trajectory);
+    result = studies::case_result(study_, nominal_, c, run, &clearance);
     if (options_.keep_runs) {
       const std::string dir = options_.dir + "/cases/" + c.id;
       io::make_directory(dir);
-      const sim::RunSummary summary = sim::summarize(run.scene, run.run);
+      sim::RunSummary summary = sim::summarize(run.scene, run.run);
+      summary.clearance = clearance;
       io::write_trajectory_csv(run.scene, run.run.trajectory, dir + "/trajectory.csv");
       io::write_loads_csv(run.scene, run.run.trajectory, dir + "/loads.csv");
       io::write_events_csv(run.scene, run.run.trajectory, dir + "/events.csv");

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "unfurl/studies/body_solids.hpp"
 #include "unfurl/studies/case_result.hpp"
 
 namespace unfurl::app {
@@ -54,6 +55,7 @@ class StudyRun {
   SweepOptions options_;
   const std::atomic<bool>& cancel_;
   sim::Scene nominal_;
+  studies::BodySolids solids_;
   studies::CaseColumns columns_;
   std::vector<studies::StudyCase> cases_;
   std::vector<std::size_t> pending_;

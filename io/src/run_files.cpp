@@ -239,6 +239,48 @@ void write_torque_margins(JsonWriter& json, const sim::RunSummary& summary) {
   json.end_object();
 }
 
+// "clearance": the closest pair and every pair's closest approach, the
+// spans of contact, and what was left out; null when not checked.
+void write_clearance(JsonWriter& json, const sim::RunSummary& summary) {
+  if (!summary.clearance) {
+    json.null("clearance");
+    return;
+  }
+  const sim::Clearance& c = *summary.clearance;
+  const auto bodies = [&](const std::string& a, const std::string& b) {
+    json.begin_array("bodies").value("", a).value("", b).end_array();
+  };
+  json.begin_object("clearance");
+  json.value("clear", c.clear());
+  if (const sim::PairClearance* p = c.closest()) {
+    json.begin_object("minimum");
+    bodies(p->body_a, p->body_b);
+    json.value("distance", p->distance).value("t", p->t).end_object();
+  }
+  json.begin_array("contacts");
+  for (const sim::ClearanceContact& x : c.contacts) {
+    json.begin_object();
+    bodies(x.body_a, x.body_b);
+    json.value("t_begin", x.t_begin).value("t_end", x.t_end).value("at_start", x.at_start).end_object();
+  }
+  json.end_array();
+  json.begin_array("pairs");
+  for (const sim::PairClearance& p : c.pairs) {
+    json.begin_object();
+    bodies(p.body_a, p.body_b);
+    json.value("distance", p.distance).value("t", p.t).end_object();
+  }
+  json.end_array();
+  json.begin_array("without_solid");
+  for (const std::string& b : c.without_solid) json.value("", b);
+  json.end_array();
+  json.begin_array("unread");
+  for (const std::string& b : c.unread) json.value("", b);
+  json.end_array();
+  json.value("samples", c.samples).value("distance_queries", c.distance_queries).value("wall_time", c.wall_time_s);
+  json.end_object();
+}
+
 // "units": the unit of every number above with one; per joint where
 // joints differ (a slider's force is in N where a hinge's torque is in N m).
 void write_summary_units(JsonWriter& json, const sim::Scene& scene, const sim::RunSummary& summary) {
@@ -273,6 +315,7 @@ void write_summary_units(JsonWriter& json, const sim::Scene& scene, const sim::R
         }
   json.value("energy_initial", "J").value("energy_final", "J").value("energy_dissipated", "J");
   json.value("torque_margin", "motorization factors: none; torque_margin = motorization factor - 1; q as q.J");
+  json.value("clearance", "distance m, times s");
   json.begin_object("final_q");
   for (int c = 0; c < m.nq; ++c) json.value(m.position_name(c), m.position_unit(c));
   json.end_object();
@@ -372,6 +415,7 @@ std::string summary_json(const sim::Scene& scene, const sim::RunResult& result, 
   peaks("peak_hinge_force_indeterminate", summary.peak_hinge_force_indeterminate);
   peaks("peak_hinge_moment_indeterminate", summary.peak_hinge_moment_indeterminate);
   write_torque_margins(json, summary);
+  write_clearance(json, summary);
   json.value("energy_initial", summary.energy_initial);
   json.value("energy_final", summary.energy_final);
   json.value("energy_dissipated", summary.energy_dissipated);

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -290,6 +291,36 @@ void write_torque_margins(const StudyReport& report, std::ostream& md) {
   for (const std::string& row : rows) md << row;
 }
 
+// The closest approach of two bodies not jointed together over the study,
+// and the cases in which two touched or went through each other.
+void write_clearance(const StudyReport& report, std::ostream& md) {
+  std::vector<std::string> rows;
+  long assessed = 0;
+  double closest = std::numeric_limits<double>::infinity();
+  std::string closest_case;
+  for (const studies::CaseResult& r : report.results) {
+    const double distance = studies::output_value(report.columns, r, "min_clearance");
+    if (std::isnan(distance)) continue;
+    ++assessed;
+    if (distance < closest) closest = distance, closest_case = r.id;
+    const double contacts = studies::output_value(report.columns, r, "contacts");
+    if (contacts > 0)
+      rows.push_back("| " + r.id + " | " + (r.failure.empty() ? "-" : cell(r.failure)) + " | " + fmt(contacts) + " |\n");
+  }
+  if (assessed == 0) return;
+  md << "\n## Clearance\n\n";
+  if (rows.empty()) {
+    md << "No two bodies that are not jointed together touch in any case; the closest approach is " << fmt(closest)
+       << " m (case " << closest_case << ").\n";
+    return;
+  }
+  md << "**Warning:** in " << rows.size() << " of " << assessed
+     << " cases two bodies that are not jointed together touch or interpenetrate (unfurl computes no contact "
+        "forces: they pass through each other). The case's summary.json (`--keep-runs`) or the workbench names "
+        "the bodies and when.\n\n| case | failure | spans of contact |\n|---|---|---:|\n";
+  for (const std::string& row : rows) md << row;
+}
+
 void write_indeterminate_loads(const StudyReport& report, std::ostream& md) {
   const auto value = [&](const studies::CaseResult& r, const char* name) {
     return studies::output_value(report.columns, r, name);
@@ -377,6 +408,7 @@ void write_study_markdown(const StudyReport& report, const std::vector<std::stri
   }
   write_indeterminate_loads(report, md);
   write_torque_margins(report, md);
+  write_clearance(report, md);
   bool any_failure = false;
   for (const studies::CaseResult& r : report.results)
     any_failure = any_failure || !r.failure.empty() || r.status != studies::CaseStatus::deployed;

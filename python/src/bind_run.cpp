@@ -7,6 +7,7 @@
 #include <pybind11/stl.h>
 
 #include "py_types.hpp"
+#include "scene_clearance.hpp"
 #include "unfurl/io/run_columns.hpp"
 #include "unfurl/io/run_files.hpp"
 
@@ -73,6 +74,10 @@ void bind_run(py::module_& m) {
         if (progress) progress(result.trajectory.empty() ? 0.0 : result.trajectory.t_end());
         PyRun run{file, std::move(result), {}};
         run.summary = sim::summarize(run.file.scene, run.result);
+        if (run.result.status != sim::RunStatus::cancelled) {
+          const py::gil_scoped_release unlocked;
+          run.summary.clearance = app::run_clearance(run.file.scene, run.file.visuals, run.result.trajectory);
+        }
         return run;
       },
       py::arg("scene"), py::arg("progress") = nullptr);

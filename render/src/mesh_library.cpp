@@ -2,12 +2,9 @@
 
 #include "gl.hpp"
 
-#include <assimp/postprocess.h>
-#include <assimp/scene.h>
-
-#include <assimp/Importer.hpp>
 #include <filesystem>
-#include <stdexcept>
+
+#include "unfurl/render/mesh_file.hpp"
 
 namespace unfurl::render {
 
@@ -31,48 +28,22 @@ MeshLibrary::~MeshLibrary() {
 
 const MeshModel& MeshLibrary::get(const std::string& name) {
   if (const auto it = models_.find(name); it != models_.end()) return *it->second;
-  std::string searched;
-  for (const std::string& dir : directories_) {
-    for (const char* suffix : {"", ".obj", ".stl", ".gltf", ".glb"}) {
-      const std::filesystem::path path = std::filesystem::path(dir) / (name + suffix);
-      std::error_code ec;
-      if (std::filesystem::is_regular_file(path, ec)) return load(name, path.string());
-    }
-    searched += (searched.empty() ? "" : ", ") + dir;
-  }
-  throw std::runtime_error("mesh '" + name + "' not found (looked in " + searched + ")");
+  return load(name, find_mesh_file(name, directories_));
 }
 
 const MeshModel& MeshLibrary::load(const std::string& name, const std::string& path) {
-  Assimp::Importer importer;
-  const aiScene* scene =
-      importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_GenNormals |
-                                  aiProcess_PreTransformVertices);
-  if (!scene || !scene->mRootNode || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
-    throw std::runtime_error(path + ": cannot load the mesh (" + importer.GetErrorString() + ")");
   auto model = std::make_unique<MeshModel>();
-  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
-    const aiMesh* mesh = scene->mMeshes[m];
-    if (!(mesh->mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
+  for (const MeshFilePart& file_part : read_mesh_file(path)) {
     std::vector<float> vertices;  // position, normal
-    for (unsigned v = 0; v < mesh->mNumVertices; ++v) {
-      const aiVector3D p = mesh->mVertices[v];
-      const aiVector3D n = mesh->HasNormals() ? mesh->mNormals[v] : aiVector3D(0, 0, 1);
-      vertices.insert(vertices.end(), {p.x, p.y, p.z, n.x, n.y, n.z});
-      model->bounds.extend(Eigen::Vector3f(p.x, p.y, p.z));
+    for (std::size_t v = 0; v < file_part.positions.size(); v += 3) {
+      const float* p = &file_part.positions[v];
+      const float* n = &file_part.normals[v];
+      vertices.insert(vertices.end(), {p[0], p[1], p[2], n[0], n[1], n[2]});
+      model->bounds.extend(Eigen::Vector3f(p[0], p[1], p[2]));
     }
-    std::vector<unsigned> indices;
-    for (unsigned f = 0; f < mesh->mNumFaces; ++f)
-      if (mesh->mFaces[f].mNumIndices == 3)
-        indices.insert(indices.end(), mesh->mFaces[f].mIndices, mesh->mFaces[f].mIndices + 3);
-
     MeshPart part;
-    aiColor4D color;
-    const aiMaterial* material = scene->mMaterials[mesh->mMaterialIndex];
-    if (aiGetMaterialColor(material, AI_MATKEY_BASE_COLOR, &color) == AI_SUCCESS ||
-        aiGetMaterialColor(material, AI_MATKEY_COLOR_DIFFUSE, &color) == AI_SUCCESS)
-      part.color = Eigen::Vector3f(color.r, color.g, color.b);
-    part.index_count = static_cast<int>(indices.size());
+    part.color = file_part.color;
+    part.index_count = static_cast<int>(file_part.indices.size());
     glGenVertexArrays(1, &part.vao);
     glBindVertexArray(part.vao);
     glGenBuffers(1, &part.vbo);
@@ -81,8 +52,8 @@ const MeshModel& MeshLibrary::load(const std::string& name, const std::string& p
                  GL_STATIC_DRAW);
     glGenBuffers(1, &part.ebo);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, part.ebo);
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(unsigned)),
-                 indices.data(), GL_STATIC_DRAW);
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(file_part.indices.size() * sizeof(unsigned)),
+                 file_part.indices.data(), GL_STATIC_DRAW);
     glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), nullptr);
     glEnableVertexAttribArray(0);
     glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), reinterpret_cast<void*>(3 * sizeof(float)));
@@ -90,7 +61,6 @@ const MeshModel& MeshLibrary::load(const std::string& name, const std::string& p
     glBindVertexArray(0);
     model->parts.push_back(part);
   }
-  if (model->parts.empty()) throw std::runtime_error(path + ": the mesh has no triangles");
   return *(models_[name] = std::move(model));
 }
 

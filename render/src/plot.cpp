@@ -317,7 +317,9 @@ PlotFrame draw_plot(ImDrawList* draw, ImVec2 origin, ImVec2 size, const PlotSpec
   // A short plot (one of several in a panel) keeps its axes tall: the
   // x-axis label moves to the end of the tick row.
   const bool compact = size.y < 11 * font;
-  f.plot_min = ImVec2(origin.x + 5.0f * font, origin.y + (compact ? 1.5f : 2.2f) * font);
+  float left = 5.0f * font;
+  for (const std::string& row : spec.y_categories) left = std::max(left, ImGui::CalcTextSize(row.c_str()).x + font);
+  f.plot_min = ImVec2(origin.x + left, origin.y + (compact ? 1.5f : 2.2f) * font);
   f.plot_max = ImVec2(origin.x + size.x - 1.2f * font, origin.y + size.y - (compact ? 1.4f : 3.0f) * font);
   const ImVec2 corner(origin.x + size.x, origin.y + size.y);
   draw->PushClipRect(origin, corner, true);
@@ -342,7 +344,10 @@ PlotFrame draw_plot(ImDrawList* draw, ImVec2 origin, ImVec2 size, const PlotSpec
   } else if (x1 <= x0) {
     x1 = x0 + 1;
   }
-  if (spec.log_y) {
+  if (!spec.y_categories.empty()) {
+    // Reversed: row 0 at the top.
+    y0 = static_cast<double>(spec.y_categories.size()) - 0.5, y1 = -0.5;
+  } else if (spec.log_y) {
     y0 = std::floor(y0), y1 = std::ceil(y1);
     if (y1 <= y0) y1 = y0 + 1;
   } else {
@@ -367,8 +372,9 @@ PlotFrame draw_plot(ImDrawList* draw, ImVec2 origin, ImVec2 size, const PlotSpec
   };
   const std::vector<double> xt =
       spec.log_x ? decade_ticks(x0, x1, x_room) : linear_ticks(x0, x1, std::min(8, x_room), x_room + 1);
-  const std::vector<double> yt =
-      spec.log_y ? decade_ticks(y0, y1, std::min(y_room, y_fit)) : linear_ticks(y0, y1, std::min(6, y_room), y_fit);
+  std::vector<double> yt;
+  if (spec.y_categories.empty())
+    yt = spec.log_y ? decade_ticks(y0, y1, std::min(y_room, y_fit)) : linear_ticks(y0, y1, std::min(6, y_room), y_fit);
   const ImVec2 xs = ImGui::CalcTextSize(spec.x_label.c_str());
   const float x_label_left = compact ? f.plot_max.x - xs.x : corner.x;
   for (double x : xt) {
@@ -378,6 +384,13 @@ PlotFrame draw_plot(ImDrawList* draw, ImVec2 origin, ImVec2 size, const PlotSpec
     const ImVec2 ts = ImGui::CalcTextSize(label.c_str());
     if (sx + ts.x / 2 + 0.5f * font > x_label_left) continue;
     draw->AddText(ImVec2(sx - ts.x / 2, f.plot_max.y + 0.2f * font), th.text, label.c_str());
+  }
+  for (std::size_t row = 0; row < spec.y_categories.size(); ++row) {
+    const float sy =
+        f.plot_max.y - static_cast<float>((static_cast<double>(row) - y0) / (y1 - y0)) * (f.plot_max.y - f.plot_min.y);
+    draw->AddLine(ImVec2(f.plot_min.x, sy), ImVec2(f.plot_max.x, sy), th.grid);
+    const ImVec2 ts = ImGui::CalcTextSize(spec.y_categories[row].c_str());
+    draw->AddText(ImVec2(f.plot_min.x - ts.x - 0.4f * font, sy - ts.y / 2), th.text, spec.y_categories[row].c_str());
   }
   for (double y : yt) {
     const float sy = f.plot_max.y - static_cast<float>((y - y0) / (y1 - y0)) * (f.plot_max.y - f.plot_min.y);

@@ -55,6 +55,10 @@ class SceneReader : private input::YamlFields {
   Joint read_joint(const YAML::Node& node, const std::string& field) const;
   std::shared_ptr<JointCompliance> read_compliance(const YAML::Node& node, int joint, const std::string& field) const;
   Visual read_visual(const YAML::Node& node, const std::string& field) const;
+  std::vector<CollisionShape> read_collision(const YAML::Node& node, const std::string& field) const;
+  CollisionShape read_collision_shape(const YAML::Node& node, const std::string& field) const;
+  Vec3 read_scale(const YAML::Node& scale, const std::string& field) const;
+  void read_rotation(const YAML::Node& rotation, const std::string& field, Vec3& axis, double& degrees) const;
   void read_springs(const YAML::Node& list, SceneBuilder& b) const;
   void read_dampers(const YAML::Node& list, SceneBuilder& b) const;
   void read_stops(const YAML::Node& list, SceneBuilder& b) const;
@@ -96,6 +100,22 @@ int SceneReader::element_joint(const YAML::Node& entry, const SceneBuilder& b, c
   return b.joint_index(text(joint, field + ".joint"), field + ".joint");
 }
 
+Vec3 SceneReader::read_scale(const YAML::Node& scale, const std::string& field) const {
+  if (scale.IsScalar()) return Vec3::Constant(positive(scale, field));
+  const Vec3 v = vec3(scale, field);
+  if ((v.array() <= 0).any()) fail(scale, field, "must be positive");
+  return v;
+}
+
+void SceneReader::read_rotation(const YAML::Node& rotation, const std::string& field, Vec3& axis,
+                                double& degrees) const {
+  const std::vector<double> r = numbers(rotation, field);
+  if (r.size() != 4 || Vec3(r[0], r[1], r[2]).norm() < 1e-12)
+    fail(rotation, field, "expected [axis x, axis y, axis z, angle in degrees] with a nonzero axis");
+  axis = Vec3(r[0], r[1], r[2]).normalized();
+  degrees = r[3];
+}
+
 Visual SceneReader::read_visual(const YAML::Node& node, const std::string& field) const {
   Visual v;
   if (node.IsScalar()) {
@@ -104,28 +124,70 @@ Visual SceneReader::read_visual(const YAML::Node& node, const std::string& field
   }
   check_keys(node, {"name", "scale", "rotation", "offset"}, field);
   v.mesh = text(require(node, "name", field), field + ".name");
-  const YAML::Node scale = node["scale"];
-  if (scale && scale.IsScalar()) {
-    v.scale = Vec3::Constant(positive(scale, field + ".scale"));
-  } else if (scale) {
-    v.scale = vec3(scale, field + ".scale");
-    if ((v.scale.array() <= 0).any()) fail(scale, field + ".scale", "must be positive");
-  }
-  if (const YAML::Node rotation = node["rotation"]) {
-    const std::vector<double> r = numbers(rotation, field + ".rotation");
-    if (r.size() != 4 || Vec3(r[0], r[1], r[2]).norm() < 1e-12)
-      fail(rotation, field + ".rotation", "expected [axis x, axis y, axis z, angle in degrees] with a nonzero axis");
-    v.rotation_axis = Vec3(r[0], r[1], r[2]).normalized();
-    v.rotation_deg = r[3];
-  }
+  if (const YAML::Node scale = node["scale"]) v.scale = read_scale(scale, field + ".scale");
+  if (const YAML::Node rotation = node["rotation"])
+    read_rotation(rotation, field + ".rotation", v.rotation_axis, v.rotation_deg);
   v.offset = vec3_or(node, "offset", Vec3::Zero(), field);
   return v;
 }
 
+// `collision: none`, or a list of shapes.
+std::vector<CollisionShape> SceneReader::read_collision(const YAML::Node& node, const std::string& field) const {
+  if (node.IsScalar() && node.Scalar() == "none") return {};
+  if (!node.IsSequence())
+    fail(node, field, "expected `none` or a list of shapes ({box: [x, y, z]}, {sphere: r}, "
+                      "{cylinder: [radius, length]}, {mesh: NAME})");
+  std::vector<CollisionShape> shapes;
+  for (std::size_t n = 0; n < node.size(); ++n)
+    shapes.push_back(read_collision_shape(node[n], input::index_field(field, n)));
+  return shapes;
+}
+
+CollisionShape SceneReader::read_collision_shape(const YAML::Node& node, const std::string& field) const {
+  check_keys(node, {"box", "sphere", "cylinder", "mesh", "scale", "rotation", "offset"}, field);
+  CollisionShape c;
+  int kinds = 0;
+  if (const YAML::Node box = node["box"]) {
+    c.kind = CollisionShape::Kind::box;
+    c.size = vec3(box, field + ".box");
+    if ((c.size.array() <= 0).any()) fail(box, field + ".box", "edge lengths must be positive");
+    ++kinds;
+  }
+  if (const YAML::Node sphere = node["sphere"]) {
+    c.kind = CollisionShape::Kind::sphere;
+    c.radius = positive(sphere, field + ".sphere");
+    ++kinds;
+  }
+  if (const YAML::Node cylinder = node["cylinder"]) {
+    c.kind = CollisionShape::Kind::cylinder;
+    const std::vector<double> r = numbers(cylinder, field + ".cylinder");
+    if (r.size() != 2 || !(r[0] > 0) || !(r[1] > 0))
+      fail(cylinder, field + ".cylinder", "expected [radius, length], both positive");
+    c.radius = r[0];
+    c.length = r[1];
+    ++kinds;
+  }
+  if (const YAML::Node mesh = node["mesh"]) {
+    c.kind = CollisionShape::Kind::mesh;
+    c.mesh = text(mesh, field + ".mesh");
+    ++kinds;
+  }
+  if (kinds != 1) fail(node, field, "expected one of box, sphere, cylinder or mesh");
+  if (const YAML::Node scale = node["scale"]) {
+    if (c.kind != CollisionShape::Kind::mesh) fail(scale, field + ".scale", "only a mesh is scaled (give a box its size)");
+    c.scale = read_scale(scale, field + ".scale");
+  }
+  if (const YAML::Node rotation = node["rotation"])
+    read_rotation(rotation, field + ".rotation", c.rotation_axis, c.rotation_deg);
+  c.offset = vec3_or(node, "offset", Vec3::Zero(), field);
+  return c;
+}
+
 void SceneReader::read_base(const YAML::Node& node, SceneBuilder& b) {
-  check_keys(node, {"name", "mesh", "velocity", "free", "mass", "com", "inertia"}, "base");
+  check_keys(node, {"name", "mesh", "collision", "velocity", "free", "mass", "com", "inertia"}, "base");
   const std::string name = node["name"] ? text(node["name"], "base.name") : "base";
-  const Visual visual = node["mesh"] ? read_visual(node["mesh"], "base.mesh") : Visual{};
+  Visual visual = node["mesh"] ? read_visual(node["mesh"], "base.mesh") : Visual{};
+  if (node["collision"]) visual.collision = read_collision(node["collision"], "base.collision");
   const bool free = node["free"] && flag(node["free"], "base.free");
   if (free) {
     if (node["velocity"]) fail(node["velocity"], "base.velocity", "a free base moves by itself: give no velocity");
@@ -212,7 +274,7 @@ Body SceneReader::read_mass_properties(const YAML::Node& node, const std::string
 
 void SceneReader::read_body(const YAML::Node& node, int index, const YAML::Node& all, SceneBuilder& b) const {
   std::string field = input::index_field("bodies", index);
-  check_keys(node, {"name", "parent", "mass", "com", "inertia", "mesh", "joint"}, field);
+  check_keys(node, {"name", "parent", "mass", "com", "inertia", "mesh", "collision", "joint"}, field);
   const std::string name = text(require(node, "name", field), field + ".name");
   field += " (" + name + ")";
   const YAML::Node parent = require(node, "parent", field);
@@ -230,7 +292,9 @@ void SceneReader::read_body(const YAML::Node& node, int index, const YAML::Node&
   if (joint.type == JointType::free)
     fail(node["joint"]["type"], field + ".joint.type",
          "a free joint is for a free-floating base only: give the base `free: true` and its mass properties");
-  b.body(body, parent_name, joint, node["mesh"] ? read_visual(node["mesh"], field + ".mesh") : Visual{});
+  Visual visual = node["mesh"] ? read_visual(node["mesh"], field + ".mesh") : Visual{};
+  if (node["collision"]) visual.collision = read_collision(node["collision"], field + ".collision");
+  b.body(body, parent_name, joint, visual);
   if (joint.compliant)
     b.element(read_compliance(node["joint"]["compliance"], b.joint_index(joint.name.empty() ? name : joint.name, field),
                               field + ".joint.compliance"));

@@ -49,16 +49,48 @@ std::string matrix6(const Mat6& K) {
   return out + "]";
 }
 
+std::string rotation(const Vec3& axis, double degrees) {
+  return "[" + format_number(axis[0]) + ", " + format_number(axis[1]) + ", " + format_number(axis[2]) + ", " +
+         format_number(degrees) + "]";
+}
+
 std::string visual(const Visual& v) {
   const bool plain = v.scale == Vec3::Ones() && v.rotation_deg == 0 && v.offset.isZero(0);
   if (plain) return v.mesh;
   std::string out = "{name: " + v.mesh;
   if (v.scale != Vec3::Ones()) out += ", scale: " + vec(v.scale);
-  if (v.rotation_deg != 0)
-    out += ", rotation: [" + format_number(v.rotation_axis[0]) + ", " + format_number(v.rotation_axis[1]) + ", " +
-           format_number(v.rotation_axis[2]) + ", " + format_number(v.rotation_deg) + "]";
+  if (v.rotation_deg != 0) out += ", rotation: " + rotation(v.rotation_axis, v.rotation_deg);
   if (!v.offset.isZero(0)) out += ", offset: " + vec(v.offset);
   return out + "}";
+}
+
+std::string collision_shape(const CollisionShape& c) {
+  std::string out;
+  switch (c.kind) {
+    case CollisionShape::Kind::box: out = "{box: " + vec(c.size); break;
+    case CollisionShape::Kind::sphere: out = "{sphere: " + format_number(c.radius); break;
+    case CollisionShape::Kind::cylinder:
+      out = "{cylinder: [" + format_number(c.radius) + ", " + format_number(c.length) + "]";
+      break;
+    case CollisionShape::Kind::mesh:
+      out = "{mesh: " + c.mesh;
+      if (c.scale != Vec3::Ones()) out += ", scale: " + vec(c.scale);
+      break;
+  }
+  if (c.rotation_deg != 0) out += ", rotation: " + rotation(c.rotation_axis, c.rotation_deg);
+  if (!c.offset.isZero(0)) out += ", offset: " + vec(c.offset);
+  return out + "}";
+}
+
+// A declared `collision:` (nothing when the mesh stands for it).
+void collision(std::ostream& out, const Visual& v, const std::string& pad) {
+  if (!v.collision) return;
+  if (v.collision->empty()) {
+    out << pad << "collision: none\n";
+    return;
+  }
+  out << pad << "collision:\n";
+  for (const CollisionShape& c : *v.collision) out << pad << "  - " << collision_shape(c) << "\n";
 }
 
 void mass_properties(std::ostream& out, const Body& b, const std::string& pad) {
@@ -220,6 +252,7 @@ std::string write_scene_text(const SceneFile& file, const std::string& comment) 
   out << "\nbase:\n  name: " << (bus ? m.bodies[0].name : m.base_name) << "\n";
   const Visual& base_visual = bus ? file.visuals.bodies[0] : file.visuals.base;
   if (!base_visual.mesh.empty()) out << "  mesh: " << visual(base_visual) << "\n";
+  collision(out, base_visual, "  ");
   if (!m.base_velocity.isZero(0))
     out << "  velocity: " << numbers({m.base_velocity.data(), m.base_velocity.data() + 6}) << "\n";
   if (bus) {
@@ -234,6 +267,7 @@ std::string write_scene_text(const SceneFile& file, const std::string& comment) 
         << "\n";
     mass_properties(out, m.bodies[i], "    ");
     if (!file.visuals.bodies[i].mesh.empty()) out << "    mesh: " << visual(file.visuals.bodies[i]) << "\n";
+    collision(out, file.visuals.bodies[i], "    ");
     out << "    joint: " << joint_text(m.joints[i], compliance_of(scene, i)) << "\n";
   }
   elements(out, scene);

@@ -79,7 +79,8 @@ std::string output_unit(const std::string& output) {
       {"indeterminate_time", "s"},  {"indeterminate_from", "s"},  {"peak_hinge_force_indeterminate", "N"},
       {"peak_bushing_force", "N"},  {"peak_bushing_moment", "N m"}, {"peak_acceleration", "m/s^2"},
       {"peak_velocity", "m/s"},     {"peak_angular_rate", "rad/s"}, {"peak_angular_acceleration", "rad/s^2"},
-      {"torque_margin", ""},        {"peak_stop_torque", "N m"}};
+      {"torque_margin", ""},        {"peak_stop_torque", "N m"},  {"min_clearance", "m"},
+      {"contacts", ""}};
   for (const auto& [name, unit] : units)
     if (quantity == name) return unit;
   return "";
@@ -100,6 +101,8 @@ CaseColumns case_columns(const Study& study, const sim::Scene& nominal) {
     if (j.has_reaction()) c.outputs.push_back("peak_hinge_moment." + j.name);
   c.outputs.push_back("torque_margin");
   for (const int j : sim::driven_joints(nominal)) c.outputs.push_back("torque_margin." + nominal.model.joints[j].name);
+  c.outputs.push_back("min_clearance");
+  c.outputs.push_back("contacts");
   for (const std::vector<sim::TrackedPeak>& peaks : {nominal.element_peaks(), nominal.sensor_peaks()})
     for (const sim::TrackedPeak& p : peaks) c.outputs.push_back(p.quantity + "." + p.name);
   c.outputs.push_back("steps");
@@ -115,7 +118,8 @@ CaseRun simulate_case(const Study& study, const StudyCase& c, const std::atomic<
   return out;
 }
 
-CaseResult case_result(const Study& study, const sim::Scene& nominal, const StudyCase& c, const CaseRun& run) {
+CaseResult case_result(const Study& study, const sim::Scene& nominal, const StudyCase& c, const CaseRun& run,
+                       const sim::Clearance* clearance) {
   const sim::Scene& scene = run.scene;
   const sim::RunResult& rr = run.run;
   const sim::Trajectory& tr = rr.trajectory;
@@ -187,6 +191,11 @@ CaseResult case_result(const Study& study, const sim::Scene& nominal, const Stud
       if (m.joint == nominal.model.joints[j].name) margin = m.worst() - 1;
     r.outputs.push_back(margin);
   }
+  // The closest approach of two bodies not jointed together (0 where they
+  // touched) and how many spans of contact.
+  const sim::PairClearance* closest = clearance ? clearance->closest() : nullptr;
+  r.outputs.push_back(closest ? closest->distance : kNaN);
+  r.outputs.push_back(closest ? static_cast<double>(clearance->contacts.size()) : kNaN);
   append_named_peaks(nominal.element_peaks(), summary.element_peaks, r.outputs);
   append_named_peaks(nominal.sensor_peaks(), summary.sensor_peaks, r.outputs);
   r.outputs.push_back(static_cast<double>(rr.stats.steps));

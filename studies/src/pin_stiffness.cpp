@@ -39,10 +39,12 @@ PinStiffnessCase run(const std::string& scene_name, int deployment, double k, do
   overrides.push_back({"run.t_end", sim::format_number(t_end)});
   overrides.push_back({"run.rtol", sim::format_number(rtol)});
   overrides.push_back({"run.atol", sim::format_number(rtol / 100)});
-  if (k > 0)
-    for (const sim::Bushing* pin : sim::load_builtin_scene(scene_name).elements_of<sim::Bushing>())
+  if (k > 0) {
+    const sim::Scene nominal = sim::load_builtin_scene(scene_name);
+    for (const sim::Bushing* pin : nominal.elements_of<sim::Bushing>())
       for (int a = 0; a < 3; ++a)
         overrides.push_back({"bushings." + pin->name + ".stiffness." + std::to_string(a), sim::format_number(k)});
+  }
   const sim::Scene scene = sim::load_builtin_scene(scene_name, overrides);
   const sim::RunResult result = sim::simulate(scene, scene.run);
   return {deployment, k, loads_of(scene, result)};

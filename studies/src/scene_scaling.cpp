@@ -27,8 +27,20 @@ sim::SceneFile scale_scene(const sim::SceneFile& file, double L, double M) {
     if (linear) scene.dq0[c] *= L;
     if (!scene.p0.empty()) scene.p0[c] *= linear ? M * L : M * L * L;
   }
-  for (sim::Visual* v : {&out.visuals.base}) v->scale *= L, v->offset *= L;
-  for (sim::Visual& v : out.visuals.bodies) v.scale *= L, v.offset *= L;
+  const auto scale_visual = [L](sim::Visual& v) {
+    v.scale *= L;
+    v.offset *= L;
+    if (v.collision)
+      for (sim::CollisionShape& c : *v.collision) {
+        c.size *= L;
+        c.radius *= L;
+        c.length *= L;
+        c.scale *= L;
+        c.offset *= L;
+      }
+  };
+  scale_visual(out.visuals.base);
+  for (sim::Visual& v : out.visuals.bodies) scale_visual(v);
   scene.name += "_scaled";
   sim::validate(scene);
   return out;

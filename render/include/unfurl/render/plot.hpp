@@ -37,6 +37,9 @@ struct PlotSpec {
   std::optional<double> cursor;  // x of the play-head
   // The span of x shown (a zoom, linear axes); y then fits the data inside it.
   std::optional<std::pair<double, double>> x_range;
+  // A y axis of named rows instead of numbers: row i at y = i, the first at
+  // the top (a dot chart of cases).
+  std::vector<std::string> y_categories;
 };
 
 // Where the data went on screen: for hit tests (hover values) and tests.

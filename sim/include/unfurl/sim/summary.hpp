@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "unfurl/sim/clearance_result.hpp"
 #include "unfurl/sim/simulation.hpp"
 #include "unfurl/sim/torque_margin.hpp"
 
@@ -52,6 +53,10 @@ struct RunSummary {
   // without any), and whether every one reaches the required factor.
   double worst_motorization_factor() const;
   bool torque_margins_pass() const { return worst_motorization_factor() >= torque_margin_factors.required; }
+  // The bodies' clearance (clearance_result.hpp; nullopt: not checked, as
+  // summarize() alone leaves it: the solids come from the scene's visuals,
+  // which the solver does not read).
+  std::optional<Clearance> clearance;
   double energy_initial = 0;
   double energy_final = 0;
   double energy_dissipated = 0;  // by dampers, friction and latches up to t_reached

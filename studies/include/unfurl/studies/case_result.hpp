@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "unfurl/sim/clearance_result.hpp"
 #include "unfurl/sim/simulation.hpp"
 #include "unfurl/studies/study_cases.hpp"
 
@@ -46,8 +47,10 @@ struct CaseRun {
 // Runs one case; `cancel` stops it early (the result is then not recorded).
 CaseRun simulate_case(const Study& study, const StudyCase& c, const std::atomic<bool>* cancel = nullptr);
 // The case's row, from its run. `nominal` gives the latches and joints the
-// columns name (a failed latch is missing from the case's own scene).
-CaseResult case_result(const Study& study, const sim::Scene& nominal, const StudyCase& c, const CaseRun& run);
+// columns name (a failed latch is missing from the case's own scene);
+// `clearance`, the run's clearance where it was checked.
+CaseResult case_result(const Study& study, const sim::Scene& nominal, const StudyCase& c, const CaseRun& run,
+                       const sim::Clearance* clearance = nullptr);
 
 // The value of output `name` in a row, NaN when absent.
 double output_value(const CaseColumns& columns, const CaseResult& r, const std::string& name);

@@ -1,0 +1,20 @@
+// The clearance of a run of a scene file (studies/clearance.hpp), its
+// bodies' solids from their collision shapes or their meshes, which the
+// renderer's mesh reader reads where it is built.
+#pragma once
+
+#include "unfurl/sim/clearance_result.hpp"
+#include "unfurl/sim/scene_file.hpp"
+#include "unfurl/sim/trajectory.hpp"
+#include "unfurl/studies/body_solids.hpp"
+
+namespace unfurl::app {
+
+// The bodies' solids; meshes that cannot be had are named in `unread`.
+studies::BodySolids scene_solids(const sim::Scene& scene, const sim::SceneVisuals& visuals,
+                                 std::vector<std::string>* unread);
+
+sim::Clearance run_clearance(const sim::Scene& scene, const sim::SceneVisuals& visuals,
+                             const sim::Trajectory& trajectory);
+
+}  // namespace unfurl::app
