@@ -299,6 +299,37 @@ TEST(Gui, ContactsAreTheRunsOwnAndTabledWithTheLoads) {
   EXPECT_EQ(comparison_row(report, "torque margin").size(), 1u) << report;
 }
 
+// The loads an engineer sizes parts from, in the workbench: the hinge
+// forces' and the torque margin's plots are tabs, and the Runs table has a
+// sensor's peak as simulate's summary.json gives it.
+TEST(Gui, HingeForcesTorqueMarginAndSensorsArePlottedAndTabled) {
+  if (!io::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
+  const Scratch scratch("unfurl_gui_loads");
+  const fs::path& dir = scratch.path;
+  std::ofstream(dir / "session.txt") << "wait_run\n"
+                                        "plot hinge\n"
+                                        "report " << (dir / "forces.json").string() << "\n"
+                                        "plot torque\n"
+                                        "report " << (dir / "margin.json").string() << "\n"
+                                        "quit\n";
+  const std::string sensor = " --set 'sensors=[{name: tip, body: panel_A3, point: [0, 0.6, 0]}]'";
+  ASSERT_EQ(gui_session_failure(dir, "zfold --t-end 5" + sensor), "");
+  EXPECT_NE(slurp(dir / "forces.json").find("\"plot\": \"hinge forces\""), std::string::npos);
+  const std::string report = slurp(dir / "margin.json");
+  EXPECT_NE(report.find("\"plot\": \"torque margin\""), std::string::npos) << report;
+  const test::CommandOutcome run = test::run_command(std::string(UNFURL_BINARY) + " simulate zfold --t-end 5" + sensor +
+                                                     " --out " + (dir / "run").string());
+  ASSERT_EQ(run.code, 0) << run.output;
+  const std::string summary = slurp(dir / "run" / "summary.json");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(summary, m, std::regex("\"peak_acceleration\": \\{\\s*\"tip\": \\{\\s*\"value\": ([-0-9.e]+)")))
+      << summary;
+  const std::vector<double> peak = comparison_row(report, "peak_acceleration.tip, m/s\\^2");
+  ASSERT_EQ(peak.size(), 1u) << report;
+  EXPECT_NEAR(peak[0], std::stod(m[1]), 1e-9 * std::abs(peak[0]));
+  ASSERT_EQ(comparison_row(report, "torque margin").size(), 1u) << report;
+}
+
 // Pixels of the second pinned run's yellow over the dark plots.
 int pinned_yellow_pixels(const render::Image& image, int x0, int y0, int x1, int y1) {
   int count = 0;

@@ -302,7 +302,7 @@ TEST(RenderCommand, WritesFramesPlotsAndAVideoWithTheExpectedFrameCount) {
     EXPECT_TRUE(fs::exists(dir / name)) << name;
   }
   EXPECT_FALSE(fs::exists(dir / "frame_00011.png"));
-  for (const char* plot : {"angles.png", "rates.png", "loads.png", "energy.png"})
+  for (const char* plot : {"angles.png", "rates.png", "loads.png", "hinge_forces.png", "energy.png"})
     EXPECT_TRUE(fs::exists(dir / plot)) << plot;
   EXPECT_FALSE(fs::exists(dir / "residuals.png"));  // a tree has no loop gaps
   EXPECT_FALSE(fs::exists(dir / "bus.png"));        // nor a free bus

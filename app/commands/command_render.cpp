@@ -55,7 +55,7 @@ const char* kHelp =
     "  --gl egl|osmesa|auto  the offscreen OpenGL context (default auto: EGL when it works, else\n"
     "                        OSMesa)\n"
     "  --plots               also write angles.png, rates.png, residuals.png (the loops' gaps;\n"
-    "                        scenes with loops), loads.png, energy.png, bus.png (a\n"
+    "                        scenes with loops), loads.png, hinge_forces.png, energy.png, bus.png (a\n"
     "                        free-floating bus's attitude and rate), sensors.png and\n"
     "                        torque_margin.png (the driven joints' motorization factors)\n"
     "  --no-frames           do not write frame PNGs (with --video or --plots)\n"

@@ -98,7 +98,7 @@ void GuiApp::layout_and_panels(Requests& requests) {
       std::round(ImGui::GetFrameHeightWithSpacing() + 2 * style.WindowPadding.y + 4 +
                  (error.empty() ? 0.0f : ImGui::CalcTextSize(error.c_str(), nullptr, false, w - 24).y + 4));
   // "all" plots take more of the left column than one plot does.
-  const bool all_plots = state_.plot_tab >= static_cast<int>(render::plot_kinds(state_.scene).size());
+  const bool all_plots = state_.plot_tab >= static_cast<int>(plot_kinds(state_).size());
   const float status = std::round(ImGui::GetFrameHeight() + 2 * style.WindowPadding.y), left = std::round(0.62f * w);
   const float view_h = std::round((all_plots ? 0.36f : 0.5f) * (h - toolbar - status));
   // Buttons, scrubber and its tick labels, without a scroll bar.

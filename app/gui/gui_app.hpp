@@ -118,7 +118,7 @@ class GuiApp : private ScriptTarget {
   ViewportKey viewport_key_;
   double camera_fitted_at_ = 0;  // when the camera was last fitted to the motion
   bool viewport_drawn_ = false;
-  using PlotsKey = std::tuple<long, std::size_t, std::size_t, int, int, int, long>;
+  using PlotsKey = std::tuple<long, std::size_t, std::size_t, int, int, int, long, bool>;
   PlotsKey plots_key_{};
   double plots_drawn_at_ = 0;
   std::unique_ptr<ExportJob> export_job_;

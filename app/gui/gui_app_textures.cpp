@@ -80,9 +80,9 @@ void GuiApp::draw_plots_texture() {
   // when their data or size changed, at most twice a second while a
   // run streams in. The play-head is drawn over them by the panel.
   const int w = std::max(16, state_.plots_width), h = std::max(16, state_.plots_height);
-  const PlotsKey key{
-      state_.generation,   state_.trajectory.samples.size(), state_.ghost.samples.size(), w, h, state_.plot_tab,
-      state_.plots_version};
+  // The summary (the torque margins) arrives after the last sample.
+  const PlotsKey key{state_.generation, state_.trajectory.samples.size(), state_.ghost.samples.size(), w, h,
+                     state_.plot_tab,   state_.plots_version, state_.progress.summary != nullptr};
   const double now = now_seconds();
   if (plots_ && key == plots_key_) return;
   if (plots_ && state_.progress.running && now - plots_drawn_at_ < 0.5) return;

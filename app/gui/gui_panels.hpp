@@ -33,6 +33,9 @@ void timeline_panel(GuiState& state);
 // undo, redo and saving the edited scene.
 void parameters_panel(GuiState& state, Requests& requests);
 
+// The workbench's plots: the scene's runs' (render::plot_kinds) and, for a
+// scene with latches, the torque margin along the run.
+std::vector<render::PlotKind> plot_kinds(const GuiState& state);
 // The plots the selected tab shows, and where plot k of them goes in a
 // panel of this size (one plot, or all in two columns).
 std::vector<render::PlotKind> shown_plots(const GuiState& state);

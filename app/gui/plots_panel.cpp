@@ -13,8 +13,14 @@
 
 namespace unfurl::app {
 
+std::vector<render::PlotKind> plot_kinds(const GuiState& state) {
+  std::vector<render::PlotKind> kinds = render::plot_kinds(state.scene);
+  if (!state.scene.latches().empty()) kinds.push_back(render::PlotKind::torque_margin);
+  return kinds;
+}
+
 std::vector<render::PlotKind> shown_plots(const GuiState& state) {
-  const std::vector<render::PlotKind> kinds = render::plot_kinds(state.scene);
+  const std::vector<render::PlotKind> kinds = plot_kinds(state);
   if (state.plot_tab >= 0 && state.plot_tab < static_cast<int>(kinds.size())) return {kinds[state.plot_tab]};
   return kinds;
 }
@@ -33,6 +39,8 @@ render::PlotChoice plot_choice(const GuiState& state) {
     if (p.shown) choice.others.push_back({&p.trajectory, p.name, p.color});
   choice.coordinates = state.plot_coordinates;
   choice.time_range = state.time_zoom;
+  if (state.progress.summary) choice.torque_margins = &state.progress.summary->torque_margins;
+  choice.required_factor = state.scene.torque_margin.required;
   return choice;
 }
 
@@ -116,7 +124,7 @@ void zoom_and_pan(GuiState& state, const render::PlotFrame& f) {
 }  // namespace
 
 void plots_panel(GuiState& state, unsigned texture, const std::vector<render::PlotFrame>& frames) {
-  const std::vector<render::PlotKind> all = render::plot_kinds(state.scene);
+  const std::vector<render::PlotKind> all = plot_kinds(state);
   for (std::size_t k = 0; k <= all.size(); ++k) {
     if (k > 0) ImGui::SameLine();
     const char* name = k < all.size() ? render::plot_kind_name(all[k]) : "all";

@@ -36,6 +36,10 @@ std::vector<RunFigure> run_figures(const sim::RunSummary& s) {
   figures.push_back({"peak hinge force, N", largest(s.peak_hinge_force)});
   figures.push_back({"peak hinge moment, N m", largest(s.peak_hinge_moment)});
   figures.push_back({"torque margin", s.torque_margins.empty() ? kNone : s.worst_motorization_factor() - 1});
+  // The sensors' and the bushings' peaks by name: "peak_acceleration.tip, m/s^2".
+  for (const auto& peaks : {s.sensor_peaks, s.element_peaks})
+    for (const auto& p : peaks)
+      figures.push_back({p.quantity + "." + p.name + (p.unit.empty() ? "" : ", " + p.unit), p.peak.value});
   const sim::PairClearance* closest = s.clearance ? s.clearance->closest() : nullptr;
   figures.push_back({"clearance, m", closest ? closest->distance : kNone});
   figures.push_back({"spans of contact", closest ? static_cast<double>(s.clearance->contacts.size()) : kNone});

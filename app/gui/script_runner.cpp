@@ -121,7 +121,7 @@ void ScriptRunner::step(ScriptTarget& target, double now) {
     } else if (c.name == "plot") {
       // The tab whose name starts with the word ("loop" for "loop gaps"), or
       // "all".
-      const std::vector<render::PlotKind> kinds = render::plot_kinds(state.scene);
+      const std::vector<render::PlotKind> kinds = plot_kinds(state);
       state.plot_tab = static_cast<int>(kinds.size());
       for (std::size_t k = 0; k < kinds.size(); ++k)
         if (std::string(render::plot_kind_name(kinds[k])).rfind(arg(0), 0) == 0) state.plot_tab = static_cast<int>(k);

@@ -71,7 +71,7 @@ void write_session_report(const GuiState& state, const std::string& path) {
     json.end_array();
   }
   json.value("mode_shown", state.modes.shown + 1).value("modes_error", state.modes.error);
-  const std::vector<render::PlotKind> kinds = render::plot_kinds(state.scene);
+  const std::vector<render::PlotKind> kinds = plot_kinds(state);
   const auto tab = static_cast<std::size_t>(state.plot_tab);
   json.value("plot", tab < kinds.size() ? render::plot_kind_name(kinds[tab]) : "all");
   json.value("camera_frame", render::camera_frame_name(state.camera_frame));

@@ -18,31 +18,38 @@ bool contains(const YAML::Node& haystack, const YAML::Node& needle) {
   return false;
 }
 
-// Throws at the second occurrence of a key in any mapping under `node`.
 // Counts the nodes `node` expands to, each alias as many times as it is
 // used, and stops at kMostNodes: a document of nested aliases (an alias
-// bomb) is refused before anything walks it whole.
-void count_nodes(const YAML::Node& node, long& count) {
-  if (++count > kMostNodes) return;
+// bomb) is refused before anything walks it whole. Stops as well below
+// kDeepestNesting levels, where an anchor used inside itself (a cycle) or
+// a deep nest would overflow the stack of whatever walks it next.
+enum class Extent { fits, too_many, too_deep };
+
+Extent count_nodes(const YAML::Node& node, long& count, int depth) {
+  if (++count > kMostNodes) return Extent::too_many;
+  if (depth > kDeepestNesting) return Extent::too_deep;
   if (node.IsSequence())
-    for (const YAML::Node& item : node) {
-      count_nodes(item, count);
-      if (count > kMostNodes) return;
-    }
+    for (const YAML::Node& item : node)
+      if (const Extent e = count_nodes(item, count, depth + 1); e != Extent::fits) return e;
   if (node.IsMap())
-    for (const auto& item : node) {
-      count_nodes(item.first, count);
-      count_nodes(item.second, count);
-      if (count > kMostNodes) return;
-    }
+    for (const auto& item : node)
+      for (const YAML::Node& part : {item.first, item.second})
+        if (const Extent e = count_nodes(part, count, depth + 1); e != Extent::fits) return e;
+  return Extent::fits;
 }
 
 void check_size(const YAML::Node& node, const std::string& source) {
   long count = 0;
-  count_nodes(node, count);
-  if (count > kMostNodes)
-    throw InputError(source + ": the YAML expands to more than " + std::to_string(kMostNodes) +
-                     " values (anchors repeated through aliases); refused");
+  switch (count_nodes(node, count, 0)) {
+    case Extent::fits:
+      return;
+    case Extent::too_many:
+      throw InputError(source + ": the YAML expands to more than " + std::to_string(kMostNodes) +
+                       " values (anchors repeated through aliases); refused");
+    case Extent::too_deep:
+      throw InputError(source + ": the YAML nests deeper than " + std::to_string(kDeepestNesting) +
+                       " levels (or an anchor is used inside itself); refused");
+  }
 }
 
 void check_unique_keys(const YAML::Node& node, const YamlFields& fields) {

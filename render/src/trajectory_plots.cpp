@@ -1,6 +1,7 @@
 #include "unfurl/render/trajectory_plots.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 
 namespace unfurl::render {
@@ -64,9 +65,13 @@ void add_curves(PlotSpec& spec, PlotKind kind, const sim::Scene& scene, const si
         added.back().dashed = true;
       }
       break;
+    case PlotKind::torque_margin:  // the current run's, from its margins (add_margins)
+      break;
+    case PlotKind::hinge_forces:
     case PlotKind::loads: {
-      // Latch torques (solid) and the hinge moments' magnitudes (dashed) of
-      // the latched joints, or of the first joints of a scene without latches.
+      // Latch torques (solid) and the hinge moments' magnitudes (dashed), or
+      // the hinge forces' magnitudes, of the latched joints, or of the
+      // first joints of a scene without latches.
       if (tr.empty() || tr.samples.front().loads.reaction.empty()) break;
       const int max_joints = choice.max_joints;
       const auto chosen = [&](int j) {
@@ -79,11 +84,18 @@ void add_curves(PlotSpec& spec, PlotKind kind, const sim::Scene& scene, const si
         if (chosen(latch->joint)) joints.push_back(latch->joint);
       for (int j = 0; latches.empty() && j < model.size() && static_cast<int>(joints.size()) < max_joints; ++j)
         if (chosen(j)) joints.push_back(j);
-      if (static_cast<int>(joints.size()) > max_joints / 2) joints.resize(std::max(1, max_joints / 2));
+      // Two curves a joint in the loads plot, one in the forces'.
+      const int most = kind == PlotKind::loads ? std::max(1, max_joints / 2) : max_joints;
+      if (static_cast<int>(joints.size()) > most) joints.resize(most);
       for (std::size_t k = 0; k < joints.size(); ++k) {
         const int j = joints[k];
         const std::string& name = model.joints[j].name;
         const ImU32 color = palette(static_cast<int>(k));
+        if (kind == PlotKind::hinge_forces) {
+          added.push_back(series(tr, "|hinge force| " + name, color,
+                                 [j](const sim::Sample& s) { return s.loads.reaction[j].head<3>().norm(); }));
+          continue;
+        }
         const int latch = sim::find_load_column(tr.load_columns, "latch_torque." + name);
         if (latch >= 0)
           added.push_back(
@@ -175,6 +187,31 @@ std::vector<std::pair<double, double>> indeterminate_spans(const sim::Trajectory
 
 }  // namespace
 
+namespace {
+
+// Each driven joint's factor up to its latch, and the factor required.
+void add_margins(PlotSpec& spec, const sim::Trajectory& trajectory, const PlotChoice& choice) {
+  if (!choice.torque_margins || trajectory.empty()) return;
+  for (std::size_t k = 0; k < choice.torque_margins->size(); ++k) {
+    const sim::JointTorqueMargin& m = (*choice.torque_margins)[k];
+    Series s;
+    s.label = m.joint;
+    s.color = palette(static_cast<int>(k));
+    for (const sim::TorqueMarginPoint& p : m.run)
+      if (std::isfinite(p.factor) && p.factor > 0) s.x.push_back(p.t), s.y.push_back(p.factor);
+    if (!s.x.empty()) spec.series.push_back(std::move(s));
+  }
+  Series required;
+  required.label = "required";
+  required.x = {trajectory.samples.front().t, trajectory.t_end()};
+  required.y = {choice.required_factor, choice.required_factor};
+  required.color = IM_COL32(150, 150, 150, 255);
+  required.dashed = true;
+  spec.series.push_back(std::move(required));
+}
+
+}  // namespace
+
 PlotSpec trajectory_plot(PlotKind kind, const sim::Scene& scene, const sim::Trajectory& trajectory,
                          const PlotChoice& choice) {
   PlotSpec spec;
@@ -200,6 +237,15 @@ PlotSpec trajectory_plot(PlotKind kind, const sim::Scene& scene, const sim::Traj
       spec.title = scene.name + (scene.latches().empty() ? ": hinge moments" : ": latch torques and hinge moments");
       spec.y_label = "N m (hinge moments about the hinge point)";
       break;
+    case PlotKind::torque_margin:
+      spec.title = scene.name + ": motorization factor of each driven joint along the run";
+      spec.y_label = "driving over resistive torques, with their factors";
+      spec.log_y = true;
+      break;
+    case PlotKind::hinge_forces:
+      spec.title = scene.name + ": hinge forces (what each pin carries)";
+      spec.y_label = "N";
+      break;
     case PlotKind::sensors:
       spec.title = scene.name + ": the sensors' accelerations";
       spec.y_label = "|acceleration|, g";
@@ -216,9 +262,10 @@ PlotSpec trajectory_plot(PlotKind kind, const sim::Scene& scene, const sim::Traj
   for (const ComparedRun& other : choice.others)
     if (other.trajectory && !other.trajectory->empty()) add_curves(spec, kind, scene, *other.trajectory, &other, choice);
   add_curves(spec, kind, scene, trajectory, nullptr, choice);
+  if (kind == PlotKind::torque_margin) add_margins(spec, trajectory, choice);
   for (const sim::LatchEvent& e : trajectory.events)
     if (spec.events.empty() || std::abs(spec.events.back() - e.t) > 1e-6) spec.events.push_back(e.t);
-  if (kind == PlotKind::loads) {
+  if (kind == PlotKind::loads || kind == PlotKind::hinge_forces) {
     spec.shaded = indeterminate_spans(trajectory);
     spec.shaded_label = "loads indeterminate (minimum-norm)";
   }
@@ -234,6 +281,8 @@ const char* plot_kind_name(PlotKind kind) {
     case PlotKind::energy: return "energy";
     case PlotKind::bus: return "bus";
     case PlotKind::sensors: return "sensors";
+    case PlotKind::hinge_forces: return "hinge forces";
+    case PlotKind::torque_margin: return "torque margin";
   }
   return "?";
 }
@@ -242,6 +291,7 @@ std::vector<PlotKind> plot_kinds(const sim::Scene& scene) {
   std::vector<PlotKind> kinds{PlotKind::angles, PlotKind::rates};
   if (!scene.loops.empty()) kinds.push_back(PlotKind::residuals);
   kinds.push_back(PlotKind::loads);
+  kinds.push_back(PlotKind::hinge_forces);
   kinds.push_back(PlotKind::energy);
   if (scene.model.free_floating()) kinds.push_back(PlotKind::bus);
   for (const sim::Sensor& sensor : scene.sensors)
@@ -254,10 +304,12 @@ std::vector<PlotKind> plot_kinds(const sim::Scene& scene) {
 
 std::vector<NamedPlot> trajectory_plots(const sim::Scene& scene, const sim::Trajectory& trajectory, int max_joints) {
   static const char* files[] = {"angles.png", "rates.png", "residuals.png", "loads.png",
-                                "energy.png", "bus.png",   "sensors.png"};
+                                "energy.png", "bus.png",   "sensors.png",   "hinge_forces.png"};
   std::vector<NamedPlot> plots;
   for (PlotKind kind : plot_kinds(scene)) {
-    if (kind == PlotKind::loads && (trajectory.empty() || trajectory.samples.front().loads.reaction.empty())) continue;
+    if ((kind == PlotKind::loads || kind == PlotKind::hinge_forces) &&
+        (trajectory.empty() || trajectory.samples.front().loads.reaction.empty()))
+      continue;
     if (kind == PlotKind::sensors && (trajectory.empty() || trajectory.samples.front().loads.sensor.empty())) continue;
     PlotChoice choice;
     choice.max_joints = max_joints;

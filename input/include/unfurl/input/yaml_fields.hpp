@@ -27,6 +27,8 @@ inline constexpr double kLargestMagnitude = 1e15;
 // are used: far above any scene (a 1000-stage array is about 1e5), far
 // below what an alias bomb (anchors repeating anchors) reaches.
 inline constexpr long kMostNodes = 2'000'000;
+// The deepest a document may nest: a scene nests five or six levels.
+inline constexpr int kDeepestNesting = 100;
 
 class YamlFields {
  public:

@@ -1,7 +1,8 @@
 // The standard plots of a run, from its trajectory: joint angles (the
 // paper's figure 6), joint rates (figure 7), the loops' geometric gaps on a
 // log axis (figure 8 drawn from the true gap; scenes with loops only), the
-// loads (latch torques and hinge moments), energy and a free bus's attitude
+// loads (latch torques and hinge moments), the hinge forces, energy and a
+// free bus's attitude
 // and rate, the sensors' accelerations in g; latch events marked.
 #pragma once
 
@@ -12,13 +13,18 @@
 
 #include "unfurl/render/plot.hpp"
 #include "unfurl/sim/scene.hpp"
+#include "unfurl/sim/torque_margin_result.hpp"
 #include "unfurl/sim/trajectory.hpp"
 
 namespace unfurl::render {
 
-enum class PlotKind { angles, rates, residuals, loads, energy, bus, sensors };
+// torque_margin: the driven joints' motorization factors along the run,
+// from margins already computed (PlotChoice::torque_margins; not among
+// plot_kinds: the workbench adds it).
+enum class PlotKind { angles, rates, residuals, loads, energy, bus, sensors, hinge_forces, torque_margin };
 
-// "angles", "rates", "loop gaps", "loads", "energy", "bus", "sensors".
+// "angles", "rates", "loop gaps", "loads", "energy", "bus", "sensors",
+// "hinge forces", "torque margin".
 const char* plot_kind_name(PlotKind kind);
 
 // The plots a scene's runs have: no gap plot for a tree; the bus's attitude
@@ -33,7 +39,8 @@ struct NamedPlot {
 };
 
 // Every plot of plot_kinds() with its file name (angles.png, rates.png,
-// residuals.png, loads.png, energy.png, bus.png, sensors.png). At most `max_joints` joints are
+// residuals.png, loads.png, hinge_forces.png, energy.png, bus.png,
+// sensors.png). At most `max_joints` joints are
 // drawn, in scene order.
 std::vector<NamedPlot> trajectory_plots(const sim::Scene& scene, const sim::Trajectory& trajectory,
                                         int max_joints = 12);
@@ -54,6 +61,10 @@ struct PlotChoice {
   std::vector<int> coordinates;
   int max_joints = 12;
   std::optional<std::pair<double, double>> time_range;  // a zoom
+  // The current run's torque margins and the factor required of them (the
+  // torque margin plot).
+  const std::vector<sim::JointTorqueMargin>* torque_margins = nullptr;
+  double required_factor = 2;
 };
 
 PlotSpec trajectory_plot(PlotKind kind, const sim::Scene& scene, const sim::Trajectory& trajectory,
