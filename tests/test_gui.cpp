@@ -484,6 +484,7 @@ TEST(Gui, StudyCasesOpenFromTheStudyTab) {
   ASSERT_EQ(sweep.code, 0) << sweep.output;
   std::ofstream(dir / "session.txt") << "wait_run\n"
                                         "report " << (dir / "nominal.json").string() << "\n"
+                                        "pin nominal\n"
                                         "case case-0003\n"
                                         "wait_run\n"
                                         "scrub 8\n"
@@ -525,6 +526,15 @@ TEST(Gui, StudyCasesOpenFromTheStudyTab) {
   // The case shown before stays as the ghost, though this one has a latch
   // fewer (the plots draw joints, which both have).
   EXPECT_FALSE(std::isnan(latch_time(failure, "previous", "j1"))) << "the previous case's ghost was dropped";
+  // The nominal case, pinned, is tabled beside the failure case: its
+  // figures as they were when it was the current run.
+  for (const char* figure : {"deployment time, s", "peak latch torque, N m", "peak hinge force, N", "torque margin"}) {
+    const std::vector<double> row = comparison_row(failure, figure), then = comparison_row(nominal, figure);
+    ASSERT_EQ(row.size(), 2u) << figure << "\n" << failure;
+    ASSERT_EQ(then.size(), 1u) << figure << "\n" << nominal;
+    EXPECT_EQ(row[1], then[0]) << figure;
+  }
+  EXPECT_TRUE(std::isnan(comparison_row(failure, "deployment time, s")[0])) << "a latch never engaged: not deployed";
   const render::Image shot = test::read_png((dir / "case.png").string());
   EXPECT_GT(cell_pixels(shot, 0, 60, shot.width * 6 / 10, shot.height / 2), 2000);
 }

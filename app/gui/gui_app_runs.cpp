@@ -44,7 +44,7 @@ void GuiApp::pin_current_run(const std::string& name) {
 }
 
 void GuiApp::start_run() {
-  state_.requested_generation = worker_.run(state_.scene, scene_solids(state_.scene, state_.visuals, nullptr));
+  state_.requested_generation = worker_.run(state_.scene, scene_solids(state_.scene, state_.visuals, nullptr), state_.failed_latches);
 }
 
 void GuiApp::sync_run() {

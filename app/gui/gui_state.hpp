@@ -110,6 +110,9 @@ struct GuiState {
   // read-only in the panel; and the failure, described.
   std::vector<std::string> failure_elements;
   std::string failure_text;
+  // The joint whose latch the case's failure took out: its run counts it as
+  // never latched (not deployed), as the study does.
+  std::vector<std::string> failed_latches;
 
   // The runs: the current one as far as computed, and the previous one.
   long generation = -1;

@@ -18,10 +18,11 @@ SimulationWorker::~SimulationWorker() {
   thread_.join();
 }
 
-long SimulationWorker::run(const sim::Scene& scene, studies::BodySolids solids) {
+long SimulationWorker::run(const sim::Scene& scene, studies::BodySolids solids, std::vector<std::string> failed_latches) {
   std::lock_guard<std::mutex> lock(mutex_);
   pending_ = scene;
   pending_solids_ = std::move(solids);
+  pending_failed_latches_ = std::move(failed_latches);
   cancel_ = true;
   wake_.notify_one();
   // The generation the request will run as: the worker takes requests in
@@ -58,12 +59,14 @@ void SimulationWorker::loop() {
   for (;;) {
     sim::Scene scene;
     studies::BodySolids solids;
+    std::vector<std::string> failed_latches;
     {
       std::unique_lock<std::mutex> lock(mutex_);
       wake_.wait(lock, [this] { return quit_ || pending_.has_value(); });
       if (quit_) return;
       scene = std::move(*pending_);
       solids = std::move(pending_solids_);
+      failed_latches = std::move(pending_failed_latches_);
       pending_.reset();
       cancel_ = false;
       buffer_ = sim::Trajectory{};
@@ -103,6 +106,7 @@ void SimulationWorker::loop() {
       sim::RunSummary s = sim::summarize(scene, result);
       if (solids.bodies.size() == static_cast<std::size_t>(scene.model.size()))
         s.clearance = studies::check_clearance(scene, solids, result.trajectory);
+      s.unlatched.insert(s.unlatched.end(), failed_latches.begin(), failed_latches.end());
       summary = std::make_shared<const sim::RunSummary>(std::move(s));
     }
     std::lock_guard<std::mutex> lock(mutex_);

@@ -44,8 +44,10 @@ class SimulationWorker {
 
   // Cancels the run in progress (promptly: at its next step) and runs this
   // scene instead, its clearance measured between `solids` (none without
-  // them). Returns the new run's generation.
-  long run(const sim::Scene& scene, studies::BodySolids solids = {});
+  // them). `failed_latches` name joints whose latch a study's failure took
+  // out of the scene: the summary lists them as never latched. Returns the
+  // new run's generation.
+  long run(const sim::Scene& scene, studies::BodySolids solids = {}, std::vector<std::string> failed_latches = {});
 
   // Copies the samples and events the UI has not seen yet into `copy`
   // (which must hold the first copy.samples.size() samples of `generation`).
@@ -60,6 +62,7 @@ class SimulationWorker {
   std::condition_variable wake_;
   std::optional<sim::Scene> pending_;  // the next run, taken by the worker
   studies::BodySolids pending_solids_;
+  std::vector<std::string> pending_failed_latches_;
   bool quit_ = false;
   std::atomic<bool> cancel_{false};
   std::atomic<long> steps_live_{0}, rhs_live_{0};
