@@ -330,6 +330,38 @@ TEST(Gui, HingeForcesTorqueMarginAndSensorsArePlottedAndTabled) {
   ASSERT_EQ(comparison_row(report, "torque margin").size(), 1u) << report;
 }
 
+// The loads on the 3D view: toggled, they are drawn at the play-head with
+// their scale, in the view as saved; off, the view is as before.
+TEST(Gui, LoadArrowsAreToggledOnTheView) {
+  if (!io::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
+  const Scratch scratch("unfurl_gui_arrows");
+  const fs::path& dir = scratch.path;
+  std::ofstream(dir / "session.txt") << "wait_run\n"
+                                        "scrub 7.4\n"
+                                        "save_frame " << (dir / "off.png").string() << "\n"
+                                        "loads on 1.5\n"
+                                        "wait 0.3\n"
+                                        "save_frame " << (dir / "on.png").string() << "\n"
+                                        "report " << (dir / "on.json").string() << "\n"
+                                        "loads off\n"
+                                        "wait 0.3\n"
+                                        "report " << (dir / "off.json").string() << "\n"
+                                        "quit\n";
+  ASSERT_EQ(gui_session_failure(dir, "pantograph --t-end 8"), "");
+  const std::string on = slurp(dir / "on.json"), off = slurp(dir / "off.json");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(on, m, std::regex("\"load_arrows\": ([0-9]+)"))) << on;
+  EXPECT_GE(std::stoi(m[1]), 8) << on;  // a torque at each of the eight latches, just caught
+  EXPECT_NE(on.find("hinge force"), std::string::npos) << on;
+  EXPECT_NE(on.find("latch torque"), std::string::npos) << on;
+  EXPECT_NE(off.find("\"load_arrows\": 0"), std::string::npos) << off;
+  const render::Image a = test::read_png((dir / "off.png").string()), b = test::read_png((dir / "on.png").string());
+  ASSERT_EQ(a.rgb.size(), b.rgb.size());
+  int differ = 0;
+  for (std::size_t k = 0; k < a.rgb.size(); ++k) differ += std::abs(int(a.rgb[k]) - int(b.rgb[k])) > 40;
+  EXPECT_GT(differ, 500);
+}
+
 // Pixels of the second pinned run's yellow over the dark plots.
 int pinned_yellow_pixels(const render::Image& image, int x0, int y0, int x1, int y1) {
   int count = 0;

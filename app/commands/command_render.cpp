@@ -22,6 +22,7 @@
 #include "scene_options.hpp"
 #include "unfurl/sim/simulation.hpp"
 #include "unfurl/io/run_files.hpp"
+#include "unfurl/render/load_arrows.hpp"
 #include "unfurl/render/plot_renderer.hpp"
 #include "unfurl/render/torque_margin_plot.hpp"
 #include "unfurl/render/trajectory_plots.hpp"
@@ -34,7 +35,7 @@ namespace {
 const char* kHelp =
     "usage: unfurl render [SCENE] [--out DIR] [--fps 30] [--size 1280x720] [--from T0] [--to T1]\n"
     "                     [--video FILE.mp4] [--camera NAME|AZ,EL,DIST] [--orthographic] [--plots] [--no-frames]\n"
-    "                     [--camera-frame bus|inertial]\n"
+    "                     [--camera-frame bus|inertial] [--loads [--load-scale F]]\n"
     "                     [--trajectory FILE] [scene options]\n"
     "       unfurl render [SCENE] --mode K [--mode-amplitude A] [--mode-period P] [--at T | --q ...]\n"
     "\n"
@@ -59,6 +60,12 @@ const char* kHelp =
     "                        free-floating bus's attitude and rate), sensors.png and\n"
     "                        torque_margin.png (the driven joints' motorization factors)\n"
     "  --no-frames           do not write frame PNGs (with --video or --plots)\n"
+    "  --loads               draw the loads as arrows: each joint's hinge force at its hinge point\n"
+    "                        (green; grey where rigid loops leave it undetermined) and each engaged\n"
+    "                        latch's torque along its axis (violet, double-headed, right-hand rule),\n"
+    "                        the run's largest of each a quarter of the array's size; the legend\n"
+    "                        gives them in N and N m\n"
+    "  --load-scale F        arrows F times as long (default 1)\n"
     "  --trajectory FILE     draw this trajectory.csv instead of simulating (events.csv and\n"
     "                        loads.csv beside it give the latch marks and the loads plot); SCENE\n"
     "                        must be the scene it was made from\n"
@@ -89,9 +96,9 @@ int command_render(const std::vector<std::string>& argv) {
   std::set<std::string> valued = scene_flags();
   valued.insert(
       {"--out", "--fps", "--size", "--from", "--to", "--video", "--camera", "--camera-frame", "--trajectory", "--gl",
-       "--mode", "--mode-amplitude", "--mode-period"});
+       "--mode", "--mode-amplitude", "--mode-period", "--load-scale"});
   valued.insert(modes_state_flags().begin(), modes_state_flags().end());
-  std::set<std::string> switches{"--help", "-h", "--plots", "--no-frames", "--quiet", "--orthographic"};
+  std::set<std::string> switches{"--help", "-h", "--plots", "--no-frames", "--quiet", "--orthographic", "--loads"};
   switches.insert(modes_state_switches().begin(), modes_state_switches().end());
   const Args args(argv, valued, switches);
   if (args.has("--help") || args.has("-h")) {
@@ -116,8 +123,8 @@ int command_render(const std::vector<std::string>& argv) {
   const bool mode = args.has("--mode");
   if (!mode && (args.has("--mode-amplitude") || args.has("--mode-period") || args.has("--at") || args.has("--q")))
     throw UsageError("--mode-amplitude, --mode-period, --at and --q go with --mode");
-  if (mode && (args.has("--trajectory") || args.has("--plots")))
-    throw UsageError("--mode draws a mode, not a run: no --trajectory or --plots");
+  if (mode && (args.has("--trajectory") || args.has("--plots") || options.loads))
+    throw UsageError("--mode draws a mode, not a run: no --trajectory, --plots or --loads");
   if (mode) {
     const double k = args.number("--mode", 0), amplitude = args.number("--mode-amplitude", 0.1),
                  period = args.number("--mode-period", 2);
@@ -162,8 +169,14 @@ int command_render(const std::vector<std::string>& argv) {
                                         : std::vector<double>{};
   auto context = render::make_offscreen_context(options.gl);
   render::FrameRenderer renderer(scene, file.visuals, options.width, options.height, mesh_directories(scene));
-  const render::Camera camera =
-      choose_camera(options, scene, trajectory, renderer.view(), static_cast<float>(options.width) / options.height);
+  const Eigen::AlignedBox3f bounds = motion_bounds(options, scene, trajectory, renderer.view());
+  const render::Camera camera = choose_camera(options, bounds, static_cast<float>(options.width) / options.height);
+  const render::LoadArrowScale arrow_scale =
+      render::load_arrow_scale(scene, trajectory, bounds.diagonal().norm(), options.load_scale);
+  const std::string legend = options.loads ? render::load_arrow_legend(arrow_scale) : "";
+  if (options.loads && !(arrow_scale.peak_force > 0) && !(arrow_scale.peak_torque > 0))
+    std::fprintf(stderr, "unfurl render: --loads: the run has no hinge forces or latch torques to draw%s\n",
+                 args.has("--trajectory") ? " (loads.csv beside the trajectory gives them)" : "");
 
   std::unique_ptr<io::VideoPipe> video;
   if (options.video) {
@@ -179,10 +192,12 @@ int command_render(const std::vector<std::string>& argv) {
   for (std::size_t k = 0; k < times.size() && !interrupt.flag().load(); ++k, ++drawn) {
     trajectory.coordinates_at(times[k], q);
     render::poses_in_camera_frame(options.camera_frame, scene.model, q.data(), poses);
-    if (caption.empty())
-      renderer.frame(poses, times[k], camera, image);
+    const std::string shown = caption.empty() ? render::time_caption(times[k]) : caption;
+    if (options.loads)
+      renderer.frame(poses, shown, camera, image,
+                     render::load_arrows(scene, trajectory, trajectory.sample_at(times[k]), poses, arrow_scale), legend);
     else
-      renderer.frame(poses, caption, camera, image);
+      renderer.frame(poses, shown, camera, image);
     if (write_frames) {
       char name[32];
       std::snprintf(name, sizeof name, "/frame_%05zu.png", k);

@@ -40,6 +40,13 @@ RenderOptions parse_render_options(const Args& args) {
     if (!backend) throw UsageError("--gl: expected egl, osmesa or auto, got '" + *gl + "'");
     o.gl = *backend;
   }
+  o.loads = args.has("--loads");
+  if (args.has("--load-scale")) {
+    if (!o.loads) throw UsageError("--load-scale goes with --loads");
+    const double scale = args.number("--load-scale", 1);
+    if (!(scale > 0) || scale > 1000) throw UsageError("--load-scale: expected a factor between 0 and 1000");
+    o.load_scale = static_cast<float>(scale);
+  }
   return o;
 }
 
@@ -65,8 +72,8 @@ std::vector<std::string> mesh_directories(const sim::Scene& scene) {
   return dirs;
 }
 
-render::Camera choose_camera(const RenderOptions& options, const sim::Scene& scene, const sim::Trajectory& trajectory,
-                             const render::SceneView& view, float aspect) {
+Eigen::AlignedBox3f motion_bounds(const RenderOptions& options, const sim::Scene& scene,
+                                  const sim::Trajectory& trajectory, const render::SceneView& view) {
   // Everything the mechanism sweeps through, from about 200 samples.
   Eigen::AlignedBox3f bounds;
   std::vector<double> q;
@@ -80,7 +87,10 @@ render::Camera choose_camera(const RenderOptions& options, const sim::Scene& sce
   trajectory.coordinates_at(trajectory.t_end(), q);
   render::poses_in_camera_frame(options.camera_frame, scene.model, q.data(), poses);
   bounds.extend(view.bounds(poses));
+  return bounds;
+}
 
+render::Camera choose_camera(const RenderOptions& options, const Eigen::AlignedBox3f& bounds, float aspect) {
   if (auto preset = render::camera_preset(options.camera, bounds, aspect)) {
     preset->orthographic = options.orthographic;
     return *preset;

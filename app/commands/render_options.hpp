@@ -27,13 +27,17 @@ struct RenderOptions {
   // A free-floating bus: ride with it (default) or stay inertial.
   render::CameraFrame camera_frame = render::CameraFrame::bus;
   render::GlBackend gl = render::GlBackend::automatic;
+  // Hinge forces and latch torques drawn as arrows (load_arrows.hpp), each
+  // kind's largest `load_scale` times the default length.
+  bool loads = false;
+  float load_scale = 1;
 };
 
 // "WxH" in pixels, 16 to 8192 each; throws UsageError naming the flag.
 std::pair<int, int> parse_pixel_size(const std::string& flag, const std::string& text);
 
-// From --fps, --size, --from, --to, --video, --camera, --gl; throws
-// UsageError.
+// From --fps, --size, --from, --to, --video, --camera, --gl, --loads,
+// --load-scale; throws UsageError.
 RenderOptions parse_render_options(const Args& args);
 
 // t = T0 + k / fps for k = 0, 1, ... up to T1, within [t_begin, t_end].
@@ -43,9 +47,11 @@ std::vector<double> frame_times(const RenderOptions& options, double t_begin, do
 // ../meshes from it, then the built-in assets/meshes.
 std::vector<std::string> mesh_directories(const sim::Scene& scene);
 
-// The camera the options ask for, fitted to everything the run sweeps
-// through.
-render::Camera choose_camera(const RenderOptions& options, const sim::Scene& scene, const sim::Trajectory& trajectory,
-                             const render::SceneView& view, float aspect);
+// Everything the run sweeps through, as the view draws it.
+Eigen::AlignedBox3f motion_bounds(const RenderOptions& options, const sim::Scene& scene,
+                                  const sim::Trajectory& trajectory, const render::SceneView& view);
+
+// The camera the options ask for, fitted to `bounds` (motion_bounds).
+render::Camera choose_camera(const RenderOptions& options, const Eigen::AlignedBox3f& bounds, float aspect);
 
 }  // namespace unfurl::app

@@ -9,11 +9,13 @@
 namespace unfurl::app {
 
 ExportJob::ExportJob(const ExportRequest& request, const sim::Scene& scene, const sim::SceneVisuals& visuals,
-                     const sim::Trajectory& trajectory, const render::Camera& camera)
+                     const sim::Trajectory& trajectory, const render::Camera& camera,
+                     std::optional<render::LoadArrowScale> loads)
     : request_(request),
       scene_(scene),
       trajectory_(trajectory),
       camera_(camera),
+      loads_(loads),
       times_(frame_times(request.options, trajectory.t_begin(), trajectory.t_end())),
       renderer_(std::make_unique<render::FrameRenderer>(scene_, visuals, request.options.width, request.options.height,
                                                         mesh_directories(scene_))) {
@@ -57,7 +59,12 @@ bool ExportJob::step(double budget_ms) {
     trajectory_.coordinates_at(times_[drawn_], q);
     render::poses_in_camera_frame(request_.options.camera_frame, scene_.model, q.data(), poses);
     render::Image image;
-    renderer_->frame(poses, times_[drawn_], camera_, image);
+    if (loads_)
+      renderer_->frame(poses, render::time_caption(times_[drawn_]), camera_, image,
+                       render::load_arrows(scene_, trajectory_, trajectory_.sample_at(times_[drawn_]), poses, *loads_),
+                       render::load_arrow_legend(*loads_));
+    else
+      renderer_->frame(poses, times_[drawn_], camera_, image);
     {
       std::lock_guard<std::mutex> lock(mutex_);
       queue_.emplace_back(drawn_, std::move(image));

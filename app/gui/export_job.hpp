@@ -8,10 +8,12 @@
 #include <deque>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 
 #include "unfurl/render/frame_renderer.hpp"
+#include "unfurl/render/load_arrows.hpp"
 #include "gui_state.hpp"
 #include "unfurl/io/video_pipe.hpp"
 
@@ -20,8 +22,10 @@ namespace unfurl::app {
 class ExportJob {
  public:
   // Throws std::runtime_error when the renderer, directory or ffmpeg fail.
+  // With `loads`, the frames show the load arrows at that scale.
   ExportJob(const ExportRequest& request, const sim::Scene& scene, const sim::SceneVisuals& visuals,
-            const sim::Trajectory& trajectory, const render::Camera& camera);
+            const sim::Trajectory& trajectory, const render::Camera& camera,
+            std::optional<render::LoadArrowScale> loads = std::nullopt);
   ~ExportJob();  // stops the encoder
   ExportJob(const ExportJob&) = delete;
   ExportJob& operator=(const ExportJob&) = delete;
@@ -44,6 +48,7 @@ class ExportJob {
   const sim::Scene scene_;
   const sim::Trajectory trajectory_;
   render::Camera camera_;
+  std::optional<render::LoadArrowScale> loads_;
   std::vector<double> times_;
   std::unique_ptr<render::FrameRenderer> renderer_;
   std::size_t drawn_ = 0;

@@ -248,7 +248,7 @@ void GuiApp::apply(const Requests& r) {
       ExportRequest request = *r.export_range;
       request.options.camera_frame = state_.camera_frame;
       export_job_ = std::make_unique<ExportJob>(request, state_.scene, state_.visuals, state_.trajectory,
-                                                state_.camera);
+                                                state_.camera, load_arrow_scale());
       state_.export_progress = {true, 0, export_job_->total(), ""};
     } catch (const std::exception& e) {
       state_.export_progress = {false, 0, 0, std::string("export failed: ") + e.what()};

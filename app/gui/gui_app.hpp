@@ -91,6 +91,11 @@ class GuiApp : private ScriptTarget {
   void keyboard_shortcuts(Requests& requests);
   Eigen::AlignedBox3f swept_bounds() const;
   void current_poses(std::vector<sim::Pose>& poses) const;
+  // The run's loads at the play-head as arrows placed by `poses`; none when
+  // they are off or a mode is shown. `legend` gets their scale.
+  std::vector<render::LoadArrow> current_load_arrows(const std::vector<sim::Pose>& poses, std::string& legend) const;
+  // Their lengths for this run and view; none when they are off.
+  std::optional<render::LoadArrowScale> load_arrow_scale() const;
   void save_view_png(const std::string& path);
 
   GlfwWindow window_;
@@ -110,9 +115,10 @@ class GuiApp : private ScriptTarget {
     double play_time = 0;  // or the mode animation's clock
     int mode = -1;         // the mode animated
     std::array<float, 9> camera{};  // the camera and the frame it rides in
+    float load_scale = 0;           // 0: no load arrows
     bool operator==(const ViewportKey& o) const {
       return view == o.view && w == o.w && h == o.h && generation == o.generation && samples == o.samples &&
-             play_time == o.play_time && mode == o.mode && camera == o.camera;
+             play_time == o.play_time && mode == o.mode && camera == o.camera && load_scale == o.load_scale;
     }
   };
   ViewportKey viewport_key_;

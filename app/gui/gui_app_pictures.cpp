@@ -21,8 +21,10 @@ void GuiApp::save_view_png(const std::string& path) {
     render::FrameRenderer renderer(state_.scene, state_.visuals, w, h, mesh_directories(state_.scene));
     std::vector<sim::Pose> poses;
     current_poses(poses);
+    std::string legend;
+    const std::vector<render::LoadArrow> arrows = current_load_arrows(poses, legend);
     render::Image image;
-    renderer.frame(poses, state_.play_time, state_.camera, image);
+    renderer.frame(poses, render::time_caption(state_.play_time), state_.camera, image, arrows, legend);
     io::write_png(image, path);
     state_.notice = "saved " + path + " (" + std::to_string(w) + "x" + std::to_string(h) + ")";
   } catch (const std::exception& e) {

@@ -18,6 +18,22 @@ void GuiApp::current_poses(std::vector<sim::Pose>& poses) const {
   render::poses_in_camera_frame(state_.camera_frame, state_.scene.model, q.data(), poses);
 }
 
+std::vector<render::LoadArrow> GuiApp::current_load_arrows(const std::vector<sim::Pose>& poses,
+                                                           std::string& legend) const {
+  legend.clear();
+  const std::optional<render::LoadArrowScale> scale = load_arrow_scale();
+  if (!scale) return {};
+  legend = render::load_arrow_legend(*scale);
+  const sim::Trajectory& tr = state_.trajectory;
+  return render::load_arrows(state_.scene, tr, tr.sample_at(state_.play_time), poses, *scale);
+}
+
+std::optional<render::LoadArrowScale> GuiApp::load_arrow_scale() const {
+  if (!state_.show_loads || state_.modes.shown >= 0 || state_.trajectory.empty()) return std::nullopt;
+  return render::load_arrow_scale(state_.scene, state_.trajectory, swept_bounds().diagonal().norm(),
+                                  state_.load_scale);
+}
+
 Eigen::AlignedBox3f GuiApp::swept_bounds() const {
   Eigen::AlignedBox3f bounds;
   std::vector<sim::Pose> poses;
@@ -64,14 +80,17 @@ void GuiApp::draw_viewport_texture() {
                         state_.modes.shown >= 0 ? state_.modes.clock : state_.play_time,
                         state_.modes.shown,
                         {c.target.x(), c.target.y(), c.target.z(), c.azimuth_deg, c.elevation_deg, c.distance,
-                         c.fov_deg, c.orthographic ? 1.0f : 0.0f, static_cast<float>(state_.camera_frame)}};
+                         c.fov_deg, c.orthographic ? 1.0f : 0.0f, static_cast<float>(state_.camera_frame)},
+                        state_.show_loads ? state_.load_scale : 0.0f};
   if (key == viewport_key_ && viewport_drawn_) return;
   viewport_key_ = key;
   viewport_drawn_ = true;
   std::vector<sim::Pose> poses;
   current_poses(poses);
+  const std::vector<render::LoadArrow> arrows = current_load_arrows(poses, state_.load_legend);
+  state_.load_arrows_drawn = static_cast<int>(arrows.size());
   viewport_->bind();
-  view_->draw(poses, state_.camera, w, h);
+  view_->draw(poses, state_.camera, w, h, arrows);
   viewport_->resolve();
 }
 

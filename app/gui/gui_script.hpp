@@ -9,6 +9,7 @@
 //   scrub T               move the play-head to T seconds
 //   camera NAME           a camera preset
 //   orthographic on|off   parallel projection
+//   loads on|off [SCALE]  the load arrows on the 3D view (and their length)
 //   ui_scale X            the UI scale (as the toolbar's field sets it)
 //   browse open|save_scene|frame|trajectory|export_dir|video
 //                         show the file dialog of that field (as its button does)

@@ -140,6 +140,12 @@ struct GuiState {
   // View.
   render::Camera camera;
   render::CameraFrame camera_frame = render::CameraFrame::bus;  // a free-floating bus's
+  // Loads drawn as arrows on the 3D view (load_arrows.hpp), each kind's
+  // largest `load_scale` times the default length; the legend of those drawn.
+  bool show_loads = false;
+  float load_scale = 1;
+  std::string load_legend;
+  int load_arrows_drawn = 0;  // in the view as last drawn
   std::string camera_name = "iso";  // the preset the view shows; "" once orbited
   bool camera_fitted = false;
   int viewport_width = 0, viewport_height = 0;

@@ -79,6 +79,9 @@ void ScriptRunner::step(ScriptTarget& target, double now) {
     } else if (c.name == "camera_frame") {
       state.camera_frame = *render::parse_camera_frame(arg(0));
       state.camera_fitted = false;
+    } else if (c.name == "loads") {
+      state.show_loads = arg(0) == "on";
+      if (c.args.size() > 1) state.load_scale = std::stof(arg(1));
     } else if (c.name == "orthographic") {
       state.camera.orthographic = arg(0) == "on";
     } else if (c.name == "camera") {

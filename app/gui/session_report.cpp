@@ -24,6 +24,8 @@ void write_session_report(const GuiState& state, const std::string& path) {
   };
   run("current", state.trajectory);
   run("previous", state.ghost);
+  json.value("load_arrows", static_cast<long>(state.show_loads ? state.load_arrows_drawn : 0));
+  json.value("load_legend", state.show_loads ? state.load_legend : std::string());
   // The spans of contact the timeline marks.
   json.begin_array("contacts");
   if (state.progress.summary && state.progress.summary->clearance)

@@ -38,6 +38,10 @@ RunProgress SimulationWorker::sync(long& generation, sim::Trajectory& copy, sim:
     copy = sim::Trajectory{};
   }
   copy.layout = buffer_.layout;
+  // The run's column names, once (they are set before its first sample).
+  if (copy.load_columns.size() != buffer_.load_columns.size()) copy.load_columns = buffer_.load_columns;
+  if (copy.sensor_columns.size() != buffer_.sensor_columns.size()) copy.sensor_columns = buffer_.sensor_columns;
+  if (copy.loop_components.size() != buffer_.loop_components.size()) copy.loop_components = buffer_.loop_components;
   copy.samples.insert(copy.samples.end(), buffer_.samples.begin() + static_cast<long>(copy.samples.size()),
                       buffer_.samples.end());
   copy.events.insert(copy.events.end(), buffer_.events.begin() + static_cast<long>(copy.events.size()),
@@ -78,9 +82,12 @@ void SimulationWorker::loop() {
     const auto start = std::chrono::steady_clock::now();
     sim::RunObserver observer;
     observer.cancel = &cancel_;
+    observer.on_start = [&](const sim::Trajectory& header) {
+      std::lock_guard<std::mutex> lock(mutex_);
+      buffer_ = header;
+    };
     observer.on_sample = [&](const sim::Sample& s) {
       std::lock_guard<std::mutex> lock(mutex_);
-      if (buffer_.samples.empty()) buffer_.layout = sim::StateLayout{scene.model.nq, scene.model.nv, 0};
       buffer_.samples.push_back(s);
       progress_.t_reached = s.t;
       progress_.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -43,6 +43,18 @@ void viewport_panel(GuiState& state, unsigned texture, const Eigen::AlignedBox3f
           "on: the camera moves with the free-floating bus; off: it stays in the inertial frame, where "
           "the bus turns and drifts");
   }
+  ImGui::SameLine();
+  ImGui::Checkbox("loads", &state.show_loads);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "arrows at the play-head: each hinge's force on its child (green; grey where rigid loops leave the forces "
+        "undetermined) and each engaged latch's torque (violet, double-headed, right-hand rule)");
+  if (state.show_loads) {
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(em(8));
+    ImGui::SliderFloat("##load_scale", &state.load_scale, 0.1f, 10.0f, "arrows x%.2g", ImGuiSliderFlags_Logarithmic);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the arrows' length: the run's largest load is this times a quarter of the array");
+  }
   const ImVec2 size = ImGui::GetContentRegionAvail();
   state.viewport_width = std::max(16, static_cast<int>(size.x));
   state.viewport_height = std::max(16, static_cast<int>(size.y));
@@ -56,6 +68,9 @@ void viewport_panel(GuiState& state, unsigned texture, const Eigen::AlignedBox3f
     ImGui::GetWindowDrawList()->AddText(ImVec2(corner.x + em(8), corner.y + em(6)), IM_COL32(255, 255, 255, 255),
                                         label);
   }
+  if (state.show_loads && !state.load_legend.empty() && state.modes.shown < 0)
+    ImGui::GetWindowDrawList()->AddText(ImVec2(corner.x + em(0.6f), corner.y + size.y - em(1.6f)),
+                                        IM_COL32(255, 200, 190, 255), state.load_legend.c_str());
   if (!ImGui::IsItemHovered()) return;
   const ImGuiIO& io = ImGui::GetIO();
   render::Camera& c = state.camera;

@@ -9,6 +9,7 @@
 #include "unfurl/io/png_file.hpp"
 #include "unfurl/render/camera_frame.hpp"
 #include "unfurl/render/frame_renderer.hpp"
+#include "unfurl/render/load_arrows.hpp"
 #include "unfurl/render/gl_context.hpp"
 #include "unfurl/render/plot_renderer.hpp"
 #include "unfurl/render/trajectory_plots.hpp"
@@ -20,7 +21,7 @@ namespace py = pybind11;
 void bind_pictures(py::module_& m) {
   m.def(
       "_frame",
-      [](const PyRun& run, double t, int width, int height, const std::string& camera_name) {
+      [](const PyRun& run, double t, int width, int height, const std::string& camera_name, double load_scale) {
         if (width < 16 || height < 16 || width > 8192 || height > 8192)
           throw py::value_error("size: 16 to 8192 pixels each way");
         const sim::Scene& scene = run.file.scene;
@@ -30,14 +31,21 @@ void bind_pictures(py::module_& m) {
         options.width = width, options.height = height, options.camera = camera_name;
         auto context = render::make_offscreen_context(options.gl);
         render::FrameRenderer renderer(scene, run.file.visuals, width, height, app::mesh_directories(scene));
-        const render::Camera camera =
-            app::choose_camera(options, scene, tr, renderer.view(), static_cast<float>(width) / height);
+        const Eigen::AlignedBox3f bounds = app::motion_bounds(options, scene, tr, renderer.view());
+        const render::Camera camera = app::choose_camera(options, bounds, static_cast<float>(width) / height);
         std::vector<double> q;
         tr.coordinates_at(t, q);
         std::vector<sim::Pose> poses;
         render::poses_in_camera_frame(options.camera_frame, scene.model, q.data(), poses);
         render::Image image;
-        renderer.frame(poses, t, camera, image);
+        if (load_scale > 0) {
+          const render::LoadArrowScale scale =
+              render::load_arrow_scale(scene, tr, bounds.diagonal().norm(), static_cast<float>(load_scale));
+          renderer.frame(poses, render::time_caption(t), camera, image,
+                         render::load_arrows(scene, tr, tr.sample_at(t), poses, scale), render::load_arrow_legend(scale));
+        } else {
+          renderer.frame(poses, t, camera, image);
+        }
         py::array_t<std::uint8_t> out({height, width, 3});
         auto d = out.mutable_unchecked<3>();
         for (int y = 0; y < height; ++y)
@@ -45,7 +53,8 @@ void bind_pictures(py::module_& m) {
             for (int c = 0; c < 3; ++c) d(y, x, c) = image.pixel(x, y)[c];
         return out;
       },
-      py::arg("run"), py::arg("t"), py::arg("width") = 640, py::arg("height") = 360, py::arg("camera") = "iso");
+      py::arg("run"), py::arg("t"), py::arg("width") = 640, py::arg("height") = 360, py::arg("camera") = "iso",
+      py::arg("load_scale") = 0.0);
   m.def(
       "_plots",
       [](const PyRun& run, const std::string& dir, int width, int height) {

@@ -53,6 +53,11 @@ def test_a_frame_is_drawn_headless_and_plots_are_written(tmp_path):
     assert image.shape == (180, 320, 3) and image.dtype == np.uint8
     blue = (image[:, :, 2] > 70) & (image[:, :, 2] > image[:, :, 0].astype(int) + 40)
     assert blue.sum() > 500  # the deployed panels' cells
+    # The loads as arrows, as render --loads draws them: the frame changes.
+    loaded = unfurl.render_frame(run, 20, width=320, height=180, loads=True)
+    assert (np.abs(loaded.astype(int) - image.astype(int)).sum(axis=2) > 60).sum() > 200
+    with pytest.raises(ValueError):
+        unfurl.render_frame(run, 20, loads=True, load_scale=0)
     paths = unfurl.plots(run, tmp_path, width=640, height=360)
     assert any(p.endswith("loads.png") for p in paths)
     assert all((tmp_path / p.split("/")[-1]).stat().st_size > 1000 for p in paths)

@@ -346,14 +346,19 @@ def study(study, jobs=None, out=None):
     return Cases(_unfurl._study(os.fspath(study), False, "", out, jobs))
 
 
-def render_frame(run, t, width=640, height=360, camera="iso"):
+def render_frame(run, t, width=640, height=360, camera="iso", loads=False, load_scale=1.0):
     """The run at time t drawn headless (EGL, else OSMesa): an array height x width x 3 (uint8).
 
     camera: a preset (iso, side, top, end, bottom) or "AZ,EL,DIST".
+    loads: draw the hinge forces and latch torques as arrows, as
+    `unfurl render --loads` does (load_scale: their length, times the default).
     """
     if not isinstance(run, Run):
         raise TypeError("render_frame: expected a Run (from unfurl.simulate)")
-    return _unfurl._frame(run._native, float(t), int(width), int(height), camera)
+    if not float(load_scale) > 0:
+        raise ValueError("render_frame: load_scale must be > 0")
+    return _unfurl._frame(run._native, float(t), int(width), int(height), camera,
+                          float(load_scale) if loads else 0.0)
 
 
 def plots(run, directory, width=1280, height=720):

@@ -1,6 +1,7 @@
 #include "unfurl/render/mesh_generator.hpp"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -38,14 +39,7 @@ class ObjBuilder {
 
   // A closed cylinder from a to b, smooth-shaded sides.
   void tube(const V3& a, const V3& b, double radius, int sides) {
-    const V3 axis = (b - a).normalized();
-    const V3 u = (std::abs(axis.x()) < 0.9 ? V3::UnitX() : V3::UnitY()).cross(axis).normalized();
-    const V3 w = axis.cross(u);
-    std::vector<V3> ring;
-    for (int k = 0; k < sides; ++k) {
-      const double phi = 2 * M_PI * k / sides;
-      ring.push_back(std::cos(phi) * u + std::sin(phi) * w);
-    }
+    const std::vector<V3> ring = unit_ring((b - a).normalized(), sides);
     for (int k = 0; k < sides; ++k) {
       const V3 &r0 = ring[k], &r1 = ring[(k + 1) % sides];
       quad_smooth(a + radius * r0, a + radius * r1, b + radius * r1, b + radius * r0, r0, r1);
@@ -57,6 +51,28 @@ class ObjBuilder {
     }
     polygon(top);
     polygon(bottom);
+  }
+
+  // A closed cone from its base's centre a to its apex b.
+  void cone(const V3& a, const V3& b, double radius, int sides) {
+    std::vector<V3> rim;
+    for (const V3& r : unit_ring((b - a).normalized(), sides)) rim.push_back(a + radius * r);
+    for (int k = 0; k < sides; ++k) polygon({rim[k], rim[(k + 1) % sides], b});
+    std::reverse(rim.begin(), rim.end());
+    polygon(rim);
+  }
+
+  // `sides` unit vectors normal to `axis`, evenly spaced, counter-clockwise
+  // about it.
+  static std::vector<V3> unit_ring(const V3& axis, int sides) {
+    const V3 u = (std::abs(axis.x()) < 0.9 ? V3::UnitX() : V3::UnitY()).cross(axis).normalized();
+    const V3 w = axis.cross(u);
+    std::vector<V3> ring;
+    for (int k = 0; k < sides; ++k) {
+      const double phi = 2 * M_PI * k / sides;
+      ring.push_back(std::cos(phi) * u + std::sin(phi) * w);
+    }
+    return ring;
   }
 
   std::string obj() const {
@@ -178,6 +194,16 @@ void pin(std::map<std::string, std::string>& files) {
   files["pin.mtl"] = mtl("pin", {{"pin_steel", V3(0.72, 0.72, 0.76)}});
 }
 
+// A unit cone along z (base radius 0.5 at z = 0, apex at z = 1): the heads
+// of the load arrows (painted by the view).
+void cone(std::map<std::string, std::string>& files) {
+  ObjBuilder b("cone");
+  b.material("cone_paint");
+  b.cone(V3(0, 0, 0), V3(0, 0, 1), 0.5, 24);
+  files["cone.obj"] = b.obj();
+  files["cone.mtl"] = mtl("cone", {{"cone_paint", V3(0.9, 0.9, 0.9)}});
+}
+
 // A unit rod along z (radius 0.5, length 1, centred), painted.
 void rod(std::map<std::string, std::string>& files) {
   ObjBuilder b("rod");
@@ -195,6 +221,7 @@ std::map<std::string, std::string> builtin_mesh_files() {
   yoke(files);
   bus(files);
   pin(files);
+  cone(files);
   rod(files);
   return files;
 }

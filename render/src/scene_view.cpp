@@ -108,6 +108,8 @@ SceneView::SceneView(const sim::Scene& scene, const sim::SceneVisuals& visuals, 
   for (const auto& element : scene.elements)
     for (const sim::ElementLink& link : element->links()) links_.push_back(link);
   if (!links_.empty()) link_mesh_ = &meshes.get("pin");
+  shaft_mesh_ = &meshes.get("pin");
+  head_mesh_ = &meshes.get("cone");
 }
 
 SceneView::~SceneView() = default;
@@ -154,7 +156,8 @@ Eigen::AlignedBox3f SceneView::bounds(const std::vector<sim::Pose>& poses) const
   return box;
 }
 
-void SceneView::draw(const std::vector<sim::Pose>& poses, const Camera& camera, int width, int height) const {
+void SceneView::draw(const std::vector<sim::Pose>& poses, const Camera& camera, int width, int height,
+                     const std::vector<LoadArrow>& arrows) const {
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
   background_->use();
@@ -180,7 +183,39 @@ void SceneView::draw(const std::vector<sim::Pose>& poses, const Camera& camera, 
     draw_mesh(*link_mesh_, sleeve ? sleeve_placement(link, poses) : link_placement(link, poses),
               sleeve ? &bushing : link.style == sim::ElementLink::Style::cable ? &cable : &spring);
   }
+  if (!arrows.empty()) {
+    glClear(GL_DEPTH_BUFFER_BIT);
+    for (const LoadArrow& arrow : arrows) draw_arrow(arrow);
+  }
   glBindVertexArray(0);
+}
+
+void SceneView::draw_arrow(const LoadArrow& arrow) const {
+  // Forces green, torques violet (hues no built-in mesh or element has),
+  // forces rigid mechanics leaves undetermined grey.
+  static const Eigen::Vector3f kForce(0.2f, 0.88f, 0.3f), kTorque(0.72f, 0.35f, 0.98f), kGrey(0.62f, 0.62f, 0.62f);
+  const Eigen::Vector3f& colour = arrow.kind == LoadArrow::Kind::force ? kForce
+                                  : arrow.kind == LoadArrow::Kind::torque ? kTorque
+                                                                          : kGrey;
+  const float length = arrow.vector.norm();
+  if (!(length > 0) || !(arrow.radius > 0)) return;
+  const Eigen::Vector3f u = arrow.vector / length;
+  const Eigen::Quaternionf turn = Eigen::Quaternionf::FromTwoVectors(Eigen::Vector3f::UnitZ(), u);
+  const int heads = arrow.kind == LoadArrow::Kind::torque ? 2 : 1;
+  const float head = std::min(5 * arrow.radius, length / (heads + 1));
+  const float shaft = length - heads * head;
+  Eigen::Affine3f T = Eigen::Affine3f::Identity();
+  T.translate(arrow.from + 0.5f * shaft * u);
+  T.rotate(turn);
+  T.scale(Eigen::Vector3f(2 * arrow.radius, 2 * arrow.radius, shaft));
+  draw_mesh(*shaft_mesh_, T, &colour);
+  for (int k = 0; k < heads; ++k) {
+    Eigen::Affine3f H = Eigen::Affine3f::Identity();
+    H.translate(arrow.from + (shaft + k * head) * u);
+    H.rotate(turn);
+    H.scale(Eigen::Vector3f(5 * arrow.radius, 5 * arrow.radius, head));
+    draw_mesh(*head_mesh_, H, &colour);
+  }
 }
 
 void SceneView::draw_mesh(const MeshModel& mesh, const Eigen::Affine3f& T, const Eigen::Vector3f* colour) const {

@@ -78,6 +78,7 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
   }
   trajectory.load_columns = dynamics.load_columns();
   trajectory.sensor_columns = dynamics.sensor_columns();
+  if (observer.on_start) observer.on_start(trajectory);
 
   std::vector<double> y = dynamics.initial_state();
   std::vector<double> ys(y.size());

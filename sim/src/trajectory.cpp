@@ -26,4 +26,10 @@ void Trajectory::coordinates_at(double t, std::vector<double>& q) const {
     q[c] = span.value(a.y[layout.q() + c], a.q_dot[c], b.y[layout.q() + c], b.q_dot[c], t);
 }
 
+const Sample& Trajectory::sample_at(double t) const {
+  const auto after = std::upper_bound(samples.begin(), samples.end(), t,
+                                      [](double x, const Sample& s) { return x < s.t; });
+  return after == samples.begin() ? samples.front() : *(after - 1);
+}
+
 }  // namespace unfurl::sim

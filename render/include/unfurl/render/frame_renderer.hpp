@@ -28,6 +28,9 @@ class FrameRenderer {
   void frame(const std::vector<sim::Pose>& poses, double t, const Camera& camera, Image& out);
   // The same with another second line ("mode 1: 0.413 Hz").
   void frame(const std::vector<sim::Pose>& poses, const std::string& caption, const Camera& camera, Image& out);
+  // With loads drawn as arrows, and their legend as a third line.
+  void frame(const std::vector<sim::Pose>& poses, const std::string& caption, const Camera& camera, Image& out,
+             const std::vector<LoadArrow>& arrows, const std::string& legend);
 
  private:
   std::string scene_name_;
@@ -37,8 +40,10 @@ class FrameRenderer {
   ImGuiLayer imgui_;
 };
 
-// Writes the scene name and a caption (the time) in the top-left corner.
-void draw_overlay(ImDrawList* draw, const std::string& scene_name, const std::string& caption);
+// Writes the scene name and a caption (the time) in the top-left corner,
+// and a legend (the load arrows') under them when there is one.
+void draw_overlay(ImDrawList* draw, const std::string& scene_name, const std::string& caption,
+                  const std::string& legend = "");
 // "t = 1.500 s".
 std::string time_caption(double t);
 

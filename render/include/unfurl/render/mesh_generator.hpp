@@ -1,5 +1,5 @@
 // The project's own meshes, generated as OBJ + MTL: solar panel (cell grid
-// on the front, plain back), yoke (a frame of tubes), bus, hinge pin, rod.
+// on the front, plain back), yoke (a frame of tubes), bus, hinge pin, rod, and the cone that heads a load arrow.
 // `unfurl_meshes DIR` writes them; assets/meshes holds the output.
 #pragma once
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "unfurl/render/camera.hpp"
+#include "unfurl/render/load_arrows.hpp"
 #include "unfurl/sim/kinematics.hpp"
 #include "unfurl/render/mesh_library.hpp"
 #include "unfurl/sim/scene.hpp"
@@ -25,8 +26,10 @@ class SceneView {
   SceneView(const sim::Scene& scene, const sim::SceneVisuals& visuals, MeshLibrary& meshes);
   ~SceneView();
 
-  // Draws into the bound framebuffer of size width x height.
-  void draw(const std::vector<sim::Pose>& poses, const Camera& camera, int width, int height) const;
+  // Draws into the bound framebuffer of size width x height, with `arrows`
+  // over the bodies (never hidden inside a panel).
+  void draw(const std::vector<sim::Pose>& poses, const Camera& camera, int width, int height,
+            const std::vector<LoadArrow>& arrows = {}) const;
 
   // The base-frame bounds of everything drawn at these poses.
   Eigen::AlignedBox3f bounds(const std::vector<sim::Pose>& poses) const;
@@ -47,9 +50,15 @@ class SceneView {
   // A bushing: a sleeve at its frame a, along the frame's x axis.
   Eigen::Affine3f sleeve_placement(const sim::ElementLink& link, const std::vector<sim::Pose>& poses) const;
 
+  // A shaft and a head (two stacked heads for a torque), the head's length
+  // taken from the shaft when the arrow is short.
+  void draw_arrow(const LoadArrow& arrow) const;
+
   std::vector<Item> items_;
   std::vector<sim::ElementLink> links_;
   const MeshModel* link_mesh_ = nullptr;
+  const MeshModel* shaft_mesh_ = nullptr;
+  const MeshModel* head_mesh_ = nullptr;
   std::unique_ptr<Shader> shader_, background_;
   unsigned background_vao_ = 0;
 };

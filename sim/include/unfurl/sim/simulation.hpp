@@ -63,6 +63,9 @@ struct StepProgress {
 // Hooks for a caller that watches or stops a run (a GUI's thread, a
 // progress bar). Called on the running thread.
 struct RunObserver {
+  // Before the first sample: the trajectory as yet without samples (its
+  // layout and the names of its load, sensor and loop columns).
+  std::function<void(const Trajectory&)> on_start;
   std::function<void(const Sample&)> on_sample;
   std::function<void(const LatchEvent&)> on_event;
   std::function<void(const StepProgress&)> on_progress;  // after every step

@@ -45,6 +45,10 @@ struct Trajectory {
   // Joint coordinates at time t (clamped to the recorded span), by cubic
   // Hermite interpolation of q with its rates dq.
   void coordinates_at(double t, std::vector<double>& q) const;
+  // The last sample at or before t (the first before the run): loads are
+  // not interpolated, since a latch changes them within a sample interval.
+  // Needs a sample.
+  const Sample& sample_at(double t) const;
 };
 
 }  // namespace unfurl::sim
