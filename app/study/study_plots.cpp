@@ -180,7 +180,7 @@ std::vector<std::string> write_study_plots(const io::StudyReport& report, const 
              {"peak_latch_torque", "peak latch torque", "peak latch torque over all latches"},
              {"peak_hinge_force", "peak hinge force", "peak hinge force over all hinges"},
              {"torque_margin", "torque margin", "torque margin (smallest motorization factor - 1)"},
-             {"min_clearance", "clearance", "closest approach of two bodies not jointed together (0: contact)"}})
+             {"min_clearance", "clearance", "closest approach of unjointed bodies (0: touching)"}})
       plots.emplace_back(failure_outcomes(report, o, *nominal), "failures_" + o.output + ".png");
   return write_plot_pngs(plots, dir);
 }

@@ -407,15 +407,22 @@ PlotFrame draw_plot(ImDrawList* draw, ImVec2 origin, ImVec2 size, const PlotSpec
     draw->AddText(ImVec2(origin.x + 0.4f * font, title_y), th.muted, spec.y_label.c_str());
     draw->AddText(ImVec2(origin.x + unit_size.x + 1.4f * font, title_y), th.text, spec.title.c_str());
   } else {
-    draw->AddText(ImVec2(f.plot_min.x, title_y), th.text, spec.title.c_str());
+    // Over the axes, moved left as far as the picture's edge when a wide
+    // margin (long category names) would push it past the right edge.
     const ImVec2 title_size = ImGui::CalcTextSize(spec.title.c_str());
-    draw->AddText(ImVec2(f.plot_min.x + title_size.x + font, title_y), th.muted, spec.y_label.c_str());
+    const float unit_width = spec.y_label.empty() ? 0.0f : font + ImGui::CalcTextSize(spec.y_label.c_str()).x;
+    const float room = origin.x + size.x - 0.4f * font - title_size.x - unit_width;
+    const float title_x = std::max(origin.x + 0.4f * font, std::min(f.plot_min.x, room));
+    draw->AddText(ImVec2(title_x, title_y), th.text, spec.title.c_str());
+    draw->AddText(ImVec2(title_x + title_size.x + font, title_y), th.muted, spec.y_label.c_str());
   }
   if (compact)
     draw->AddText(ImVec2(x_label_left, f.plot_max.y + 0.2f * font), th.muted, spec.x_label.c_str());
   else
-    draw->AddText(ImVec2((f.plot_min.x + f.plot_max.x - xs.x) / 2, f.plot_max.y + 1.6f * font), th.muted,
-                  spec.x_label.c_str());
+    draw->AddText(ImVec2(std::max(origin.x + 0.4f * font,
+                                  std::min((f.plot_min.x + f.plot_max.x - xs.x) / 2, origin.x + size.x - 0.4f * font - xs.x)),
+                         f.plot_max.y + 1.6f * font),
+                  th.muted, spec.x_label.c_str());
 
   // Curves, clipped to the axes.
   draw->PushClipRect(f.plot_min, f.plot_max, true);
