@@ -192,12 +192,10 @@ int command_render(const std::vector<std::string>& argv) {
   for (std::size_t k = 0; k < times.size() && !interrupt.flag().load(); ++k, ++drawn) {
     trajectory.coordinates_at(times[k], q);
     render::poses_in_camera_frame(options.camera_frame, scene.model, q.data(), poses);
-    const std::string shown = caption.empty() ? render::time_caption(times[k]) : caption;
+    std::vector<render::LoadArrow> arrows;
     if (options.loads)
-      renderer.frame(poses, shown, camera, image,
-                     render::load_arrows(scene, trajectory, trajectory.sample_at(times[k]), poses, arrow_scale), legend);
-    else
-      renderer.frame(poses, shown, camera, image);
+      arrows = render::load_arrows(scene, trajectory, trajectory.sample_at(times[k]), poses, arrow_scale);
+    renderer.frame(poses, caption.empty() ? render::time_caption(times[k]) : caption, camera, image, arrows, legend);
     if (write_frames) {
       char name[32];
       std::snprintf(name, sizeof name, "/frame_%05zu.png", k);

@@ -59,12 +59,10 @@ bool ExportJob::step(double budget_ms) {
     trajectory_.coordinates_at(times_[drawn_], q);
     render::poses_in_camera_frame(request_.options.camera_frame, scene_.model, q.data(), poses);
     render::Image image;
-    if (loads_)
-      renderer_->frame(poses, render::time_caption(times_[drawn_]), camera_, image,
-                       render::load_arrows(scene_, trajectory_, trajectory_.sample_at(times_[drawn_]), poses, *loads_),
-                       render::load_arrow_legend(*loads_));
-    else
-      renderer_->frame(poses, times_[drawn_], camera_, image);
+    std::vector<render::LoadArrow> arrows;
+    if (loads_) arrows = render::load_arrows(scene_, trajectory_, trajectory_.sample_at(times_[drawn_]), poses, *loads_);
+    renderer_->frame(poses, render::time_caption(times_[drawn_]), camera_, image, arrows,
+                     loads_ ? render::load_arrow_legend(*loads_) : "");
     {
       std::lock_guard<std::mutex> lock(mutex_);
       queue_.emplace_back(drawn_, std::move(image));

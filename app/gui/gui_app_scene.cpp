@@ -57,9 +57,8 @@ bool GuiApp::load_and_run(const std::string& name) {
     state_.scene_error.clear();
     state_.failure_elements = std::move(injected);
     state_.failure_text = shown_case && shown_case->failure ? shown_case->failure->describe() : "";
-    state_.failed_latches.clear();
-    if (shown_case && shown_case->failure && shown_case->failure->kind == studies::StudyFailure::Kind::latch_fails)
-      state_.failed_latches.push_back(shown_case->failure->joint);
+    state_.failed_latches =
+        shown_case && shown_case->failure ? shown_case->failure->removed_latches() : std::vector<std::string>{};
     view_ = std::move(view);
     meshes_ = std::move(meshes);
     start_run();

@@ -38,14 +38,15 @@ void bind_pictures(py::module_& m) {
         std::vector<sim::Pose> poses;
         render::poses_in_camera_frame(options.camera_frame, scene.model, q.data(), poses);
         render::Image image;
+        std::vector<render::LoadArrow> arrows;
+        std::string legend;
         if (load_scale > 0) {
           const render::LoadArrowScale scale =
               render::load_arrow_scale(scene, tr, bounds.diagonal().norm(), static_cast<float>(load_scale));
-          renderer.frame(poses, render::time_caption(t), camera, image,
-                         render::load_arrows(scene, tr, tr.sample_at(t), poses, scale), render::load_arrow_legend(scale));
-        } else {
-          renderer.frame(poses, t, camera, image);
+          arrows = render::load_arrows(scene, tr, tr.sample_at(t), poses, scale);
+          legend = render::load_arrow_legend(scale);
         }
+        renderer.frame(poses, render::time_caption(t), camera, image, arrows, legend);
         py::array_t<std::uint8_t> out({height, width, 3});
         auto d = out.mutable_unchecked<3>();
         for (int y = 0; y < height; ++y)

@@ -40,11 +40,6 @@ void FrameRenderer::frame(const std::vector<sim::Pose>& poses, double t, const C
 }
 
 void FrameRenderer::frame(const std::vector<sim::Pose>& poses, const std::string& caption, const Camera& camera,
-                          Image& out) {
-  frame(poses, caption, camera, out, {}, "");
-}
-
-void FrameRenderer::frame(const std::vector<sim::Pose>& poses, const std::string& caption, const Camera& camera,
                           Image& out, const std::vector<LoadArrow>& arrows, const std::string& legend) {
   framebuffer_.bind();
   view_->draw(poses, camera, width(), height(), arrows);

@@ -344,6 +344,11 @@ std::string StudyFailure::id() const {
   return "";
 }
 
+std::vector<std::string> StudyFailure::removed_latches() const {
+  if (kind == Kind::latch_fails) return {joint};
+  return {};
+}
+
 std::string StudyFailure::describe() const {
   switch (kind) {
     case Kind::latch_fails: return "latch " + joint + " never engages";

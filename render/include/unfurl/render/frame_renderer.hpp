@@ -26,11 +26,10 @@ class FrameRenderer {
 
   // The scene at these poses, labelled with the scene name and time.
   void frame(const std::vector<sim::Pose>& poses, double t, const Camera& camera, Image& out);
-  // The same with another second line ("mode 1: 0.413 Hz").
-  void frame(const std::vector<sim::Pose>& poses, const std::string& caption, const Camera& camera, Image& out);
-  // With loads drawn as arrows, and their legend as a third line.
+  // The same with another second line ("mode 1: 0.413 Hz"), and loads
+  // drawn as arrows with their legend as a third line.
   void frame(const std::vector<sim::Pose>& poses, const std::string& caption, const Camera& camera, Image& out,
-             const std::vector<LoadArrow>& arrows, const std::string& legend);
+             const std::vector<LoadArrow>& arrows = {}, const std::string& legend = "");
 
  private:
   std::string scene_name_;

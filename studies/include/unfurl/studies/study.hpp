@@ -44,6 +44,9 @@ struct StudyFailure {
   std::string id() const;
   // "latch j3 never engages", for the tables.
   std::string describe() const;
+  // The joints whose latch the failure takes out of the scene: a run of the
+  // case counts them as never latched.
+  std::vector<std::string> removed_latches() const;
 };
 
 struct Study {
