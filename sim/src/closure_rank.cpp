@@ -33,7 +33,7 @@ void ClosureRank::rigid_loop_forces(const double* d, double* lambda) const {
   Eigen::Map<Eigen::VectorXd>(lambda, size()) = scale_.cwiseProduct(rigid(d));
 }
 
-bool ClosureRank::loop_forces(const double* d, double* lambda) const {
+bool ClosureRank::loop_forces(const double* d, double* lambda, bool remember) {
   const int m = size();
   const auto& V = eigen_.eigenvectors();
   Vector lambda_tilde = rigid(d);
@@ -43,7 +43,12 @@ bool ClosureRank::loop_forces(const double* d, double* lambda) const {
   // the regulator's feedback on the integrator's error in the gap, which
   // leaves the rigid forces at the state as they are.
   const Vector departure = V.leftCols(weak_).transpose() * (regulated - lambda_tilde);
-  bool determinate = rank_ == m && departure.norm() <= kAgreement * lambda_tilde.norm();
+  const bool departed = departure.norm() > kAgreement * lambda_tilde.norm();
+  const bool weak_loaded =
+      (V.leftCols(weak_).transpose() * lambda_tilde).norm() > kWeakLoaded * lambda_tilde.norm();
+  const bool shaped = departed || (shaped_ && weak_loaded);
+  if (remember) shaped_ = shaped;
+  const bool determinate = rank_ == m && !shaped;
   if (!determinate && rank_ == m) {  // the minimum-norm forces: without the weak directions
     for (int i = 0; i < weak_; ++i) lambda_tilde -= V.col(i).dot(lambda_tilde) * V.col(i);
   }

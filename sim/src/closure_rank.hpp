@@ -21,6 +21,16 @@
 //   directions a difference is the regulator's feedback on the
 //   integrator's error in the gap, and does not count (at rtol 1e-7 it
 //   reaches 3 % on the pantograph with S W S conditioned to 1.6e-2).
+// - the motion was not shaped by the regulator: after a step where its
+//   forces departed along the weak directions, the state's place along
+//   them (its distance from the branch point, which sets a load there as
+//   1/distance) is what the regulator let through, not the mechanism's.
+//   So while the rigid loads lie mostly along the weak directions (more
+//   than kWeakLoaded of their norm) they stay indeterminate, even where the
+//   two forces agree again; an asymmetric latch-up of the pantograph ends
+//   on such states for good, with loads of 1e2..1e5 N set by the
+//   regularization. The stowed start, whose loads also lie along its weak
+//   directions but which no departure preceded, stays determinate.
 // Elsewhere the minimum-norm loop forces are reported: the rigid ones with
 // their part along the weak directions of W (eigenvalues below
 // kWeakDirection of the largest, which amplify a load a thousandfold over
@@ -41,6 +51,7 @@ class ClosureRank {
   static constexpr double kRankTolerance = 1.5e-8;
   static constexpr double kWeakDirection = 1e-3;
   static constexpr double kAgreement = 1e-2;
+  static constexpr double kWeakLoaded = 0.5;
 
   // scale: S, one entry per component.
   explicit ClosureRank(const Eigen::VectorXd& scale);
@@ -52,8 +63,13 @@ class ClosureRank {
 
   // Replaces the regulator's loop forces lambda by the rigid model's for the
   // gap acceleration d (the minimum-norm ones where they are not
-  // determinate); returns whether they are.
-  bool loop_forces(const double* d, double* lambda) const;
+  // determinate); returns whether they are. At a step's end (remember) it
+  // also updates whether the motion has been shaped by the regulator since;
+  // between step ends (the samples) it only reads that, so what a run
+  // reports does not depend on its sampling interval.
+  bool loop_forces(const double* d, double* lambda, bool remember);
+  // A new run: no departure yet.
+  void forget() { shaped_ = false; }
   // The rigid model's loop forces for d, W lambda = d, whatever the
   // regulator's (where W lacks rank, those without the weak directions).
   void rigid_loop_forces(const double* d, double* lambda) const;
@@ -66,6 +82,7 @@ class ClosureRank {
   Eigen::SelfAdjointEigenSolver<LoopMatrix> eigen_;
   int rank_ = 0;  // eigenvalues above kRankTolerance of the largest
   int weak_ = 0;  // eigenvalues below kWeakDirection of the largest
+  bool shaped_ = false;  // the state along the weak directions is the regulator's
 };
 
 }  // namespace unfurl::sim

@@ -129,6 +129,7 @@ std::vector<double> Dynamics::initial_state() {
     sweep_.generalized_forces(F_, y.data() + layout_.p());
   }
   if (regulator_ && closure_rank_ && regulator_->uses_feedforward()) start_integral_at_rest(y.data());
+  if (closure_rank_) closure_rank_->forget();
   return y;
 }
 
@@ -269,7 +270,7 @@ void Dynamics::switching_functions(const double* y, double* values) const {
     values[l] = latch_state_.switching_value(l, q[scene_.model.position_of(latches_[l]->joint)]);
 }
 
-bool Dynamics::loads(double, const double* y, Loads& out, std::vector<ClosureError>* closure) {
+bool Dynamics::loads(double, const double* y, Loads& out, std::vector<ClosureError>* closure, At at) {
   const Model& model = scene_.model;
   const StateLayout& L = layout_;
   if (!evaluate(y, ydot_.data(), Regulator::Gains::current)) return false;
@@ -295,7 +296,8 @@ bool Dynamics::loads(double, const double* y, Loads& out, std::vector<ClosureErr
     }
     closure_rank_->compute(regulator_->mobility(sweep_));
     // lambda_ holds the regulator's loop forces, which moved the mechanism.
-    if (!closure_rank_->loop_forces(d_.data(), lambda_.data())) out.determinacy = Determinacy::indeterminate;
+    if (!closure_rank_->loop_forces(d_.data(), lambda_.data(), at == At::step_end))
+      out.determinacy = Determinacy::indeterminate;
   } else if (regulator_) {
     out.determinacy = Determinacy::not_assessed;
   }

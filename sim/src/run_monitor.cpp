@@ -17,7 +17,7 @@ RunMonitor::RunMonitor(Dynamics& dynamics) : dynamics_(dynamics) {
 }
 
 std::optional<double> RunMonitor::observe(double t, const double* y) {
-  if (!dynamics_.loads(t, y, loads_, &closure_)) return std::nullopt;
+  if (!dynamics_.loads(t, y, loads_, &closure_, Dynamics::At::step_end)) return std::nullopt;
   for (int l = 0; l < dynamics_.latch_count(); ++l)
     if (dynamics_.latch_state().engaged(l))
       peaks_.latch_torque[l].update(std::abs(loads_.element[dynamics_.latch_column(l)]), t);

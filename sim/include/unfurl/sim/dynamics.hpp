@@ -123,8 +123,13 @@ class Dynamics {
   // reactions from the sweep's accelerations (exact, O(N)), whether the
   // motion determines them (minimum-norm where it does not), the sensors'
   // readings from the same accelerations; and the loops' geometric gaps if
-  // asked. False where the evaluation at y failed.
-  bool loads(double t, const double* y, Loads& out, std::vector<ClosureError>* closure = nullptr);
+  // asked. False where the evaluation at y failed. At a step's end (the
+  // run's monitor) the loads also update what the run remembers of how its
+  // motion passed a branch point (closure_rank.hpp); elsewhere (samples, a
+  // single state) they only read it.
+  enum class At { state, step_end };
+  bool loads(double t, const double* y, Loads& out, std::vector<ClosureError>* closure = nullptr,
+             At at = At::state);
   // What Loads::element holds, and which of its columns each element writes.
   const std::vector<LoadColumn>& load_columns() const { return columns_; }
   const std::vector<int>& element_columns(std::size_t element) const { return element_columns_[element]; }
