@@ -111,6 +111,10 @@ TEST(LoadDeterminacy, AFourBarAwayFromItsSingularPositionsIsDeterminate) {
   EXPECT_TRUE(s.indeterminate_spans.empty());
   for (const sim::Sample& sample : run.trajectory.samples)
     EXPECT_EQ(sample.loads.determinacy, sim::Determinacy::determinate) << sample.t;
+  // Its one loop's equations stay independent (the rank summary.json and
+  // simulate report).
+  EXPECT_EQ(run.peaks.closure_rank_at_start, run.trajectory.layout.m);
+  EXPECT_EQ(run.peaks.lowest_closure_rank, run.trajectory.layout.m);
 }
 
 TEST(LoadDeterminacy, ParallelRodsAreIndeterminateAtTheirFlatPositions) {
@@ -123,6 +127,13 @@ TEST(LoadDeterminacy, ParallelRodsAreIndeterminateAtTheirFlatPositions) {
   double indeterminate = 0;
   for (const auto& span : s.indeterminate_spans) indeterminate += span[1] - span[0];
   EXPECT_LT(indeterminate, 0.1 * file.scene.run.t_end) << "only near the flat positions";
+  // The closure system loses rank there and only there.
+  const int m = run.trajectory.layout.m;
+  EXPECT_EQ(run.peaks.closure_rank_at_start, m);
+  EXPECT_LT(run.peaks.lowest_closure_rank, m);
+  EXPECT_GE(run.peaks.lowest_closure_rank, 0);
+  EXPECT_LT(std::abs(std::sin(studies::parallel_rods_angles(file.scene, run.peaks.lowest_closure_rank_t)[0])), 0.05)
+      << "lowest rank at t = " << run.peaks.lowest_closure_rank_t;
   for (const sim::Sample& sample : run.trajectory.samples) {
     const double crank = studies::parallel_rods_angles(file.scene, sample.t)[0];
     if (std::abs(std::sin(crank)) > 0.2) {

@@ -176,6 +176,12 @@ void print_summary(const sim::Scene& scene, const sim::RunResult& result, const 
   if (!scene.loops.empty()) {
     std::printf("loop gap     max %.3g m, %.3g rad (%.3g m, %.3g rad before the first latch)\n", s.max_closure_gap,
                 s.max_closure_angle, s.max_closure_gap_before_latch, s.max_closure_angle_before_latch);
+    const sim::RunPeaks& p = result.peaks;
+    const int m = result.trajectory.layout.m;
+    if (p.closure_rank_at_start >= 0)
+      std::printf("loop rank    %d of %d equations independent at the start (%d redundant), lowest %d at t = %.6f s\n",
+                  p.closure_rank_at_start, m, m - p.closure_rank_at_start, p.lowest_closure_rank,
+                  p.lowest_closure_rank_t);
   }
   const sim::RunSummary::NamedPeak* latch = nullptr;
   for (const auto& p : s.peak_latch_torque)

@@ -80,9 +80,11 @@ void write_monte_carlo_comparison(std::ostream& out, const ComplianceReport& rep
   out << "## Monte Carlo: the peak hinge force, rigid and compliant\n\n"
       << "The same draws (every spring's stiffness and preload within +-10 %, every panel's mass within +-5 %, "
          "every latch's stiffness within +-20 %) on the rigid pantograph and on the compliant one (pins 1e6 N/m), "
-         "over their deployed cases. The rigid study's peaks are over the steps where its loads are determinate; "
-         "after an asymmetric branch passage those are still set by the regulator's settings (the closure issue's "
-         "open case), so its spread says little. The compliant study's are determinate at every step.\n\n";
+         "over their deployed cases. The rigid study's peaks are over the steps where its loads are determinate: "
+         "in a case whose chains latch one after the other the loops pass their deployed branch point "
+         "asymmetrically and its loads are indeterminate from there to the end, so its peaks are those of the "
+         "deployment before the latch-up and miss the latch-up's. The compliant study's are determinate at every "
+         "step and include it.\n\n";
   for (const std::string& p : pictures)
     if (p == "monte_carlo_hinge_force.png") out << "![" << p << "](" << p << ")\n\n";
   out << "| study | cases | min | p5 | median | p95 | max |\n|---|---:|---:|---:|---:|---:|---:|\n";

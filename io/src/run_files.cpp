@@ -289,8 +289,11 @@ void write_summary_units(JsonWriter& json, const sim::Scene& scene, const sim::R
   for (const char* key : {"t_end", "sample", "dt", "t_reached", "wall_time", "min_step", "min_step_after_restart"})
     json.value(key, "s");
   json.value("latch_time", "s");
-  if (!scene.loops.empty())
-    json.begin_object("closure").value("length", "m").value("rate", "rad/s").value("v_max", "rad/s").end_object();
+  if (!scene.loops.empty()) {
+    json.begin_object("closure").value("length", "m").value("rate", "rad/s").value("v_max", "rad/s");
+    json.begin_object("lowest_rank").value("t", "s").end_object();
+    json.end_object();
+  }
   json.value("max_closure_gap", "m").value("max_closure_angle", "rad");
   json.value("max_closure_gap_before_latch", "m").value("max_closure_angle_before_latch", "rad");
   const auto per_joint = [&](const char* key, const std::vector<sim::RunSummary::NamedPeak>& peaks, bool moment) {
@@ -370,6 +373,12 @@ std::string summary_json(const sim::Scene& scene, const sim::RunResult& result, 
     json.value("length", c->length).value("rate", c->rate);
     json.value("v_max", c->v_max).value("v_max_source", c->v_max_automatic ? "automatic" : "scene");
     json.value("regularization", c->regularization);
+    const sim::RunPeaks& p = result.peaks;
+    if (p.closure_rank_at_start >= 0) {
+      json.value("rank", p.closure_rank_at_start);
+      json.begin_object("lowest_rank").value("value", p.lowest_closure_rank).value("t", p.lowest_closure_rank_t);
+      json.end_object();
+    }
     json.end_object();
   }
   json.begin_object("latch_time");

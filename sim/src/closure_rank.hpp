@@ -60,6 +60,10 @@ class ClosureRank {
   void compute(const LoopMatrix& W);
 
   int size() const { return static_cast<int>(scale_.size()); }
+  // The closure system's rank at the last compute(): its components less
+  // the redundant ones (eigenvalues of S W S at or below kRankTolerance of
+  // the largest).
+  int rank() const { return rank_; }
 
   // Replaces the regulator's loop forces lambda by the rigid model's for the
   // gap acceleration d (the minimum-norm ones where they are not

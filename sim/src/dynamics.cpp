@@ -288,6 +288,7 @@ bool Dynamics::loads(double, const double* y, Loads& out, std::vector<ClosureErr
   // joint's wrench, moved from the child's origin to the hinge point.
   add_element_forces(q, w);
   out.determinacy = Determinacy::determinate;
+  out.closure_rank = -1;
   if (regulator_ && closure_rank_) {
     if (!regulator_->uses_feedforward()) {  // else evaluate() left d in d_
       sweep_.accelerations(v_, w, F_, Q_joint_.data(), bias_, a_, ddq_.data());
@@ -298,6 +299,7 @@ bool Dynamics::loads(double, const double* y, Loads& out, std::vector<ClosureErr
     // lambda_ holds the regulator's loop forces, which moved the mechanism.
     if (!closure_rank_->loop_forces(d_.data(), lambda_.data(), at == At::step_end))
       out.determinacy = Determinacy::indeterminate;
+    out.closure_rank = closure_rank_->rank();
   } else if (regulator_) {
     out.determinacy = Determinacy::not_assessed;
   }

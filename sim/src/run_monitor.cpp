@@ -45,6 +45,11 @@ std::optional<double> RunMonitor::observe(double t, const double* y) {
     peaks_.indeterminate_spans.back()[1] = t;
   }
   in_indeterminate_span_ = !determinate;
+  if (loads_.closure_rank >= 0) {
+    if (peaks_.closure_rank_at_start < 0) peaks_.closure_rank_at_start = loads_.closure_rank;
+    if (peaks_.lowest_closure_rank < 0 || loads_.closure_rank < peaks_.lowest_closure_rank)
+      peaks_.lowest_closure_rank = loads_.closure_rank, peaks_.lowest_closure_rank_t = t;
+  }
   const bool before_latch = dynamics_.latch_state().engaged_count() == 0;
   double largest = 0;
   for (const ClosureError& c : closure_) {

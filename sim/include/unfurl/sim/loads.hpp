@@ -66,6 +66,9 @@ struct Loads {
   // reactions inside the loops (closure_rank.hpp). Where it does not, the
   // reactions and loop forces are the minimum-norm ones.
   Determinacy determinacy = Determinacy::determinate;
+  // The loops' independent equations here (ClosureRank::rank); -1 where
+  // not assessed (no loops, or more than kMaxDenseComponents components).
+  int closure_rank = -1;
 };
 
 // The largest magnitude a quantity took and when.
@@ -91,6 +94,11 @@ struct RunPeaks {
   // steps.
   std::vector<std::array<double, 2>> indeterminate_spans;
   bool loads_assessed = true;  // false if some step's were not (Determinacy::not_assessed)
+  // The closure system's rank at the start and its lowest over the steps
+  // (a branch point), with when; -1 where not assessed.
+  int closure_rank_at_start = -1;
+  int lowest_closure_rank = -1;
+  double lowest_closure_rank_t = std::numeric_limits<double>::quiet_NaN();
   std::vector<Peak> element;        // per Scene::element_peaks()
   std::vector<Peak> sensor;         // per Scene::sensor_peaks()
   Peak gap_m, gap_rad;              // over all loops
