@@ -8,6 +8,7 @@
 #include <cmath>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "support.hpp"
 #include "unfurl/sim/regulator.hpp"
@@ -79,6 +80,35 @@ TEST(UnitInvariance, AutomaticBandwidthInAnyUnits) {
   EXPECT_TRUE(run.closure->v_max_automatic);
   EXPECT_DOUBLE_EQ(run.closure->v_max, sim::Regulator::kBandwidthPerRate * run.closure->rate);
   expect_unit_invariant(automatic, 3);
+}
+
+TEST(UnitInvariance, AFastMechanismFollowsTheSlowOneInItsOwnTime) {
+  // Time x 1/20 (every spring's and latch's stiffness x 400, damping x 20):
+  // rates near 1e3 rad/s, the small, fast mechanism a fixed bandwidth of
+  // 2000 rad/s left 0.54 rad off. With the automatic bandwidth the angles
+  // at t / 20 are the original's at t, up to the latch-up.
+  const double s = 20;
+  std::vector<sim::Override> slow{{"regulator.v_max", "auto"}, {"run.t_end", "7.3"}, {"run.sample", "0.01"}};
+  std::vector<sim::Override> fast{{"regulator.v_max", "auto"},
+                                  {"run.t_end", std::to_string(7.3 / s)},
+                                  {"run.sample", std::to_string(0.01 / s)}};
+  for (int j = 1; j <= 8; ++j) {
+    const std::string spring = "springs.j" + std::to_string(j) + ".";
+    fast.push_back({spring + "stiffness", std::to_string(0.10 * s * s)});
+    fast.push_back({spring + "damping", std::to_string(0.02 * s)});
+    const std::string latch = "latches." + std::to_string(j - 1) + ".";
+    fast.push_back({latch + "stiffness", std::to_string(1000 * s * s)});
+    fast.push_back({latch + "damping", std::to_string(10 * s)});
+  }
+  const sim::SceneFile original = sim::read_builtin_scene("pantograph", slow);
+  const sim::SceneFile quick = sim::read_builtin_scene("pantograph", fast);
+  const sim::RunResult base = sim::simulate(original.scene, original.scene.run);
+  const sim::RunResult run = sim::simulate(quick.scene, quick.scene.run);
+  ASSERT_EQ(run.status, sim::RunStatus::finished) << sim::describe(run.failure);
+  ASSERT_EQ(run.trajectory.samples.size(), base.trajectory.samples.size());
+  ASSERT_TRUE(run.closure && base.closure);
+  EXPECT_NEAR(run.closure->rate, s * base.closure->rate, 1e-9 * s * base.closure->rate);
+  EXPECT_LT(largest_angle_difference(original.scene.model, run, base), 1e-7);
 }
 
 }  // namespace
