@@ -25,6 +25,16 @@ sim::RunSummary run_pantograph(std::vector<sim::Override> overrides) {
   return sim::summarize(scene, run);
 }
 
+// Every joint's determinate peak hinge force within 1e-4 of the reference's.
+void expect_same_hinge_peaks(const sim::RunSummary& reference, const sim::RunSummary& other,
+                             const sim::Override& setting) {
+  for (std::size_t j = 0; j < reference.peak_hinge_force.size(); ++j) {
+    const double a = reference.peak_hinge_force[j].peak.value, b = other.peak_hinge_force[j].peak.value;
+    EXPECT_NEAR(b, a, 1e-4 * a) << setting.path << " = " << setting.value << ", "
+                                << reference.peak_hinge_force[j].joint;
+  }
+}
+
 TEST(LoadDeterminacy, DeterminateHingePeaksDoNotDependOnTheRegulatorsSettings) {
   // Two decades of regularization up to the default (at 2e-5, ten times
   // the default, the weak direction at the latch-up, 1e-6 of the strongest,
@@ -46,12 +56,7 @@ TEST(LoadDeterminacy, DeterminateHingePeaksDoNotDependOnTheRegulatorsSettings) {
   };
   EXPECT_TRUE(covers(nominal, 7.5));
   for (const auto& overrides : settings) {
-    const sim::RunSummary other = run_pantograph(overrides);
-    for (std::size_t j = 0; j < nominal.peak_hinge_force.size(); ++j) {
-      const double a = nominal.peak_hinge_force[j].peak.value, b = other.peak_hinge_force[j].peak.value;
-      EXPECT_NEAR(b, a, 1e-4 * a) << overrides[0].path << " = " << overrides[0].value << ", "
-                                  << nominal.peak_hinge_force[j].joint;
-    }
+    expect_same_hinge_peaks(nominal, run_pantograph(overrides), overrides[0]);
   }
   // The peak of the rigid model at the latch-up, as two independent
   // engines have it.
@@ -63,8 +68,8 @@ TEST(LoadDeterminacy, AnAsymmetricLatchUpReportsMinimumNormLoadsNotTheRegulators
   // 76 kN there, set by its regularization (442 kN at 1e-7, 11 kN at 1e-4).
   const sim::RunSummary nominal = run_pantograph({});
   for (const char* regularization : {"2e-7", "2e-5"}) {
-    const sim::RunSummary off = run_pantograph(
-        {{"springs.j1.stiffness", "0.102"}, {"regulator.regularization", regularization}});
+    const sim::RunSummary off =
+        run_pantograph({{"springs.j1.stiffness", "0.102"}, {"regulator.regularization", regularization}});
     ASSERT_EQ(off.loads_determinate, std::optional<bool>(false));
     for (std::size_t j = 0; j < off.peak_hinge_force_indeterminate.size(); ++j)
       EXPECT_LT(off.peak_hinge_force_indeterminate[j].peak.value, 5 * nominal.peak_hinge_force[0].peak.value)
@@ -92,11 +97,7 @@ TEST(LoadDeterminacy, AfterAnAsymmetricBranchPassageTheDeterminatePeaksDoNotDepe
     std::vector<sim::Override> overrides = off_nominal;
     overrides.push_back(setting);
     const sim::RunSummary other = run_pantograph(overrides);
-    for (std::size_t j = 0; j < reference.peak_hinge_force.size(); ++j) {
-      const double a = reference.peak_hinge_force[j].peak.value, b = other.peak_hinge_force[j].peak.value;
-      EXPECT_NEAR(b, a, 1e-4 * a) << setting.path << " = " << setting.value << ", "
-                                  << reference.peak_hinge_force[j].joint;
-    }
+    expect_same_hinge_peaks(reference, other, setting);
     ASSERT_FALSE(other.indeterminate_spans.empty());
     EXPECT_NEAR(other.indeterminate_spans.front()[0], reference.indeterminate_spans.front()[0], 1e-3)
         << setting.path << " = " << setting.value;

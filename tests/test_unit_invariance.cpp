@@ -88,10 +88,9 @@ TEST(UnitInvariance, AFastMechanismFollowsTheSlowOneInItsOwnTime) {
   // 2000 rad/s left 0.54 rad off. With the automatic bandwidth the angles
   // at t / 20 are the original's at t, up to the latch-up.
   const double s = 20;
-  std::vector<sim::Override> slow{{"regulator.v_max", "auto"}, {"run.t_end", "7.3"}, {"run.sample", "0.01"}};
-  std::vector<sim::Override> fast{{"regulator.v_max", "auto"},
-                                  {"run.t_end", std::to_string(7.3 / s)},
-                                  {"run.sample", std::to_string(0.01 / s)}};
+  const std::vector<sim::Override> slow{{"regulator.v_max", "auto"}, {"run.t_end", "7.3"}, {"run.sample", "0.01"}};
+  std::vector<sim::Override> fast{
+      {"regulator.v_max", "auto"}, {"run.t_end", std::to_string(7.3 / s)}, {"run.sample", std::to_string(0.01 / s)}};
   for (int j = 1; j <= 8; ++j) {
     const std::string spring = "springs.j" + std::to_string(j) + ".";
     fast.push_back({spring + "stiffness", std::to_string(0.10 * s * s)});
