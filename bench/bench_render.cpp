@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "unfurl/render/frame_renderer.hpp"
+#include "unfurl/render/mesh_file.hpp"
 #include "unfurl/render/gl_context.hpp"
 #include "unfurl/io/png_file.hpp"
 #include "unfurl/sim/scene_file.hpp"

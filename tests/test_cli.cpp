@@ -125,6 +125,31 @@ TEST(Cli, ValidSceneRunsAndWritesTheThreeFiles) {
   EXPECT_EQ(rows, 11);  // 0, 0.01, ..., 0.1
 }
 
+// The libraries the dynamic loader opened for a command (LD_DEBUG=libs).
+std::string loaded_libraries(const std::string& arguments) {
+  return test::run_command("LD_DEBUG=libs " + std::string(UNFURL_BINARY) + " " + arguments).output;
+}
+
+bool loads_gl(const std::string& loader_log) {
+  return std::regex_search(loader_log, std::regex(R"(calling init: \S*lib(EGL|GL|GLX|OSMesa|glfw|X11)\.so)"));
+}
+
+// simulate, generate and the other text commands load no GL library (it
+// cost 20 ms a process); the drawing commands load the graphics module.
+TEST(Cli, SimulateLoadsNoGlLibrary) {
+  const fs::path dir = temp_dir();
+  const std::string simulate = loaded_libraries("simulate pantograph --t-end 0.5 --quiet --out " + (dir / "gl").string());
+  ASSERT_NE(simulate.find("calling init"), std::string::npos) << "LD_DEBUG gave nothing to check";
+  EXPECT_FALSE(loads_gl(simulate));
+  EXPECT_FALSE(loads_gl(loaded_libraries("generate pantograph --stages 4 -o " + (dir / "p4.yaml").string())));
+#ifdef UNFURL_WITH_RENDER
+  const std::string render = loaded_libraries("render pantograph --from 0 --to 0 --out " + (dir / "frames").string());
+  EXPECT_NE(render.find("libunfurl_graphics.so"), std::string::npos);
+  EXPECT_TRUE(loads_gl(render));
+  EXPECT_TRUE(fs::exists(dir / "frames" / "frame_00000.png"));
+#endif
+}
+
 // The z-fold's panels pass through each other and the bus as it unfolds
 // (its hinges are not synchronized and nothing stops them): simulate names
 // each span, and summary.json has them with the closest pair. Its solids

@@ -9,6 +9,7 @@
 #include "png_read.hpp"
 #include "support.hpp"
 #include "unfurl/render/frame_renderer.hpp"
+#include "unfurl/render/mesh_file.hpp"
 #include "unfurl/render/gl_context.hpp"
 #include "unfurl/render/load_arrows.hpp"
 #include "unfurl/sim/elements/latch.hpp"

@@ -15,6 +15,7 @@
 #include "unfurl/render/trajectory_plots.hpp"
 #include "png_read.hpp"
 #include "unfurl/render/gl_context.hpp"
+#include "unfurl/render/mesh_file.hpp"
 #include "unfurl/render/mesh_generator.hpp"
 #include "render_options.hpp"
 #include "support.hpp"

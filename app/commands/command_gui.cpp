@@ -2,7 +2,7 @@
 #include <cstdio>
 
 #include "cli.hpp"
-#include "commands.hpp"
+#include "graphics_functions.hpp"
 #include "gui/gui_app.hpp"
 #include "render_options.hpp"
 #include "scene_options.hpp"
@@ -35,7 +35,7 @@ const char* kHelp =
     "%s";
 }  // namespace
 
-int command_gui(const std::vector<std::string>& argv) {
+int gui_command(const std::vector<std::string>& argv) {
   std::set<std::string> valued = scene_flags();
   valued.insert("--script");
   valued.insert("--study");

@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "cli.hpp"
-#include "commands.hpp"
+#include "graphics_functions.hpp"
 #include "unfurl/render/frame_renderer.hpp"
 #include "unfurl/render/gl_context.hpp"
 #include "interrupt.hpp"
@@ -92,7 +92,7 @@ void remove_stale_frames(const std::string& dir, std::size_t written) {
 
 }  // namespace
 
-int command_render(const std::vector<std::string>& argv) {
+int render_command(const std::vector<std::string>& argv) {
   std::set<std::string> valued = scene_flags();
   valued.insert(
       {"--out", "--fps", "--size", "--from", "--to", "--video", "--camera", "--camera-frame", "--trajectory", "--gl",

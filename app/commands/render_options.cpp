@@ -1,7 +1,6 @@
 #include "render_options.hpp"
 
 #include <cmath>
-#include <filesystem>
 #include <sstream>
 #include <tuple>
 
@@ -58,18 +57,6 @@ std::vector<double> frame_times(const RenderOptions& options, double t_begin, do
   const long count = static_cast<long>(std::floor((t1 - t0) * options.fps + 1e-9)) + 1;
   for (long k = 0; k < count; ++k) times.push_back(t0 + k / options.fps);
   return times;
-}
-
-std::vector<std::string> mesh_directories(const sim::Scene& scene) {
-  std::vector<std::string> dirs;
-  std::error_code ec;
-  if (std::filesystem::is_regular_file(scene.source, ec)) {
-    const std::filesystem::path here = std::filesystem::path(scene.source).parent_path();
-    dirs.push_back(here.empty() ? "." : here.string());
-    dirs.push_back((here / ".." / "meshes").string());
-  }
-  dirs.push_back(render::builtin_mesh_directory());
-  return dirs;
 }
 
 Eigen::AlignedBox3f motion_bounds(const RenderOptions& options, const sim::Scene& scene,

@@ -11,6 +11,7 @@
 #include "unfurl/render/camera_frame.hpp"
 #include "unfurl/render/gl_context.hpp"
 #include "cli.hpp"
+#include "mesh_directories.hpp"
 #include "unfurl/sim/scene.hpp"
 #include "unfurl/render/scene_view.hpp"
 #include "unfurl/sim/trajectory.hpp"
@@ -42,10 +43,6 @@ RenderOptions parse_render_options(const Args& args);
 
 // t = T0 + k / fps for k = 0, 1, ... up to T1, within [t_begin, t_end].
 std::vector<double> frame_times(const RenderOptions& options, double t_begin, double t_end);
-
-// Where the scene's meshes are looked up: beside the scene file, in
-// ../meshes from it, then the built-in assets/meshes.
-std::vector<std::string> mesh_directories(const sim::Scene& scene);
 
 // Everything the run sweeps through, as the view draws it.
 Eigen::AlignedBox3f motion_bounds(const RenderOptions& options, const sim::Scene& scene,

@@ -5,7 +5,7 @@
 
 #include "unfurl/studies/clearance.hpp"
 #ifdef UNFURL_WITH_RENDER
-#include "render_options.hpp"
+#include "mesh_directories.hpp"
 #include "unfurl/render/mesh_file.hpp"
 #endif
 

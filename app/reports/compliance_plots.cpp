@@ -1,7 +1,7 @@
 // The compliance report's plot (needs the renderer).
 #include <map>
 
-#include "compliance_files.hpp"
+#include "graphics_functions.hpp"
 #include "report_plots.hpp"
 
 namespace unfurl::app {
@@ -64,7 +64,7 @@ render::PlotSpec monte_carlo_plot(const ComplianceReport& report) {
 
 }  // namespace
 
-std::vector<std::string> write_compliance_plots(const ComplianceReport& report, const std::string& dir) {
+std::vector<std::string> compliance_plot_files(const ComplianceReport& report, const std::string& dir) {
   std::vector<std::pair<render::PlotSpec, std::string>> plots{{pin_stiffness_plot(report), "pin_stiffness.png"}};
   if (!report.monte_carlo.empty()) plots.emplace_back(monte_carlo_plot(report), "monte_carlo_hinge_force.png");
   return write_plot_pngs(plots, dir);

@@ -3,7 +3,7 @@
 #include <map>
 
 #include "report_plots.hpp"
-#include "scaling_files.hpp"
+#include "graphics_functions.hpp"
 
 namespace unfurl::app {
 
@@ -46,7 +46,7 @@ render::PlotSpec run_plot(const ScalingReport& report) {
 
 }  // namespace
 
-std::vector<std::string> write_scaling_plots(const ScalingReport& report, const std::string& dir) {
+std::vector<std::string> scaling_plot_files(const ScalingReport& report, const std::string& dir) {
   std::vector<std::pair<render::PlotSpec, std::string>> plots;
   if (!report.rhs.empty()) plots.emplace_back(rhs_plot(report), "rhs_per_body.png");
   if (!report.runs.empty()) plots.emplace_back(run_plot(report), "run_wall_time.png");

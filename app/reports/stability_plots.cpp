@@ -4,7 +4,7 @@
 #include <map>
 
 #include "report_plots.hpp"
-#include "stability_files.hpp"
+#include "graphics_functions.hpp"
 
 namespace unfurl::app {
 
@@ -87,7 +87,7 @@ double first_number(const std::string& text, const std::string& after) {
 
 }  // namespace
 
-std::vector<std::string> write_stability_plots(const StabilityReport& report, const std::string& dir) {
+std::vector<std::string> stability_plot_files(const StabilityReport& report, const std::string& dir) {
   std::vector<std::pair<render::PlotSpec, std::string>> plots;
   if (report.has_gains) {
     plots.emplace_back(gains_residual_plot(report.gains), "gains_residuals.png");

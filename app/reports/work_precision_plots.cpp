@@ -1,10 +1,10 @@
 // The work-precision report's plots (needs the renderer).
 #include "report_plots.hpp"
-#include "work_precision_files.hpp"
+#include "graphics_functions.hpp"
 
 namespace unfurl::app {
 
-std::vector<std::string> write_work_precision_plots(const sim::Scene& scene, const studies::WorkPrecision& report,
+std::vector<std::string> work_precision_plot_files(const sim::Scene& scene, const studies::WorkPrecision& report,
                                                     const std::string& dir) {
   std::vector<std::pair<PrecisionMeasure, std::string>> plots{{PrecisionMeasure::angle_error, "work_precision.png"}};
   if (!scene.latches().empty()) {

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "report_plots.hpp"
-#include "study_plots.hpp"
+#include "graphics_functions.hpp"
 
 namespace unfurl::app {
 
@@ -159,7 +159,7 @@ render::PlotSpec failure_outcomes(const io::StudyReport& report, const Outcome& 
 
 }  // namespace
 
-std::vector<std::string> write_study_plots(const io::StudyReport& report, const std::string& dir) {
+std::vector<std::string> study_plot_files(const io::StudyReport& report, const std::string& dir) {
   std::vector<std::pair<render::PlotSpec, std::string>> plots;
   if (deployed_values(report, "deployment_time").size() >= 2)
     plots.emplace_back(histogram(report, "deployment_time", "deployment time (last latch engaged), s"),

@@ -54,4 +54,10 @@ std::vector<MeshFilePart> read_mesh_file(const std::string& path) {
   return parts;
 }
 
+std::string builtin_mesh_directory() {
+  std::error_code ec;
+  if (std::filesystem::is_directory(UNFURL_MESH_DIR, ec)) return UNFURL_MESH_DIR;
+  return UNFURL_INSTALLED_MESH_DIR;
+}
+
 }  // namespace unfurl::render

@@ -2,18 +2,9 @@
 
 #include "gl.hpp"
 
-#include <filesystem>
-
 #include "unfurl/render/mesh_file.hpp"
 
 namespace unfurl::render {
-
-std::string builtin_mesh_directory() {
-  // The source tree's meshes in a build tree, the installed ones otherwise.
-  std::error_code ec;
-  if (std::filesystem::is_directory(UNFURL_MESH_DIR, ec)) return UNFURL_MESH_DIR;
-  return UNFURL_INSTALLED_MESH_DIR;
-}
 
 MeshLibrary::MeshLibrary(std::vector<std::string> directories) : directories_(std::move(directories)) {}
 

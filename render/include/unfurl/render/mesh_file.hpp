@@ -25,4 +25,8 @@ std::string find_mesh_file(const std::string& name, const std::vector<std::strin
 // no triangles.
 std::vector<MeshFilePart> read_mesh_file(const std::string& path);
 
+// The built-in meshes: the source tree's assets/meshes in a build tree, the
+// installed ones otherwise.
+std::string builtin_mesh_directory();
+
 }  // namespace unfurl::render

@@ -41,7 +41,4 @@ class MeshLibrary {
   std::map<std::string, std::unique_ptr<MeshModel>> models_;
 };
 
-// The built-in meshes (assets/meshes of the source tree).
-std::string builtin_mesh_directory();
-
 }  // namespace unfurl::render
