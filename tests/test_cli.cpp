@@ -125,6 +125,20 @@ TEST(Cli, ValidSceneRunsAndWritesTheThreeFiles) {
   EXPECT_EQ(rows, 11);  // 0, 0.01, ..., 0.1
 }
 
+// A tolerance below the right-hand side's round-off is named, with one
+// that is as accurate; the pantograph's own tolerance is not.
+TEST(Cli, AToleranceBelowTheRoundOffIsNamed) {
+  const fs::path dir = temp_dir();
+  const std::string warning = "lies below the right-hand side's round-off";
+  const Outcome tight = run("simulate pantograph --t-end 0.2 --rtol 1e-11 --out " + (dir / "tight").string());
+  ASSERT_EQ(tight.code, 0) << tight.output;
+  EXPECT_NE(tight.output.find(warning), std::string::npos) << tight.output;
+  EXPECT_NE(tight.output.find("rtol 1e-10 is as accurate and cheaper"), std::string::npos) << tight.output;
+  const Outcome own = run("simulate pantograph --t-end 0.2 --out " + (dir / "own").string());
+  ASSERT_EQ(own.code, 0) << own.output;
+  EXPECT_EQ(own.output.find(warning), std::string::npos) << own.output;
+}
+
 // The libraries the dynamic loader opened for a command (LD_DEBUG=libs).
 std::string loaded_libraries(const std::string& arguments) {
   return test::run_command("LD_DEBUG=libs " + std::string(UNFURL_BINARY) + " " + arguments).output;

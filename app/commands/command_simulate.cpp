@@ -168,6 +168,10 @@ void print_summary(const sim::Scene& scene, const sim::RunResult& result, const 
   if (result.jacobian_product_evals > 0)
     std::printf("             %ld evaluations for Jacobian products (gains held, cheaper)\n",
                 result.jacobian_product_evals);
+  if (run.integrator != sim::IntegratorKind::rk4 && std::max(run.rtol, run.atol) < result.roundoff_floor)
+    std::printf("warning      rtol %g lies below the right-hand side's round-off, %.2g (summary.json roundoff_floor):\n"
+                "             steps shrink to fit its noise and buy no accuracy; rtol %g is as accurate and cheaper\n",
+                run.rtol, result.roundoff_floor, std::pow(10.0, std::ceil(std::log10(result.roundoff_floor))));
   if (!scene.latches().empty()) {
     std::printf("latches      %zu of %zu engaged\n", s.latch_times.size(), scene.latches().size());
     for (const auto& [joint, t] : s.latch_times) std::printf("               %-10s t = %.9f s\n", joint.c_str(), t);

@@ -366,6 +366,7 @@ std::string summary_json(const sim::Scene& scene, const sim::RunResult& result, 
   json.value("min_step_after_restart", result.stats.min_step_after_restart);
   json.value("restarts", result.stats.restarts);
   json.value("grazes", result.stats.grazes);
+  json.value("roundoff_floor", result.roundoff_floor);
   json.value("state_size", result.trajectory.layout.size());
   json.value("loop_components", result.trajectory.layout.m);
   if (const auto& c = result.closure) {

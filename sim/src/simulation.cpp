@@ -8,6 +8,7 @@
 #include "dissipation_meter.hpp"
 #include "latch_events.hpp"
 #include "run_monitor.hpp"
+#include "unfurl/sim/roundoff_floor.hpp"
 
 namespace unfurl::sim {
 
@@ -81,6 +82,11 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
   if (observer.on_start) observer.on_start(trajectory);
 
   std::vector<double> y = dynamics.initial_state();
+  {
+    // On a Dynamics of its own, so the run's counts and caches are its own.
+    Dynamics probe(scene);
+    result.roundoff_floor = roundoff_floor(probe, y);
+  }
   std::vector<double> ys(y.size());
   Recorder recorder(dynamics, observer, trajectory);
   const double t0 = 0.0;

@@ -47,6 +47,9 @@ struct RunResult {
   long rhs_calls = 0;
   long jacobian_product_evals = 0;  // Dynamics::jacobian_times' evaluations, held gains
   double wall_time_s = 0;
+  // f's round-off at the start (roundoff_floor.hpp): tolerances below it
+  // cost steps and buy no accuracy.
+  double roundoff_floor = 0;
   RunSettings settings;
   std::optional<ClosureTuning> closure;  // a scene with loops
   Trajectory trajectory;
