@@ -168,10 +168,18 @@ void print_summary(const sim::Scene& scene, const sim::RunResult& result, const 
   if (result.jacobian_product_evals > 0)
     std::printf("             %ld evaluations for Jacobian products (gains held, cheaper)\n",
                 result.jacobian_product_evals);
-  if (run.integrator != sim::IntegratorKind::rk4 && std::max(run.rtol, run.atol) < result.roundoff_floor)
-    std::printf("warning      rtol %g lies below the right-hand side's round-off, %.2g (summary.json roundoff_floor):\n"
-                "             steps shrink to fit its noise and buy no accuracy; rtol %g is as accurate and cheaper\n",
-                run.rtol, result.roundoff_floor, std::pow(10.0, std::ceil(std::log10(result.roundoff_floor))));
+  if (run.integrator != sim::IntegratorKind::rk4) {
+    const double tolerance = std::max(run.rtol, run.atol);
+    const bool at_start = tolerance < result.roundoff_floor, at_end = tolerance < result.roundoff_floor_end;
+    if (at_start || at_end) {
+      const double floor = std::max(result.roundoff_floor, result.roundoff_floor_end);
+      std::printf("warning      rtol %g lies below the right-hand side's round-off %s, %.2g (summary.json\n"
+                  "             roundoff_floor): steps shrink to fit its noise and buy no accuracy there;\n"
+                  "             rtol %g costs fewer for the accuracy the round-off allows\n",
+                  run.rtol, at_start ? "from the start" : "where the run ended", floor,
+                  std::pow(10.0, std::ceil(std::log10(floor))));
+    }
+  }
   if (!scene.latches().empty()) {
     std::printf("latches      %zu of %zu engaged\n", s.latch_times.size(), scene.latches().size());
     for (const auto& [joint, t] : s.latch_times) std::printf("               %-10s t = %.9f s\n", joint.c_str(), t);

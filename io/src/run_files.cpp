@@ -366,7 +366,8 @@ std::string summary_json(const sim::Scene& scene, const sim::RunResult& result, 
   json.value("min_step_after_restart", result.stats.min_step_after_restart);
   json.value("restarts", result.stats.restarts);
   json.value("grazes", result.stats.grazes);
-  json.value("roundoff_floor", result.roundoff_floor);
+  json.begin_object("roundoff_floor").value("start", result.roundoff_floor).value("end", result.roundoff_floor_end);
+  json.end_object();
   json.value("state_size", result.trajectory.layout.size());
   json.value("loop_components", result.trajectory.layout.m);
   if (const auto& c = result.closure) {

@@ -192,6 +192,8 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
   result.peaks = monitor.peaks();
   result.rhs_calls = dynamics.rhs_calls();
   result.jacobian_product_evals = dynamics.jacobian_product_evals();
+  // After the counts: the run's own Dynamics, with its latches as they ended.
+  if (result.status != RunStatus::failed) result.roundoff_floor_end = roundoff_floor(dynamics, y);
   result.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   return result;
 }

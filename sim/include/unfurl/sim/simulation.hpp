@@ -47,9 +47,12 @@ struct RunResult {
   long rhs_calls = 0;
   long jacobian_product_evals = 0;  // Dynamics::jacobian_times' evaluations, held gains
   double wall_time_s = 0;
-  // f's round-off at the start (roundoff_floor.hpp): tolerances below it
-  // cost steps and buy no accuracy.
+  // f's round-off at the start and at the end (roundoff_floor.hpp):
+  // tolerances below it cost steps and buy no accuracy. A latched
+  // mechanism at its branch point has more (the closure's near-null
+  // directions amplify it; pantograph: 1.8e-11 at the start, 1.4e-10 latched).
   double roundoff_floor = 0;
+  double roundoff_floor_end = 0;
   RunSettings settings;
   std::optional<ClosureTuning> closure;  // a scene with loops
   Trajectory trajectory;
