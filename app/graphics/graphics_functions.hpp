@@ -1,8 +1,10 @@
 // What the graphics module (libunfurl_graphics.so: the renderer, the
 // workbench and every plot) gives the command line, which loads it only
-// when a command draws: `simulate`, `study` without plots and the other
-// text commands load no GL library. Both sides are built from this tree
-// together, so the table passes C++ types.
+// when a command draws (render, gui, and report and study for their plots):
+// `simulate`, `generate`, `modes` and `export` load no GL library. Both
+// sides are built from this tree together, so the table passes C++ types;
+// exceptions thrown inside reach the command's handlers because libstdc++
+// matches their types by name.
 #pragma once
 
 #include <string>

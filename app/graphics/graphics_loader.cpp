@@ -1,7 +1,10 @@
 // The command line's side of the graphics module: it is loaded the first
-// time a command draws, found beside the binary that holds this code (the
-// build tree), in ../lib/unfurl from it and in the installed library
-// directory (an install), or where UNFURL_GRAPHICS_MODULE says.
+// time a command draws, from where UNFURL_GRAPHICS_MODULE says (and nowhere
+// else when it is set), or else beside the binary that holds this code (the
+// build tree's command), in ../lib/unfurl from it (an install), in the
+// build tree (its tests and Python module) or in the installed library
+// directory. Every candidate is an absolute path: nothing is looked up
+// relative to the working directory.
 #include <dlfcn.h>
 
 #include <cstdio>
@@ -20,17 +23,31 @@ namespace {
 #ifdef UNFURL_WITH_RENDER
 constexpr const char* kModuleFile = "libunfurl_graphics.so";
 
-std::vector<std::string> module_candidates() {
-  std::vector<std::string> paths;
-  if (const char* chosen = std::getenv("UNFURL_GRAPHICS_MODULE")) paths.emplace_back(chosen);
+// The directory of the binary that holds this code: the executable's
+// through /proc (dladdr gives only argv[0] for it), a shared object's as
+// dladdr names it.
+std::filesystem::path binary_directory() {
+  std::error_code ec;
   Dl_info self{};
-  if (dladdr(reinterpret_cast<void*>(&module_candidates), &self) && self.dli_fname) {
-    const std::filesystem::path here = std::filesystem::path(self.dli_fname).parent_path();
-    paths.push_back((here / kModuleFile).string());
-    paths.push_back((here / ".." / "lib" / "unfurl" / kModuleFile).string());
+  if (dladdr(reinterpret_cast<void*>(&binary_directory), &self) && self.dli_fname &&
+      std::string(self.dli_fname).find('/') != std::string::npos) {
+    const std::filesystem::path object = std::filesystem::canonical(self.dli_fname, ec);
+    const std::filesystem::path executable = std::filesystem::canonical("/proc/self/exe", ec);
+    if (!object.empty() && object != executable) return object.parent_path();
   }
-  paths.emplace_back(UNFURL_GRAPHICS_INSTALLED);
+  const std::filesystem::path executable = std::filesystem::canonical("/proc/self/exe", ec);
+  return ec ? std::filesystem::path() : executable.parent_path();
+}
+
+std::vector<std::string> module_candidates() {
+  if (const char* chosen = std::getenv("UNFURL_GRAPHICS_MODULE")) return {chosen};
+  std::vector<std::string> paths;
+  if (const std::filesystem::path here = binary_directory(); !here.empty()) {
+    paths.push_back((here / kModuleFile).string());
+    paths.push_back((here.parent_path() / "lib" / "unfurl" / kModuleFile).string());
+  }
   paths.emplace_back(UNFURL_GRAPHICS_BUILT);
+  paths.emplace_back(UNFURL_GRAPHICS_INSTALLED);
   return paths;
 }
 
@@ -50,7 +67,7 @@ Loaded load() {
       looked += "\n  " + path;
       continue;
     }
-    void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    void* handle = dlopen(std::filesystem::absolute(path, ec).c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!handle) {
       out.failure = std::string("the graphics module could not be loaded: ") + dlerror();
       return out;

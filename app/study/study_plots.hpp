@@ -1,4 +1,4 @@
-// A study's PNG plots (none without the renderer).
+// A study's PNG plots, drawn by the graphics module (none without it).
 #pragma once
 
 #include <string>

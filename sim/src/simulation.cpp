@@ -82,11 +82,14 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
   if (observer.on_start) observer.on_start(trajectory);
 
   std::vector<double> y = dynamics.initial_state();
+  // On a Dynamics of its own, so the run's counts and caches are its own;
+  // not timed with the run.
+  const auto probe_start = std::chrono::steady_clock::now();
   {
-    // On a Dynamics of its own, so the run's counts and caches are its own.
     Dynamics probe(scene);
     result.roundoff_floor = roundoff_floor(probe, y);
   }
+  const auto probe_time = std::chrono::steady_clock::now() - probe_start;
   std::vector<double> ys(y.size());
   Recorder recorder(dynamics, observer, trajectory);
   const double t0 = 0.0;
@@ -192,9 +195,11 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
   result.peaks = monitor.peaks();
   result.rhs_calls = dynamics.rhs_calls();
   result.jacobian_product_evals = dynamics.jacobian_product_evals();
-  // After the counts: the run's own Dynamics, with its latches as they ended.
+  result.wall_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start - probe_time).count();
+  // After the counts and the time: the run's own Dynamics, with its latches
+  // as they ended.
   if (result.status != RunStatus::failed) result.roundoff_floor_end = roundoff_floor(dynamics, y);
-  result.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   return result;
 }
 

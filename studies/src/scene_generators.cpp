@@ -134,8 +134,8 @@ sim::SceneFile generate_pantograph(int stages) {
   chain_latches(b, N + 2, N + 1, size_factor(N));
   for (int k = 1; k <= N; ++k)
     b.loop("A" + std::to_string(k), "panel_A" + std::to_string(k), "image_A" + std::to_string(k));
-  // The reference pantograph's bandwidth (SCENES.md); larger arrays, whose
-  // latches ring faster, take the automatic one from their own rates.
+  // The reference pantograph's bandwidth (SCENES.md); other sizes, whose
+  // latches ring at other rates, take the automatic one from their own.
   sim::RegulatorSettings regulator;
   if (N == 3) regulator.v_max = 2000;
   b.regulator(regulator);

@@ -21,7 +21,10 @@ class Dynamics;
 // scale per the mechanism's time scale (Dynamics::state_scale() x rate), the
 // measure rtol and atol are in, and the root mean square over components
 // taken, as the integrators' error norms take it; the largest over the
-// directions. 0 where f cannot be evaluated there.
+// directions. Independent errors of standard deviation sigma give second
+// differences of sqrt(6) sigma, so this is about 2.5 sigma: a floor with a
+// margin, which is where the measured step counts jump. 0 where f cannot
+// be evaluated there.
 double roundoff_floor(Dynamics& dynamics, const std::vector<double>& y);
 
 }  // namespace unfurl::sim
