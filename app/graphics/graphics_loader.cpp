@@ -28,15 +28,14 @@ constexpr const char* kModuleFile = "libunfurl_graphics.so";
 // dladdr names it.
 std::filesystem::path binary_directory() {
   std::error_code ec;
+  const std::filesystem::path executable = std::filesystem::canonical("/proc/self/exe", ec);
   Dl_info self{};
   if (dladdr(reinterpret_cast<void*>(&binary_directory), &self) && self.dli_fname &&
       std::string(self.dli_fname).find('/') != std::string::npos) {
     const std::filesystem::path object = std::filesystem::canonical(self.dli_fname, ec);
-    const std::filesystem::path executable = std::filesystem::canonical("/proc/self/exe", ec);
     if (!object.empty() && object != executable) return object.parent_path();
   }
-  const std::filesystem::path executable = std::filesystem::canonical("/proc/self/exe", ec);
-  return ec ? std::filesystem::path() : executable.parent_path();
+  return executable.empty() ? executable : executable.parent_path();
 }
 
 std::vector<std::string> module_candidates() {
