@@ -368,6 +368,10 @@ std::string summary_json(const sim::Scene& scene, const sim::RunResult& result, 
   json.value("grazes", result.stats.grazes);
   json.begin_object("roundoff_floor").value("start", result.roundoff_floor).value("end", result.roundoff_floor_end);
   json.end_object();
+  json.begin_array("tolerance_raises");
+  for (const sim::ToleranceRaise& r : result.tolerance_raises)
+    json.begin_object().value("t", r.t).value("roundoff_floor", r.floor).value("rtol", r.rtol).value("atol", r.atol).end_object();
+  json.end_array();
   json.value("state_size", result.trajectory.layout.size());
   json.value("loop_components", result.trajectory.layout.m);
   if (const auto& c = result.closure) {

@@ -13,13 +13,14 @@ ArkodeIntegrator::ArkodeIntegrator(IntegratorKind kind, Dynamics& dynamics, cons
     : api_(kind == IntegratorKind::arkode_erk ? erk_api() : dirk_api()),
       dynamics_(dynamics),
       y_(y0, ctx_),
+      rtol_(settings.rtol),
       atol_(absolute_tolerances(dynamics, settings.atol), ctx_),
       scratch_(y0, ctx_) {
   mem_ = api_.create(sundials::rhs, t0, y_, ctx_);
   sundials::check_ptr(mem_, "ARKODE create");
   check(api_.set_user_data(mem_, &dynamics_), "SetUserData");
   check(api_.set_err_handler(mem_, sundials::capture_error, &last_error_), "SetErrHandlerFn");
-  check(api_.sv_tolerances(mem_, settings.rtol, atol_), "SVtolerances");
+  check(api_.sv_tolerances(mem_, rtol_, atol_), "SVtolerances");
   check(api_.set_max_num_steps(mem_, -1), "SetMaxNumSteps");
   if (api_.implicit) {
     if (uses_krylov(settings, dynamics.size())) {
@@ -92,6 +93,14 @@ void ArkodeIntegrator::restart(double t, const double* y) {
   check(api_.reinit(mem_, sundials::rhs, t, y_), "ReInit");
   t_stop_set_ = -1;
   choose_jacobian();
+}
+
+bool ArkodeIntegrator::set_tolerances(double rtol, double atol) {
+  rtol_ = rtol;
+  const std::vector<double> scaled = absolute_tolerances(dynamics_, atol);
+  std::copy(scaled.begin(), scaled.end(), atol_.data());
+  check(api_.sv_tolerances(mem_, rtol_, atol_), "SVtolerances");
+  return true;
 }
 
 void ArkodeIntegrator::choose_jacobian() {

@@ -13,6 +13,7 @@ CvodeIntegrator::CvodeIntegrator(IntegratorKind kind, Dynamics& dynamics, const 
                                  double t0, const std::vector<double>& y0)
     : dynamics_(dynamics),
       y_(y0, ctx_),
+      rtol_(settings.rtol),
       atol_(absolute_tolerances(dynamics, settings.atol), ctx_),
       scratch_(y0, ctx_) {
   const bool bdf = kind == IntegratorKind::cvode_bdf;
@@ -21,7 +22,7 @@ CvodeIntegrator::CvodeIntegrator(IntegratorKind kind, Dynamics& dynamics, const 
   check(CVodeInit(mem_, sundials::rhs, t0, y_), "CVodeInit");
   check(CVodeSetUserData(mem_, &dynamics_), "CVodeSetUserData");
   check(CVodeSetErrHandlerFn(mem_, sundials::capture_error, &last_error_), "CVodeSetErrHandlerFn");
-  check(CVodeSVtolerances(mem_, settings.rtol, atol_), "CVodeSVtolerances");
+  check(CVodeSVtolerances(mem_, rtol_, atol_), "CVodeSVtolerances");
   check(CVodeSetMaxNumSteps(mem_, -1), "CVodeSetMaxNumSteps");
   if (bdf && uses_krylov(settings, dynamics.size())) {
     krylov_.emplace(y_, ctx_);
@@ -99,6 +100,14 @@ void CvodeIntegrator::restart(double t, const double* y) {
   check(CVodeReInit(mem_, t, y_), "CVodeReInit");
   t_stop_set_ = -1;
   choose_jacobian();
+}
+
+bool CvodeIntegrator::set_tolerances(double rtol, double atol) {
+  rtol_ = rtol;
+  const std::vector<double> scaled = absolute_tolerances(dynamics_, atol);
+  std::copy(scaled.begin(), scaled.end(), atol_.data());
+  check(CVodeSVtolerances(mem_, rtol_, atol_), "CVodeSVtolerances");
+  return true;
 }
 
 void CvodeIntegrator::choose_jacobian() {

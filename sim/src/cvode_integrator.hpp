@@ -22,6 +22,7 @@ class CvodeIntegrator : public Integrator {
   void interpolate(double t, double* y) override;
   void interpolate_rate(double t, double* ydot) override;
   void restart(double t, const double* y) override;
+  bool set_tolerances(double rtol, double atol) override;
   std::vector<int> roots() override;
   SolverStats stats() const override;
   double current_step() const override;
@@ -36,6 +37,7 @@ class CvodeIntegrator : public Integrator {
   Dynamics& dynamics_;
   sundials::Context ctx_;
   sundials::Vector y_;
+  double rtol_;
   sundials::Vector atol_;
   sundials::Vector scratch_;
   std::optional<sundials::DenseSolver> dense_;

@@ -607,7 +607,7 @@ TorqueMarginFactors SceneReader::read_torque_margin(const YAML::Node& node) cons
 RunSettings SceneReader::read_run(const YAML::Node& node) const {
   check_keys(node,
              {"t_end", "integrator", "linear_solver", "rtol", "atol", "dt", "sample", "max_closure", "event_window",
-              "max_steps", "max_samples", "max_wall_time"},
+              "max_steps", "max_samples", "max_wall_time", "roundoff_guard"},
              "run");
   RunSettings run;
   if (const YAML::Node integrator = node["integrator"]) {
@@ -638,6 +638,7 @@ RunSettings SceneReader::read_run(const YAML::Node& node) const {
   run.event_window = number_or(node, "event_window", run.event_window, "run");
   run.max_wall_time = number_or(node, "max_wall_time", run.max_wall_time, "run");
   if (node["max_steps"]) run.max_steps = count(node["max_steps"], "run.max_steps", 1, kMostSteps);
+  if (node["roundoff_guard"]) run.roundoff_guard = flag(node["roundoff_guard"], "run.roundoff_guard");
   if (node["max_samples"]) run.max_samples = count(node["max_samples"], "run.max_samples", 1, kMostSteps);
   return run;
 }

@@ -235,6 +235,7 @@ void run(std::ostream& out, const RunSettings& r) {
       << ", max_closure: " << format_number(r.max_closure) << ", event_window: " << format_number(r.event_window)
       << ", max_steps: " << r.max_steps << ", max_samples: " << r.max_samples;
   if (r.max_wall_time > 0) out << ", max_wall_time: " << format_number(r.max_wall_time);
+  if (!r.roundoff_guard) out << ", roundoff_guard: false";
   out << "}\n";
 }
 

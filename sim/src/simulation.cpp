@@ -7,8 +7,8 @@
 
 #include "dissipation_meter.hpp"
 #include "latch_events.hpp"
+#include "roundoff_guard.hpp"
 #include "run_monitor.hpp"
-#include "unfurl/sim/roundoff_floor.hpp"
 
 namespace unfurl::sim {
 
@@ -82,14 +82,15 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
   if (observer.on_start) observer.on_start(trajectory);
 
   std::vector<double> y = dynamics.initial_state();
-  // On a Dynamics of its own, so the run's counts and caches are its own;
-  // not timed with the run.
-  const auto probe_start = std::chrono::steady_clock::now();
-  {
-    Dynamics probe(scene);
-    result.roundoff_floor = roundoff_floor(probe, y);
-  }
-  const auto probe_time = std::chrono::steady_clock::now() - probe_start;
+  // Its probes are not timed with the run.
+  auto probe_time = std::chrono::steady_clock::duration::zero();
+  auto timed_probe = [&probe_time](auto probe) {
+    const auto start = std::chrono::steady_clock::now();
+    probe();
+    probe_time += std::chrono::steady_clock::now() - start;
+  };
+  RoundoffGuard guard(scene, settings.rtol, settings.atol);
+  timed_probe([&] { result.roundoff_floor = guard.floor_at_start(y); });
   std::vector<double> ys(y.size());
   Recorder recorder(dynamics, observer, trajectory);
   const double t0 = 0.0;
@@ -170,6 +171,12 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
       ++restarts;
     }
     t = t_done;
+    bool raised = false;
+    if (settings.roundoff_guard) timed_probe([&] { raised = guard.step_taken(t, y, dynamics, *integrator); });
+    if (raised) {
+      integrator->restart(t, y.data());
+      monitor.restarted();
+    }
     if (!check_step_end(t)) break;
     if (t < settings.t_end && settings.max_wall_time > 0 &&
         std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count() > settings.max_wall_time) {
@@ -197,9 +204,9 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
   result.jacobian_product_evals = dynamics.jacobian_product_evals();
   result.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start - probe_time).count();
-  // After the counts and the time: the run's own Dynamics, with its latches
-  // as they ended.
-  if (result.status != RunStatus::failed) result.roundoff_floor_end = roundoff_floor(dynamics, y);
+  // With the latches as they ended.
+  if (result.status != RunStatus::failed) result.roundoff_floor_end = guard.floor_at(y, dynamics);
+  result.tolerance_raises = guard.raises();
   return result;
 }
 

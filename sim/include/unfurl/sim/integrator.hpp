@@ -62,6 +62,11 @@ class Integrator {
   virtual std::vector<int> roots() = 0;
   // Counters; min_step and restarts are the simulation's to fill.
   virtual SolverStats stats() const = 0;
+  // Tolerances from the next restart on: rtol, and atol in the state's own
+  // scales as absolute_tolerances() (SUNDIALS sets up its error weights
+  // only when it starts). False for a method without error control (the
+  // fixed-step RK4).
+  virtual bool set_tolerances(double /*rtol*/, double /*atol*/) { return false; }
   // The step it will try next, and the one just taken.
   virtual double current_step() const = 0;
   virtual double last_step() const = 0;

@@ -46,6 +46,11 @@ struct RunSettings {
   // Latches whose roots follow the first within this many seconds engage in
   // one restart, each at its own root (latch_events.hpp).
   double event_window = 1e-6;
+  // Whether an adaptive run raises its tolerances where its Newton
+  // iteration keeps failing on the right-hand side's round-off
+  // (roundoff_guard.hpp in the sources); off, it holds them however many
+  // steps that takes (a reference solution, a work-precision study).
+  bool roundoff_guard = true;
 };
 
 }  // namespace unfurl::sim

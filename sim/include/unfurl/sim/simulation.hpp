@@ -12,6 +12,7 @@
 #include "unfurl/sim/integrator.hpp"
 #include "unfurl/sim/loads.hpp"
 #include "unfurl/sim/scene.hpp"
+#include "unfurl/sim/tolerance_raise.hpp"
 #include "unfurl/sim/trajectory.hpp"
 
 namespace unfurl::sim {
@@ -53,6 +54,9 @@ struct RunResult {
   // directions amplify it; pantograph: 1.8e-11 at the start, 1.4e-10 latched).
   double roundoff_floor = 0;
   double roundoff_floor_end = 0;
+  // Where atol was raised above the floor (roundoff_guard.hpp), in order;
+  // settings keeps the tolerances asked for.
+  std::vector<ToleranceRaise> tolerance_raises;
   RunSettings settings;
   std::optional<ClosureTuning> closure;  // a scene with loops
   Trajectory trajectory;

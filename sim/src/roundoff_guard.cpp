@@ -1,0 +1,33 @@
+#include "roundoff_guard.hpp"
+
+#include <algorithm>
+
+namespace unfurl::sim {
+
+RoundoffGuard::RoundoffGuard(const Scene& scene, double rtol, double atol)
+    : probe_(scene), rtol_(rtol), atol_(atol) {}
+
+double RoundoffGuard::floor_at(const std::vector<double>& y, const Dynamics& run) {
+  probe_.latch_state() = run.latch_state();
+  return roundoff_floor(probe_, y);
+}
+
+bool RoundoffGuard::step_taken(double t, const std::vector<double>& y, const Dynamics& run, Integrator& integrator) {
+  const SolverStats s = integrator.stats();
+  if (s.nonlinear_failures - failures_seen_ < kFailures) return false;
+  const bool often = s.steps - steps_seen_ <= kSteps;
+  failures_seen_ = s.nonlinear_failures;
+  steps_seen_ = s.steps;
+  if (!often) return false;
+  const double floor = floor_at(y, run);
+  // Doubled at most at a time: the least raise that stops the failures.
+  const double raised = std::min(floor * kMargin, 2 * std::max(rtol_, atol_));
+  if (!above_tolerance(floor) || !integrator.set_tolerances(std::max(rtol_, raised), std::max(atol_, raised)))
+    return false;
+  rtol_ = std::max(rtol_, raised);
+  atol_ = std::max(atol_, raised);
+  raises_.push_back({t, floor, rtol_, atol_});
+  return true;
+}
+
+}  // namespace unfurl::sim
