@@ -22,10 +22,10 @@ bool RoundoffGuard::step_taken(double t, const std::vector<double>& y, const Dyn
   const double floor = floor_at(y, run);
   // Doubled at most at a time: the least raise that stops the failures.
   const double raised = std::min(floor * kMargin, 2 * std::max(rtol_, atol_));
-  if (!above_tolerance(floor) || !integrator.set_tolerances(std::max(rtol_, raised), std::max(atol_, raised)))
-    return false;
-  rtol_ = std::max(rtol_, raised);
-  atol_ = std::max(atol_, raised);
+  const double rtol = std::max(rtol_, raised), atol = std::max(atol_, raised);
+  if (!above_tolerance(floor) || !integrator.set_tolerances(rtol, atol)) return false;
+  rtol_ = rtol;
+  atol_ = atol;
   raises_.push_back({t, floor, rtol_, atol_});
   return true;
 }

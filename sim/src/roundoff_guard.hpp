@@ -1,15 +1,16 @@
 // Keeps an adaptive integrator from chasing the right-hand side's
-// round-off. Where the Newton iteration keeps failing (a tenth of the steps
-// or more, ten failures at least), the floor of f's round-off (roundoff_floor.hpp) is measured at that state
-// with the run's latches; if it reaches the absolute tolerance, atol is
-// raised to kMargin times it from there on, and the raise is recorded.
-// Below the floor no step size fits the noise inside the error test: the
-// pantograph latched at its branch point took 33,332 steps (10,904 Newton
-// failures) at atol 1e-10 against a floor of up to 1.7e-10, and 2,045 at
-// atol 1.4e-10. Runs whose Newton iterations converge are not measured
-// and run as they did: the four-bar at rtol 1e-8, whose floor samples
-// reach 1.1e-8 but whose Newton iteration fails once in 400 steps, keeps
-// its gap of 6.4e-10 m over 200 s (2.2e-9 m with its atol raised).
+// round-off. Where the Newton iteration keeps failing (kFailures failures
+// within kSteps steps), the floor of f's round-off (roundoff_floor.hpp) is
+// measured at that state with the run's latches; if kMargin times it lies
+// above the larger of rtol and atol, both are raised to one value, the
+// least that stops the failures (at most twice the larger, never above
+// kMargin times the floor), and the raise is recorded. Below the floor no
+// step fits the noise inside the error test: the pantograph latched at its
+// branch point took 33,332 steps (10,904 Newton failures) at atol 1e-12
+// against a floor of up to 1.7e-10. Runs whose Newton iterations converge
+// are not measured and run as they did: the four-bar at rtol 1e-8, whose
+// floor samples reach 1.1e-8 but whose Newton iteration fails once in 400
+// steps, keeps its gap of 6.4e-10 m over 200 s (2.2e-9 m when raised).
 #pragma once
 
 #include <algorithm>
@@ -41,7 +42,7 @@ class RoundoffGuard {
   double floor_at_start(const std::vector<double>& y) { return roundoff_floor(probe_, y); }
 
   // After a step that ended at (t, y), with the run's latches in `run`;
-  // true where it raised atol (the integrator is to restart there).
+  // true where it raised the tolerances (the integrator is to restart there).
   bool step_taken(double t, const std::vector<double>& y, const Dynamics& run, Integrator& integrator);
 
   // The floor at y with the run's latches (the end of a run).

@@ -168,9 +168,7 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
       ++restarts;
     }
     t = t_done;
-    bool raised = false;
-    if (settings.roundoff_guard && t < settings.t_end) raised = guard.step_taken(t, y, dynamics, *integrator);
-    if (raised) {
+    if (settings.roundoff_guard && t < settings.t_end && guard.step_taken(t, y, dynamics, *integrator)) {
       integrator->restart(t, y.data());
       monitor.restarted();
     }

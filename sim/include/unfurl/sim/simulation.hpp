@@ -54,7 +54,7 @@ struct RunResult {
   // directions amplify it; pantograph: 1.8e-11 at the start, 1.4e-10 latched).
   double roundoff_floor = 0;
   double roundoff_floor_end = 0;
-  // Where atol was raised above the floor (roundoff_guard.hpp), in order;
+  // Where the tolerances were raised to the floor (roundoff_guard.hpp), in order;
   // settings keeps the tolerances asked for.
   std::vector<ToleranceRaise> tolerance_raises;
   RunSettings settings;
