@@ -34,7 +34,7 @@ double relative_error(const sim::Scene& scene, bool along_q) {
   const Probe p = probe(dynamics, along_q);
   const std::size_t n = p.y.size();
   std::vector<double> Jv(n), plus(n), minus(n), y_plus(n), y_minus(n);
-  EXPECT_TRUE(dynamics.jacobian_times(p.y.data(), p.v.data(), Jv.data()));
+  EXPECT_TRUE(dynamics.jacobian_times(0, p.y.data(), p.v.data(), Jv.data()));
   const double h = 1e-6;
   for (std::size_t k = 0; k < n; ++k) y_plus[k] = p.y[k] + h * p.v[k], y_minus[k] = p.y[k] - h * p.v[k];
   dynamics.rhs(0, y_plus.data(), plus.data());
@@ -72,8 +72,8 @@ TEST(JacobianTimes, RepeatsAtOneBaseAndLeavesTheRightHandSideExact) {
   const Probe p = probe(dynamics);
   const std::size_t n = p.y.size();
   std::vector<double> first(n), again(n), f(n), f_fresh(n);
-  dynamics.jacobian_times(p.y.data(), p.v.data(), first.data());
-  dynamics.jacobian_times(p.y.data(), p.v.data(), again.data());
+  dynamics.jacobian_times(0, p.y.data(), p.v.data(), first.data());
+  dynamics.jacobian_times(0, p.y.data(), p.v.data(), again.data());
   EXPECT_EQ(first, again);
   dynamics.rhs(0, p.y.data(), f.data());
   fresh.rhs(0, p.y.data(), f_fresh.data());

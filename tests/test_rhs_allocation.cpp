@@ -62,10 +62,10 @@ long allocations_in_jacobian_times(const sim::Scene& scene) {
   std::vector<double> y = dynamics.initial_state(), v(y.size(), 1.0), Jv(y.size());
   for (double& x : y) x += 1e-3;
   dynamics.rhs(0, y.data(), Jv.data());
-  dynamics.jacobian_times(y.data(), v.data(), Jv.data());  // warm-up
+  dynamics.jacobian_times(0, y.data(), v.data(), Jv.data());  // warm-up
   const long before = allocations.load();
   for (int k = 0; k < 10; ++k) {
-    dynamics.jacobian_times(y.data(), v.data(), Jv.data());
+    dynamics.jacobian_times(0, y.data(), v.data(), Jv.data());
     v[k % v.size()] += 1;
   }
   return allocations.load() - before;
@@ -104,6 +104,15 @@ TEST(RightHandSide, BallAndPlanarJointsAllocateNothing) {
 TEST(RightHandSide, JacobianProductsAllocateNothing) {
   EXPECT_EQ(allocations_in_jacobian_times(test::scene_file("pantograph")), 0);
   EXPECT_EQ(allocations_in_jacobian_times(test::scene_file("pantograph", {{"regulator.solver", "sparse"}})), 0);
+}
+
+// The drivers' rates and accelerations, in the right-hand side and its
+// Jacobian products.
+TEST(RightHandSide, ADrivenCrankAllocatesNothing) {
+  const sim::Scene fourbar = test::scene_file(
+      "fourbar", {{"drivers", "[{joint: crank_pivot, profile: spin_up, amount: 3, duration: 1}]"}});
+  EXPECT_EQ(allocations_in_rhs(fourbar, true), 0);
+  EXPECT_EQ(allocations_in_jacobian_times(fourbar), 0);
 }
 
 TEST(RightHandSide, GravitySceneAllocatesNothing) {

@@ -13,7 +13,7 @@ namespace {
 
 double floor_of(const sim::Scene& scene) {
   sim::Dynamics dynamics(scene);
-  return sim::roundoff_floor(dynamics, dynamics.initial_state());
+  return sim::roundoff_floor(dynamics, 0, dynamics.initial_state());
 }
 
 TEST(RoundoffFloor, TreesHaveNone) { EXPECT_LT(floor_of(test::scene_file("zfold")), 1e-15); }

@@ -213,6 +213,7 @@ void print_summary(const sim::Scene& scene, const sim::RunResult& result, const 
   print_clearance(s);
   std::printf("energy       %.9g J at t = 0, %.9g J at t = %g s, %.9g J dissipated\n", s.energy_initial, s.energy_final,
               s.t_reached, s.energy_dissipated);
+  if (s.energy_driven) std::printf("             %.9g J put in by the drivers\n", *s.energy_driven);
   if (s.free_bus)
     std::printf("bus          turned %.4g rad, peak rate %.4g rad/s; momentum drift %.2g (linear), %.2g (angular)\n",
                 s.free_bus->final_attitude_change, s.free_bus->peak_rate, s.free_bus->linear_momentum_drift,

@@ -1,4 +1,5 @@
 #include "unfurl/io/run_columns.hpp"
+#include "unfurl/sim/elements/joint_driver.hpp"
 
 #include <limits>
 
@@ -97,6 +98,10 @@ std::vector<RunColumn> trajectory_columns(const sim::Scene& scene, const sim::Tr
   add(
       out, "energy_dissipated", "J", "", [](const sim::Sample& s) { return s.energy.dissipated; },
       [](sim::Sample& s, double x) { s.energy.dissipated = x; });
+  if (!scene.elements_of<sim::JointDriver>().empty())
+    add(
+        out, "energy_driven", "J", "", [](const sim::Sample& s) { return s.energy.driven; },
+        [](sim::Sample& s, double x) { s.energy.driven = x; });
   return out;
 }
 

@@ -317,6 +317,7 @@ void write_summary_units(JsonWriter& json, const sim::Scene& scene, const sim::R
           break;
         }
   json.value("energy_initial", "J").value("energy_final", "J").value("energy_dissipated", "J");
+  if (summary.energy_driven) json.value("energy_driven", "J");
   json.value("torque_margin", "motorization factors: none; torque_margin = motorization factor - 1; q as q.J");
   json.value("clearance", "distance m, times s");
   json.begin_object("final_q");
@@ -434,6 +435,7 @@ std::string summary_json(const sim::Scene& scene, const sim::RunResult& result, 
   json.value("energy_initial", summary.energy_initial);
   json.value("energy_final", summary.energy_final);
   json.value("energy_dissipated", summary.energy_dissipated);
+  if (summary.energy_driven) json.value("energy_driven", *summary.energy_driven);
   json.begin_object("final_q");
   for (const auto& [joint, q] : summary.final_q) json.value(joint, q);
   json.end_object();

@@ -121,8 +121,15 @@ void add_curves(PlotSpec& spec, PlotKind kind, const sim::Scene& scene, const si
         added.push_back(series(tr, "regulator", palette(5), [](const sim::Sample& s) { return s.energy.regulator; }));
       added.push_back(series(tr, "dissipated", palette(6), [](const sim::Sample& s) { return s.energy.dissipated; }));
       added.back().dashed = true;
-      added.push_back(
-          series(tr, "total + dissipated", palette(7), [](const sim::Sample& s) { return s.energy.balance(); }));
+      if (std::none_of(tr.samples.begin(), tr.samples.end(), [](const sim::Sample& s) { return s.energy.driven != 0; })) {
+        added.push_back(
+            series(tr, "total + dissipated", palette(7), [](const sim::Sample& s) { return s.energy.balance(); }));
+      } else {
+        added.push_back(series(tr, "driven", palette(8), [](const sim::Sample& s) { return s.energy.driven; }));
+        added.back().dashed = true;
+        added.push_back(series(tr, "total + dissipated - driven", palette(7),
+                               [](const sim::Sample& s) { return s.energy.balance(); }));
+      }
       added.back().dashed = true;
       break;
     case PlotKind::sensors: {

@@ -54,6 +54,10 @@ Dynamics::Dynamics(const Scene& scene)
       latch_of_element_[k] = static_cast<int>(latch_elements_.size());
       latch_elements_.push_back(k);
     }
+    if (const auto* driver = dynamic_cast<const JointDriver*>(&e)) {
+      drivers_.push_back(driver);
+      driver_elements_.push_back(k);
+    }
   }
   values_.resize(most_columns);
   if (dissipation_needs_poses) {
@@ -122,12 +126,17 @@ std::vector<double> Dynamics::initial_state() {
   if (!scene_.p0.empty()) {
     std::copy(scene_.p0.begin(), scene_.p0.end(), y.begin() + layout_.p());
   } else {
-    // p = A^T mu with mu the subtree momenta of the given joint rates.
+    // p = A^T mu with mu the subtree momenta of the given joint rates (a
+    // driven joint's the driver's).
     configure(scene_.q0.data());
-    body_velocities(scene_.dq0.data(), true);
+    drive(0);
+    std::vector<double> dq0 = scene_.dq0;
+    for (const JointDriver* d : drivers_) dq0[model.velocity_of(d->joint).value] = driven_rate_[model.velocity_of(d->joint).value];
+    body_velocities(dq0.data(), true);
     for (int i = 0; i < model.size(); ++i) F_[i] = model.bodies[i].spatial_mass() * v_[i];
     sweep_.generalized_forces(F_, y.data() + layout_.p());
   }
+  for (const JointDriver* d : drivers_) y[layout_.p() + model.velocity_of(d->joint).value] = 0;
   if (regulator_ && closure_rank_ && regulator_->uses_feedforward()) start_integral_at_rest(y.data());
   if (closure_rank_) closure_rank_->forget();
   return y;
@@ -135,7 +144,7 @@ std::vector<double> Dynamics::initial_state() {
 
 void Dynamics::start_integral_at_rest(double* y) {
   // evaluate() leaves the loops' acceleration d under every other force.
-  if (!evaluate(y, ydot_.data(), Regulator::Gains::current)) return;
+  if (!evaluate(0, y, ydot_.data(), Regulator::Gains::current)) return;
   const LoopMatrix& W = regulator_->mobility(sweep_);
   closure_rank_->compute(W);
   closure_rank_->rigid_loop_forces(d_.data(), lambda_.data());
@@ -185,12 +194,21 @@ double Dynamics::dissipation(const double* q, const double* q_dot) {
   return P;
 }
 
-bool Dynamics::rhs(double, const double* y, double* ydot) {
+bool Dynamics::rhs(double t, const double* y, double* ydot) {
   ++rhs_calls_;
-  return evaluate(y, ydot, Regulator::Gains::current);
+  return evaluate(t, y, ydot, Regulator::Gains::current);
 }
 
-bool Dynamics::evaluate(const double* y, double* ydot, Regulator::Gains gains) {
+void Dynamics::drive(double t) {
+  for (const JointDriver* d : drivers_) {
+    const int c = scene_.model.velocity_of(d->joint).value;
+    const JointDriver::Motion m = d->at(t);
+    driven_rate_[c] = m.rate;
+    driven_acceleration_[c] = m.acceleration;
+  }
+}
+
+bool Dynamics::evaluate(double t, const double* y, double* ydot, Regulator::Gains gains) {
   const Model& model = scene_.model;
   const StateLayout& L = layout_;
   const double* q = y + L.q();
@@ -199,8 +217,11 @@ bool Dynamics::evaluate(const double* y, double* ydot, Regulator::Gains gains) {
   double* dp = ydot + L.p();
 
   configure(q);
-  sweep_.bias(p, phi_);
-  sweep_.velocities(p, phi_, model.base_velocity, w_.data(), v_);
+  const double* driven_rate = drivers_.empty() ? nullptr : driven_rate_.data();
+  const double* driven_acceleration = drivers_.empty() ? nullptr : driven_acceleration_.data();
+  if (driven_rate) drive(t);
+  sweep_.bias(p, phi_, driven_rate);
+  sweep_.velocities(p, phi_, model.base_velocity, w_.data(), v_, driven_rate);
   sweep_.momenta(v_, phi_, mu_);
   position_rates(model, q, w_.data(), dq);
   const double* w = w_.data();
@@ -212,7 +233,7 @@ bool Dynamics::evaluate(const double* y, double* ydot, Regulator::Gains gains) {
     regulator_->residual_rate(v_, g_dot_.data());
     if (regulator_->uses_feedforward()) {
       // d = eps a under every force but the loops'.
-      sweep_.accelerations(v_, w, F_, Q_joint_.data(), bias_, a_, ddq_.data());
+      sweep_.accelerations(v_, w, F_, Q_joint_.data(), bias_, a_, ddq_.data(), driven_acceleration);
       regulator_->residual_rate(a_, d_.data());
     }
     if (gains == Regulator::Gains::current && !regulator_->factorize(sweep_, configuration_key_)) return false;
@@ -222,28 +243,32 @@ bool Dynamics::evaluate(const double* y, double* ydot, Regulator::Gains gains) {
   sweep_.generalized_forces(F_, Q_.data());
   sweep_.gyroscopic(v_, mu_, w, dp);
   for (int c = 0; c < L.nv; ++c) dp[c] += Q_[c] + Q_joint_[c];
+  for (const JointDriver* d : drivers_) dp[model.velocity_of(d->joint).value] = 0;
 
   for (int k = 0; k < L.size(); ++k)
     if (!std::isfinite(ydot[k])) return false;
   return true;
 }
 
-bool Dynamics::jacobian_times(const double* y, const double* v, double* Jv) {
+bool Dynamics::jacobian_times(double t, const double* y, const double* v, double* Jv) {
   const int n = size();
   // The held gains are the last factorization's: a new base when anything
-  // has been factored since, as when y or the latches changed.
+  // has been factored since, as when y, t (with drivers) or the latches
+  // changed.
   const bool new_base = jv_engaged_ != latch_state_.engaged_count() || !std::equal(y, y + n, jv_y_.begin()) ||
+                        (!drivers_.empty() && t != jv_t_) ||
                         (regulator_ && regulator_->factorized_configuration() != jv_gains_key_);
   bool ok = true;
   if (new_base) {
     std::copy_n(y, n, jv_y_.begin());
+    jv_t_ = t;
     jv_engaged_ = latch_state_.engaged_count();
     if (regulator_) {
       configure(y + layout_.q());
       ok = regulator_->factorize(sweep_, configuration_key_);
       jv_gains_key_ = configuration_key_;
     }
-    ok = ok && evaluate(y, jv_f_.data(), Regulator::Gains::held);
+    ok = ok && evaluate(t, y, jv_f_.data(), Regulator::Gains::held);
     ++jacobian_product_evals_;
   }
   // Half the digits for the step, half for the difference; sizes measured
@@ -254,7 +279,7 @@ bool Dynamics::jacobian_times(const double* y, const double* v, double* Jv) {
     const double sigma =
         std::sqrt(std::numeric_limits<double>::epsilon()) * std::max(1.0, y_.cwiseQuotient(s_).norm()) / v_norm;
     Eigen::Map<Eigen::VectorXd>(jv_y1_.data(), n) = y_ + sigma * v_;
-    ok = evaluate(jv_y1_.data(), Jv, Regulator::Gains::held);
+    ok = evaluate(t, jv_y1_.data(), Jv, Regulator::Gains::held);
     ++jacobian_product_evals_;
     for (int k = 0; k < n; ++k) Jv[k] = (Jv[k] - jv_f_[k]) / sigma;
   } else if (ok) {
@@ -270,10 +295,11 @@ void Dynamics::switching_functions(const double* y, double* values) const {
     values[l] = latch_state_.switching_value(l, q[scene_.model.position_of(latches_[l]->joint)]);
 }
 
-bool Dynamics::loads(double, const double* y, Loads& out, std::vector<ClosureError>* closure, At at) {
+bool Dynamics::loads(double t, const double* y, Loads& out, std::vector<ClosureError>* closure, At at) {
   const Model& model = scene_.model;
   const StateLayout& L = layout_;
-  if (!evaluate(y, ydot_.data(), Regulator::Gains::current)) return false;
+  if (!evaluate(t, y, ydot_.data(), Regulator::Gains::current)) return false;
+  const double* driven_acceleration = drivers_.empty() ? nullptr : driven_acceleration_.data();
   const double* q = y + L.q();
   const double* w = w_.data();
   out.element.assign(columns_.size(), 0.0);
@@ -291,7 +317,7 @@ bool Dynamics::loads(double, const double* y, Loads& out, std::vector<ClosureErr
   out.closure_rank = -1;
   if (regulator_ && closure_rank_) {
     if (!regulator_->uses_feedforward()) {  // else evaluate() left d in d_
-      sweep_.accelerations(v_, w, F_, Q_joint_.data(), bias_, a_, ddq_.data());
+      sweep_.accelerations(v_, w, F_, Q_joint_.data(), bias_, a_, ddq_.data(), driven_acceleration);
       regulator_->residual_rate(a_, d_.data());
       add_element_forces(q, w);
     }
@@ -304,13 +330,20 @@ bool Dynamics::loads(double, const double* y, Loads& out, std::vector<ClosureErr
     out.determinacy = Determinacy::not_assessed;
   }
   if (regulator_) regulator_->apply(lambda_.data(), F_);
-  sweep_.accelerations(v_, w, F_, Q_joint_.data(), bias_, a_, ddq_.data());
+  sweep_.accelerations(v_, w, F_, Q_joint_.data(), bias_, a_, ddq_.data(), driven_acceleration);
   out.reaction.resize(model.size());
   for (int i = 0; i < model.size(); ++i) {
     const Vec6 f = sweep_.joint_wrench(i, bias_, a_);
     Vec6& r = out.reaction[i];
     r.head<3>() = f.head<3>();
     r.tail<3>() = f.tail<3>() - model.joints[i].child_point.cross(f.head<3>());
+  }
+  // What the joint transmits along its axis beyond its other elements'
+  // torques is the driver's.
+  for (std::size_t d = 0; d < drivers_.size(); ++d) {
+    const int i = drivers_[d]->joint, c = model.velocity_of(i).value;
+    out.element[element_columns_[driver_elements_[d]][0]] =
+        sweep_.motion_axes(i).col(0).dot(sweep_.joint_wrench(i, bias_, a_)) - Q_joint_[c];
   }
   out.loop_force.resize(L.m);
   for (int c = 0; c < L.m; ++c) out.loop_force[c] = -lambda_[c];
@@ -329,6 +362,15 @@ bool Dynamics::loads(double, const double* y, Loads& out, std::vector<ClosureErr
   for (std::size_t l = 0; l < scene_.loops.size(); ++l)
     (*closure)[l] = closure_error(poses_[scene_.loops[l].body], poses_[scene_.loops[l].image]);
   return true;
+}
+
+double Dynamics::drive_power(double t, const double* y) {
+  if (!loads(t, y, drive_loads_)) return std::numeric_limits<double>::quiet_NaN();
+  double P = 0;
+  for (std::size_t d = 0; d < drivers_.size(); ++d)
+    P += drive_loads_.element[element_columns_[driver_elements_[d]][0]] *
+         driven_rate_[scene_.model.velocity_of(drivers_[d]->joint).value];
+  return P;
 }
 
 bool Dynamics::observe(double t, const double* y, Observation& out) {

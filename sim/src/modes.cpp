@@ -56,7 +56,19 @@ class Linearizer {
     size_.resize(model_.nv);
     for (int c = 0; c < model_.nv; ++c)
       size_[c] = model_.velocity_unit(c) == "m/s" ? dynamics_.scales().length : 1.0;
+    // The drivers hold their joints: the motions are those of the other
+    // coordinates.
+    std::vector<int> free;
+    for (int c = 0; c < model_.nv; ++c)
+      if (!model_.joints[model_.joint_of_velocity[c]].driven) free.push_back(c);
+    if (static_cast<int>(free.size()) < model_.nv) {
+      held_ = Eigen::MatrixXd::Zero(model_.nv, static_cast<Eigen::Index>(free.size()));
+      for (std::size_t k = 0; k < free.size(); ++k) held_(free[k], static_cast<Eigen::Index>(k)) = 1;
+    }
   }
+
+  // How many coordinates move (the driven ones are held).
+  int free_coordinates() const { return held_.size() ? static_cast<int>(held_.cols()) : model_.nv; }
 
   Dynamics& dynamics() { return dynamics_; }
   const Eigen::VectorXd& size() const { return size_; }
@@ -103,18 +115,20 @@ class Linearizer {
  private:
   const Scene& scene() const { return dynamics_.scene(); }
 
-  // L^-T for M = L L^T at q.
-  Eigen::MatrixXd inverse_factor(const std::vector<double>& q) {
-    const Eigen::LLT<Eigen::MatrixXd> llt(dynamics_.mass_matrix(q.data()));
+  // L^-T for M = L L^T at q (on the free coordinates, S L_f^-T with M_f =
+  // S^T M S, where drivers hold some).
+  Eigen::MatrixXd inverse_factor(const std::vector<double>& q) { return inverse_factor_of(dynamics_.mass_matrix(q.data())); }
+  Eigen::MatrixXd inverse_factor_of(const Eigen::MatrixXd& M) const {
+    const int n = free_coordinates();
+    const Eigen::LLT<Eigen::MatrixXd> llt(held_.size() ? Eigen::MatrixXd(held_.transpose() * M * held_) : M);
     if (llt.info() != Eigen::Success) throw std::runtime_error("the mass matrix is not positive definite at the state");
-    return llt.matrixU().solve(Eigen::MatrixXd::Identity(model_.nv, model_.nv));
+    const Eigen::MatrixXd Linv_T = llt.matrixU().solve(Eigen::MatrixXd::Identity(n, n));
+    return held_.size() ? Eigen::MatrixXd(held_ * Linv_T) : Linv_T;
   }
 
   // T: the admissible motions, T^T M T = I.
   void basis(const std::vector<double>& q, Linear& lin) {
-    const Eigen::LLT<Eigen::MatrixXd> llt(lin.M);
-    if (llt.info() != Eigen::Success) throw std::runtime_error("the mass matrix is not positive definite at the state");
-    const Eigen::MatrixXd Linv_T = llt.matrixU().solve(Eigen::MatrixXd::Identity(model_.nv, model_.nv));
+    const Eigen::MatrixXd Linv_T = inverse_factor_of(lin.M);
     if (scene().loops.empty()) {
       lin.T = Linv_T;
       return;
@@ -126,7 +140,7 @@ class Linearizer {
       if (sigma[k] > kRankNumerical * sigma[0]) ++lin.loop_rank;
       if (sigma[k] > kRankNumerical * sigma[0] && sigma[k] <= kWeakSingular * sigma[0]) ++lin.weak_loop_directions;
     }
-    lin.T = Linv_T * svd.matrixV().rightCols(model_.nv - lin.loop_rank);
+    lin.T = Linv_T * svd.matrixV().rightCols(free_coordinates() - lin.loop_rank);
   }
 
   // z'' at z, z' about q: the rigid accelerations at the displaced state,
@@ -146,6 +160,7 @@ class Linearizer {
   Dynamics dynamics_;
   const Model& model_;
   Eigen::VectorXd size_;
+  Eigen::MatrixXd held_;  // S: the free coordinates' columns of I, empty without drivers
 };
 
 // The symmetric part of K, its eigen-decomposition (omega^2 ascending).
@@ -208,6 +223,11 @@ LinearizationState state_of_run(const Scene& scene, const Trajectory& tr, double
   LinearizationState state;
   state.t = std::min(t, tr.t_end());
   tr.coordinates_at(state.t, state.q);
+  for (const JointDriver* d : scene.elements_of<JointDriver>())
+    if (const double rate = d->at(state.t).rate; rate != 0)
+      throw std::runtime_error("joint '" + scene.model.joints[d->joint].name + "' is still driven at t = " +
+                               std::to_string(state.t) + " s (rate " + std::to_string(rate) +
+                               "): the modes are about a state at rest, the drivers holding their joints");
   state.engaged.assign(scene.latches().size(), false);
   for (const LatchEvent& e : tr.events)
     if (e.t <= state.t) state.engaged[e.latch] = true;
@@ -268,7 +288,7 @@ ModesResult linear_modes(const Scene& scene, const std::vector<double>& q0, cons
   Linearizer lin(scene, engaged);
   ModesResult result;
   result.engaged = engaged;
-  result.coordinates = model.nv;
+  result.coordinates = lin.free_coordinates();
   result.length = lin.dynamics().scales().length;
   std::vector<double> q = lin.closed(q0);
   for (int iteration = 0;; ++iteration) {

@@ -7,9 +7,9 @@ namespace unfurl::sim {
 RoundoffGuard::RoundoffGuard(const Scene& scene, double rtol, double atol)
     : probe_(scene), rtol_(rtol), atol_(atol) {}
 
-double RoundoffGuard::floor_at(const std::vector<double>& y, const Dynamics& run) {
+double RoundoffGuard::floor_at(double t, const std::vector<double>& y, const Dynamics& run) {
   probe_.latch_state() = run.latch_state();
-  return roundoff_floor(probe_, y);
+  return roundoff_floor(probe_, t, y);
 }
 
 bool RoundoffGuard::step_taken(double t, const std::vector<double>& y, const Dynamics& run, Integrator& integrator) {
@@ -19,7 +19,7 @@ bool RoundoffGuard::step_taken(double t, const std::vector<double>& y, const Dyn
   failures_seen_ = s.nonlinear_failures;
   steps_seen_ = s.steps;
   if (!often) return false;
-  const double floor = floor_at(y, run);
+  const double floor = floor_at(t, y, run);
   // Doubled at most at a time: the least raise that stops the failures.
   const double raised = std::min(floor * kMargin, 2 * std::max(rtol_, atol_));
   const double rtol = std::max(rtol_, raised), atol = std::max(atol_, raised);

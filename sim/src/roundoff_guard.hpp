@@ -39,14 +39,14 @@ class RoundoffGuard {
   // The floor at the initial state, reported only: a run below it at the
   // start need not fail (the pantograph at rtol 1e-11 reaches its latch-up
   // with the hinge peaks of a run at 1e-10 to 1e-4; 6 times the steps).
-  double floor_at_start(const std::vector<double>& y) { return roundoff_floor(probe_, y); }
+  double floor_at_start(double t, const std::vector<double>& y) { return roundoff_floor(probe_, t, y); }
 
   // After a step that ended at (t, y), with the run's latches in `run`;
   // true where it raised the tolerances (the integrator is to restart there).
   bool step_taken(double t, const std::vector<double>& y, const Dynamics& run, Integrator& integrator);
 
-  // The floor at y with the run's latches (the end of a run).
-  double floor_at(const std::vector<double>& y, const Dynamics& run);
+  // The floor at (t, y) with the run's latches (the end of a run).
+  double floor_at(double t, const std::vector<double>& y, const Dynamics& run);
 
   const std::vector<ToleranceRaise>& raises() const { return raises_; }
 

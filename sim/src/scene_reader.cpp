@@ -72,6 +72,7 @@ class SceneReader : private input::YamlFields {
   int element_body(const YAML::Node& entry, const char* key, const SceneBuilder& b, const std::string& field) const;
   void read_applied_forces(const YAML::Node& list, SceneBuilder& b) const;
   void read_latches(const YAML::Node& list, SceneBuilder& b) const;
+  void read_drivers(const YAML::Node& list, SceneBuilder& b) const;
   void read_loops(const YAML::Node& list, SceneBuilder& b) const;
   void read_sensors(const YAML::Node& list, SceneBuilder& b) const;
   RegulatorSettings read_regulator(const YAML::Node& node) const;
@@ -491,6 +492,21 @@ void SceneReader::read_latches(const YAML::Node& list, SceneBuilder& b) const {
        });
 }
 
+void SceneReader::read_drivers(const YAML::Node& list, SceneBuilder& b) const {
+  each(list, "drivers", {"joint", "profile", "amount", "duration", "start"},
+       [&](const YAML::Node& d, const std::string& field, std::size_t) {
+         auto driver = std::make_shared<JointDriver>(element_joint(d, b, field));
+         const YAML::Node profile = require(d, "profile", field);
+         const auto parsed = parse_driver_profile(text(profile, field + ".profile"));
+         if (!parsed) fail(profile, field + ".profile", "expected move or spin_up");
+         driver->profile = *parsed;
+         driver->amount = number(require(d, "amount", field), field + ".amount");
+         driver->duration = number(require(d, "duration", field), field + ".duration");
+         driver->start = number_or(d, "start", 0.0, field);
+         b.element(driver);
+       });
+}
+
 void SceneReader::read_loops(const YAML::Node& list, SceneBuilder& b) const {
   each(list, "loops", {"name", "body", "image"}, [&](const YAML::Node& l, const std::string& field, std::size_t) {
     const std::string body = text(require(l, "body", field), field + ".body");
@@ -653,7 +669,7 @@ SceneFile SceneReader::read(const std::string& text_in, const std::vector<Overri
   if (root["loads"]) fail(root["loads"], "loads", "renamed: the constant forces on bodies are `applied_forces:`");
   check_keys(root,
              {"name", "description", "base", "gravity", "bodies", "springs", "dampers", "stops", "friction", "point_springs",
-              "bushings", "applied_forces", "latches", "loops", "sensors", "regulator", "initial", "closure_tolerance",
+              "bushings", "applied_forces", "latches", "drivers", "loops", "sensors", "regulator", "initial", "closure_tolerance",
               "torque_margin",
               "run"},
              "");
@@ -675,6 +691,7 @@ SceneFile SceneReader::read(const std::string& text_in, const std::vector<Overri
     if (root["applied_forces"]) read_applied_forces(root["applied_forces"], b);
     if (root["point_springs"]) read_point_springs(root["point_springs"], b);
     if (root["bushings"]) read_bushings(root["bushings"], b);
+    if (root["drivers"]) read_drivers(root["drivers"], b);
     if (root["loops"]) read_loops(root["loops"], b);
     if (root["sensors"]) read_sensors(root["sensors"], b);
     if (root["regulator"]) b.regulator(read_regulator(root["regulator"]));

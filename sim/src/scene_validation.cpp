@@ -125,6 +125,14 @@ void check_initial_state(Scene& scene) {
     throw SceneInvalid("initial.p", "expected " + std::to_string(model.nv) + " momenta");
   for (int i = 0; i < model.size(); ++i) {
     const Joint& j = model.joints[i];
+    if (j.driven && j.is_scalar()) {
+      const int c = model.velocity_of(i).value;
+      if (scene.dq0[c] != 0)
+        throw SceneInvalid("initial.dq." + j.name, "joint '" + j.name + "' is driven: its rate is its driver's");
+      if (!scene.p0.empty() && scene.p0[c] != 0)
+        throw SceneInvalid("initial.p." + j.name,
+                           "joint '" + j.name + "' is driven: its momentum is not a state");
+    }
     if (!j.has_quaternion()) continue;
     Eigen::Map<Eigen::Vector4d> quaternion(&scene.q0[(model.first_position[i] + j.quaternion_offset()).value]);
     if (quaternion.norm() < 1e-9) throw SceneInvalid("initial.q." + j.name, "the quaternion has zero length");

@@ -163,6 +163,11 @@ void elements(std::ostream& out, const Scene& scene) {
            ", stiffness: " + format_number(l.stiffness) + ", damping: " + format_number(l.damping) +
            ", free_play: " + format_number(l.free_play);
   });
+  list("drivers", scene.elements_of<JointDriver>(), [&](const JointDriver& d) {
+    return "joint: " + joint(d.joint) + ", profile: " + driver_profile_name(d.profile) +
+           ", amount: " + format_number(d.amount) + ", duration: " + format_number(d.duration) +
+           ", start: " + format_number(d.start);
+  });
   list("applied_forces", scene.elements_of<AppliedForce>(), [&](const AppliedForce& l) {
     return "body: " + body(l.body) + ", force: " + vec(l.force) + ", torque: " + vec(l.torque) +
            ", point: " + vec(l.point) + ", frame: " + (l.in_base_frame ? "base" : "body");

@@ -29,9 +29,10 @@ class Recorder {
       : dynamics_(dynamics), observer_(observer), trajectory_(trajectory) {}
 
   // False where the state cannot be evaluated (nothing is recorded).
-  bool record(double t, const std::vector<double>& y, double dissipated) {
+  bool record(double t, const std::vector<double>& y, double dissipated, double driven) {
     if (!dynamics_.observe(t, y.data(), observation_)) return false;
     observation_.energy.dissipated = dissipated;
+    observation_.energy.driven = driven;
     Sample s;
     s.t = t;
     s.y = y;
@@ -81,22 +82,22 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
   trajectory.sensor_columns = dynamics.sensor_columns();
   if (observer.on_start) observer.on_start(trajectory);
 
+  const double t0 = 0.0;
   std::vector<double> y = dynamics.initial_state();
   // The guard's probe and the floor at the start are a report, not timed
   // with the run; the guard's looks during it are part of solving it, and are.
   const auto probe_start = std::chrono::steady_clock::now();
   RoundoffGuard guard(scene, settings.rtol, settings.atol);
-  result.roundoff_floor = guard.floor_at_start(y);
+  result.roundoff_floor = guard.floor_at_start(t0, y);
   const auto probe_time = std::chrono::steady_clock::now() - probe_start;
   std::vector<double> ys(y.size());
   Recorder recorder(dynamics, observer, trajectory);
-  const double t0 = 0.0;
   auto fail = [&](double t, double step, std::string check, std::string reason) {
     result.status = RunStatus::failed;
     result.failure = {t, step, std::move(check), std::move(reason)};
   };
   const char* kNotFinite = "the equations of motion have no finite value here (or the loop-closure system is singular)";
-  if (!recorder.record(t0, y, 0.0)) fail(t0, 0, "evaluation", kNotFinite);
+  if (!recorder.record(t0, y, 0.0, 0.0)) fail(t0, 0, "evaluation", kNotFinite);
   DissipationMeter dissipation(dynamics, t0);
   // A joint that starts exactly at its latch angle is caught from the start.
   for (int l = 0; l < dynamics.latch_count(); ++l)
@@ -149,7 +150,7 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
     while (sample_index >= 0 && sample_time(sample_index) <= t_done) {
       integrator->interpolate(sample_time(sample_index), ys.data());
       dissipation.advance(*integrator, sample_time(sample_index));
-      if (!recorder.record(sample_time(sample_index), ys, dissipation.work())) {
+      if (!recorder.record(sample_time(sample_index), ys, dissipation.work(), dissipation.drive_work())) {
         fail(sample_time(sample_index), integrator->current_step(), "evaluation", kNotFinite);
         break;
       }
@@ -200,7 +201,7 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
   result.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start - probe_time).count();
   // With the latches as they ended.
-  if (result.status != RunStatus::failed) result.roundoff_floor_end = guard.floor_at(y, dynamics);
+  if (result.status != RunStatus::failed) result.roundoff_floor_end = guard.floor_at(t, y, dynamics);
   result.tolerance_raises = guard.raises();
   return result;
 }

@@ -1,4 +1,5 @@
 #include "unfurl/sim/summary.hpp"
+#include "unfurl/sim/elements/joint_driver.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -44,6 +45,7 @@ RunSummary summarize(const Scene& scene, const RunResult& result) {
     s.energy_initial = tr.samples.front().energy.total();
     s.energy_final = tr.samples.back().energy.total();
     s.energy_dissipated = tr.samples.back().energy.dissipated;
+    if (!scene.elements_of<JointDriver>().empty()) s.energy_driven = tr.samples.back().energy.driven;
     s.t_reached = tr.samples.back().t;
     for (int c = 0; c < model.nq; ++c)
       s.final_q.emplace_back(model.position_name(c), tr.samples.back().y[tr.layout.q() + c]);

@@ -57,22 +57,22 @@ int precondition_solve(double, N_Vector, N_Vector, N_Vector r, N_Vector z, doubl
   return 0;
 }
 
-int jacobian_times(N_Vector v, N_Vector Jv, double, N_Vector y, N_Vector, void* dynamics, N_Vector) {
+int jacobian_times(N_Vector v, N_Vector Jv, double t, N_Vector y, N_Vector, void* dynamics, N_Vector) {
   // Not finite: a positive return, which CVODE treats as recoverable.
-  return static_cast<Dynamics*>(dynamics)->jacobian_times(N_VGetArrayPointer(y), N_VGetArrayPointer(v),
+  return static_cast<Dynamics*>(dynamics)->jacobian_times(t, N_VGetArrayPointer(y), N_VGetArrayPointer(v),
                                                           N_VGetArrayPointer(Jv))
              ? 0
              : 1;
 }
 
-int dense_jacobian(double, N_Vector y, N_Vector, SUNMatrix J, void* dynamics, N_Vector unit, N_Vector, N_Vector) {
+int dense_jacobian(double t, N_Vector y, N_Vector, SUNMatrix J, void* dynamics, N_Vector unit, N_Vector, N_Vector) {
   Dynamics& d = *static_cast<Dynamics*>(dynamics);
   const sunindextype n = N_VGetLength(y);
   double* e = N_VGetArrayPointer(unit);
   std::fill_n(e, n, 0.0);
   for (sunindextype j = 0; j < n; ++j) {
     e[j] = 1;
-    if (!d.jacobian_times(N_VGetArrayPointer(y), e, SM_COLUMN_D(J, j))) return 1;
+    if (!d.jacobian_times(t, N_VGetArrayPointer(y), e, SM_COLUMN_D(J, j))) return 1;
     e[j] = 0;
   }
   return 0;

@@ -14,10 +14,12 @@ Sweep::Sweep(const Model& model)
       M_star_A_(model.size()),
       D_(model.size(), 0.0),
       multi_(model.size(), -1),
+      driven_(model.size(), 0),
       q_(model.nq, 0.0) {
   for (int i = 0; i < model.size(); ++i) {
     A_[i] = model.joints[i].motion_axis();
     M_[i] = model.bodies[i].spatial_mass();
+    driven_[i] = model.joints[i].driven && model.joints[i].is_scalar();
     if (model.joints[i].dof() > 1) {
       multi_[i] = static_cast<int>(multi_axes_.size());
       multi_axes_.push_back({model.joints[i].motion_axes(q_.data() + std::max(0, model.first_position[i].value)),
@@ -56,7 +58,7 @@ void Sweep::set_configuration(const double* q, const double* joint_diagonal) {
       HM.noalias() -= J.M_star_A * J.D * J.M_star_A.transpose();
     } else if (const int c = model_.first_velocity[i].value; c >= 0) {
       M_star_A_[i] = M_star_[i] * A_[i];
-      D_[i] = 1.0 / (A_[i].dot(M_star_A_[i]) + (joint_diagonal ? joint_diagonal[c] : 0.0));
+      D_[i] = driven_[i] ? 0.0 : 1.0 / (A_[i].dot(M_star_A_[i]) + (joint_diagonal ? joint_diagonal[c] : 0.0));
       HM.noalias() -= D_[i] * M_star_A_[i] * M_star_A_[i].transpose();
     }
     const int k = model_.parent[i];
@@ -65,6 +67,7 @@ void Sweep::set_configuration(const double* q, const double* joint_diagonal) {
 }
 
 double Sweep::articulated_inertia(int i, int r) const {
+  if (driven_[i]) return A_[i].dot(M_star_A_[i]);  // what the driver moves against
   if (multi_[i] < 0) return 1.0 / D_[i];
   const MultiAxis& J = multi_axes_[multi_[i]];
   return J.A.col(r).dot(M_star_[i] * J.A.col(r));
@@ -98,7 +101,7 @@ Vec6 Sweep::rates_of(int i, const double* x) const {
 }
 
 void Sweep::accelerations(const std::vector<Vec6>& v, const double* dq, const std::vector<Vec6>& F, const double* Q,
-                          std::vector<Vec6>& bias, std::vector<Vec6>& a, double* ddq) const {
+                          std::vector<Vec6>& bias, std::vector<Vec6>& a, double* ddq, const double* driven) const {
   const int N = model_.size();
   for (int i = 0; i < N; ++i) bias[i] = omega_times(v[i], M_[i] * v[i]) - F[i];
   // Backward: a_i holds the velocity-product acceleration c_i = v_i x (A_i
@@ -114,6 +117,9 @@ void Sweep::accelerations(const std::vector<Vec6>& v, const double* dq, const st
         a[i] += model_.joints[i].motion_axes_rate(q_.data() + model_.first_position[i].value, dq + c) * rates_of(i, dq);
       const Vec6 u = rates_of(i, Q) - J.A.transpose() * bias[i];
       for (int r = 0; r < J.n; ++r) ddq[c + r] = u[r];
+    } else if (driven_[i]) {
+      a[i] = motion_cross(v[i], A_[i] * dq[c]);
+      ddq[c] = driven ? driven[c] : 0.0;
     } else if (c >= 0) {
       a[i] = motion_cross(v[i], A_[i] * dq[c]);
       ddq[c] = Q[c] - A_[i].dot(bias[i]);
@@ -125,6 +131,8 @@ void Sweep::accelerations(const std::vector<Vec6>& v, const double* dq, const st
     if (multi_[i] >= 0) {
       const MultiAxis& J = multi_axes_[multi_[i]];
       carried += J.M_star_A * (J.D * (rates_of(i, ddq) - J.M_star_A.transpose() * a[i]));
+    } else if (driven_[i]) {
+      carried += M_star_A_[i] * ddq[c];  // the given acceleration's
     } else if (c >= 0) {
       carried += M_star_A_[i] * (D_[i] * (ddq[c] - M_star_A_[i].dot(a[i])));
     }
@@ -140,7 +148,7 @@ void Sweep::accelerations(const std::vector<Vec6>& v, const double* dq, const st
       for (int r = 0; r < J.n; ++r) ddq[c + r] = ddq_i[r];
       a[i] += J.A * ddq_i;
     } else if (c >= 0) {
-      ddq[c] = D_[i] * (ddq[c] - M_star_A_[i].dot(a[i]));
+      if (!driven_[i]) ddq[c] = D_[i] * (ddq[c] - M_star_A_[i].dot(a[i]));
       a[i] += A_[i] * ddq[c];
     }
   }

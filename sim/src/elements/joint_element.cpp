@@ -19,7 +19,7 @@ void JointElement::validate(const Scene& scene, const std::string& field) const 
   if (!j.has_free_coordinate())
     throw SceneInvalid(field + ".joint",
                        "joint '" + j.name + "' is " + joint_type_name(j.type) +
-                           ": springs, dampers, friction and latches act on revolute and prismatic joints");
+                           ": springs, dampers, friction, latches and drivers act on revolute and prismatic joints");
 }
 
 }  // namespace unfurl::sim

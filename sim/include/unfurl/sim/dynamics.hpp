@@ -7,6 +7,11 @@
 // with g(q) the loops' true geometric gap (regulator.hpp), F and Q_joint the
 // force elements' (force_element.hpp). rhs() allocates nothing.
 //
+// Time enters only through the drivers (joint_driver.hpp): a driven joint's
+// rate in w and its acceleration are the driver's at t, its q' is that
+// rate, and its entry of p is not a state (held at zero): a scene without
+// drivers is autonomous.
+//
 // What evaluations share, in one place:
 // - the configuration (the sweep's placements and articulated inertias,
 //   the bodies' poses) depends on q alone. It is kept with the q it was
@@ -27,6 +32,7 @@
 #include <optional>
 #include <vector>
 
+#include "unfurl/sim/elements/joint_driver.hpp"
 #include "unfurl/sim/energy.hpp"
 #include "unfurl/sim/loads.hpp"
 #include "unfurl/sim/mechanism_scales.hpp"
@@ -109,7 +115,7 @@ class Dynamics {
   // and a refined solve. y, f(y) and the gains' configuration key make the
   // product's base: while they stand (GMRES asks for several products at
   // one iterate) the base is reused. False where f is not finite.
-  bool jacobian_times(const double* y, const double* v, double* Jv);
+  bool jacobian_times(double t, const double* y, const double* v, double* Jv);
   long jacobian_product_evals() const { return jacobian_product_evals_; }
 
   // The implicit integrators' Krylov preconditioner, made on first use.
@@ -162,6 +168,10 @@ class Dynamics {
   // position rates q' (>= 0 for passive elements); its integral is
   // EnergyParts::dissipated.
   double dissipation(const double* q, const double* q_dot);
+  // The power the drivers put in at state y and time t (their torques from
+  // the loads, times their rates); its integral is EnergyParts::driven.
+  bool has_drivers() const { return !drivers_.empty(); }
+  double drive_power(double t, const double* y);
 
   // The element state at positions q and rates w, for element k (its
   // discrete state). poses and v must be current where elements need them.
@@ -172,7 +182,10 @@ class Dynamics {
   // Computes the configuration at q unless it holds q's already; its key
   // changes when it computes.
   void configure(const double* q);
-  bool evaluate(const double* y, double* ydot, Regulator::Gains gains);
+  bool evaluate(double t, const double* y, double* ydot, Regulator::Gains gains);
+  // The drivers' rates and accelerations at t into driven_rate_ and
+  // driven_acceleration_.
+  void drive(double t);
   void add_element_forces(const double* q, const double* w);
   // v_i of the configured sweep for velocity coordinates w, the base moving
   // with its steady velocity when `base_moves`.
@@ -190,6 +203,12 @@ class Dynamics {
   std::unique_ptr<ClosureRank> closure_rank_;  // up to kMaxDenseComponents components
   std::vector<const Latch*> latches_;
   std::vector<std::size_t> latch_elements_;  // element index of latch l
+  std::vector<const JointDriver*> drivers_;
+  std::vector<std::size_t> driver_elements_;  // element index of driver d
+  // Per velocity coordinate: the driven joints' rates and accelerations at
+  // the time of the last drive() (zero elsewhere).
+  std::vector<double> driven_rate_ = std::vector<double>(scene_.model.nv, 0.0);
+  std::vector<double> driven_acceleration_ = std::vector<double>(scene_.model.nv, 0.0);
   std::vector<int> latch_of_element_;        // -1 for elements that are not latches
   LatchState latch_state_;
   std::vector<LoadColumn> columns_;
@@ -215,12 +234,14 @@ class Dynamics {
   // then, the gains' configuration key) and y + sigma v.
   std::vector<double> jv_y_, jv_f_, jv_y1_;
   int jv_engaged_ = -1;
+  double jv_t_ = 0;
   long jv_gains_key_ = -1;
   // dissipation(): a configuration of its own.
   std::unique_ptr<Sweep> dissipation_sweep_;
   std::vector<Pose> dissipation_poses_;
   std::vector<Vec6> dissipation_v_;
   std::vector<double> dissipation_w_;
+  Loads drive_loads_;  // drive_power()'s
 };
 
 }  // namespace unfurl::sim

@@ -14,8 +14,11 @@ struct EnergyParts {
   // part of the total; total() + dissipated is what the run conserves
   // (without external loads).
   double dissipated = 0;
+  // Work the drivers have put in since t = 0 (joint_driver.hpp): total() +
+  // dissipated - driven is what a driven run conserves.
+  double driven = 0;
   double total() const { return kinetic + springs + latches + gravity + regulator + unattributed; }
-  double balance() const { return total() + dissipated; }
+  double balance() const { return total() + dissipated - driven; }
 };
 
 }  // namespace unfurl::sim

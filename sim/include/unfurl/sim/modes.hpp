@@ -22,6 +22,9 @@
 // not conservative: a follower load) is reported. Coulomb friction, which
 // sticks at rest, enters as its smoothed law's slope, a stiff damper.
 //
+// Drivers (joint_driver.hpp) hold their joints: the modes are those of the
+// other coordinates, about a state where no driver is moving.
+//
 // A free-floating base has six rigid-body modes (frequency 0); a rigid
 // mechanism at a branch point, or a joint nothing holds, has mechanism
 // modes, whose frequency is 0 to first order: their stiffness, if any, is
@@ -60,7 +63,7 @@ struct ModesSettings {
 struct ModesResult {
   std::vector<double> q;        // the positions linearized about
   std::vector<bool> engaged;    // each latch's state there
-  int coordinates = 0;          // velocity coordinates
+  int coordinates = 0;          // velocity coordinates that move (not those drivers hold)
   int loop_rank = 0;            // independent loop constraints there
   // Of those, how many hold only weakly: the state is near a branch point
   // of the loops (where the loads are indeterminate), and the rigid

@@ -25,6 +25,6 @@ class Dynamics;
 // differences of sqrt(6) sigma, so this is about 2.5 sigma: a floor with a
 // margin, which is where the measured step counts jump. 0 where f cannot
 // be evaluated there.
-double roundoff_floor(Dynamics& dynamics, const std::vector<double>& y);
+double roundoff_floor(Dynamics& dynamics, double t, const std::vector<double>& y);
 
 }  // namespace unfurl::sim

@@ -60,6 +60,7 @@ struct RunSummary {
   double energy_initial = 0;
   double energy_final = 0;
   double energy_dissipated = 0;  // by dampers, friction and latches up to t_reached
+  std::optional<double> energy_driven;  // put in by the drivers up to t_reached (a scene with drivers)
   double t_reached = 0;
   std::vector<std::pair<std::string, double>> final_q;  // joint name, q
 

@@ -11,6 +11,13 @@
 //
 // The passes also run on k load cases at once (6 x k blocks per body, k x
 // columns of coordinates), which the loop regulator uses to form W.
+//
+// A driven joint (Joint::driven) has its rate and acceleration given: it
+// passes its whole articulated inertia to its parent, as a locked joint
+// does, and its rate's momentum with it (the hybrid form of the
+// recursion). Its entry of p is not read; the passes take its rate from
+// `driven` (per velocity coordinate), zero where that is null: the load
+// cases see the driven joints locked, as the motor holds them.
 #pragma once
 
 #include <vector>
@@ -34,13 +41,15 @@ class Sweep {
   void set_configuration(const double* q, const double* joint_diagonal = nullptr);
 
   // phi*_i of the first backward pass for momenta p (v*_i = 0).
-  void bias(const double* p, std::vector<Vec6>& phi) const { bias_pass(coordinates(p), phi); }
+  void bias(const double* p, std::vector<Vec6>& phi, const double* driven = nullptr) const {
+    bias_pass(coordinates(p), phi, driven);
+  }
 
   // The forward pass: dq_i and v_i from p, phi* and the base velocity.
   void velocities(const double* p, const std::vector<Vec6>& phi, const Vec6& v_base, double* dq,
-                  std::vector<Vec6>& v) const {
+                  std::vector<Vec6>& v, const double* driven = nullptr) const {
     auto dq_ = coordinates(dq);
-    velocity_pass(coordinates(p), phi, v_base, dq_, v);
+    velocity_pass(coordinates(p), phi, v_base, dq_, v, driven);
   }
 
   // mu_i = M*_i v_i + phi*_i.
@@ -69,9 +78,11 @@ class Sweep {
   // backward pass of the bias forces p^A_i = v_i x* M_i v_i - F_i + what the
   // children pass on, and a forward pass. With them, M*_i a_i + p^A_i is the
   // wrench that joint i transmits from the parent to body i (at its origin,
-  // in its frame). The base moves steadily (its acceleration is zero).
+  // in its frame). The base moves steadily (its acceleration is zero). A
+  // driven joint's acceleration is `driven`'s entry (zero where null).
   void accelerations(const std::vector<Vec6>& v, const double* dq, const std::vector<Vec6>& F, const double* Q,
-                     std::vector<Vec6>& bias, std::vector<Vec6>& a, double* ddq) const;
+                     std::vector<Vec6>& bias, std::vector<Vec6>& a, double* ddq,
+                     const double* driven = nullptr) const;
 
   // M*_i a_i + p^A_i: the joint wrench from accelerations() results.
   Vec6 joint_wrench(int i, const std::vector<Vec6>& bias, const std::vector<Vec6>& a) const {
@@ -84,10 +95,10 @@ class Sweep {
 
   // The same three passes for k load cases: S[i] is 6 x k, P is nq x k.
   template <class S, class P>
-  void bias_pass(const P& p, std::vector<S>& phi) const;
+  void bias_pass(const P& p, std::vector<S>& phi, const double* driven = nullptr) const;
   template <class S, class P, class Pout>
-  void velocity_pass(const P& p, const std::vector<S>& phi, const Vec6& v_base, Pout& dq,
-                     std::vector<S>& v) const;
+  void velocity_pass(const P& p, const std::vector<S>& phi, const Vec6& v_base, Pout& dq, std::vector<S>& v,
+                     const double* driven = nullptr) const;
   template <class S, class Pout>
   void force_pass(std::vector<S>& F, Pout& Q) const;
 
@@ -133,14 +144,15 @@ class Sweep {
   std::vector<Placement> X_;    // G_i, rho_i
   std::vector<Mat6> M_star_;    // M*_i
   std::vector<Vec6> M_star_A_;  // M*_i A_i
-  std::vector<double> D_;       // D_i = (A_i^T M*_i A_i)^-1
+  std::vector<double> D_;       // D_i = (A_i^T M*_i A_i)^-1; 0 for a driven joint
   std::vector<int> multi_;      // index into multi_axes_, -1 for n_i <= 1
+  std::vector<char> driven_;    // Joint::driven
   std::vector<MultiAxis> multi_axes_;
   std::vector<double> q_;  // the q of the quantities above
 };
 
 template <class S, class P>
-void Sweep::bias_pass(const P& p, std::vector<S>& phi) const {
+void Sweep::bias_pass(const P& p, std::vector<S>& phi, const double* driven) const {
   const int N = model_.size();
   for (int i = 0; i < N; ++i) phi[i].setZero();
   for (int j = N - 1; j >= 0; --j) {
@@ -152,6 +164,8 @@ void Sweep::bias_pass(const P& p, std::vector<S>& phi) const {
     if (multi_[j] >= 0) {
       const MultiAxis& J = multi_axes_[multi_[j]];
       carried.noalias() += J.M_star_A * (J.D * (padded(p, c, J.n) - J.A.transpose() * phi[j]));
+    } else if (driven_[j]) {
+      if (driven) carried.col(0) += M_star_A_[j] * driven[c];
     } else if (c >= 0) {
       carried.noalias() += M_star_A_[j] * (D_[j] * (p.row(c) - A_[j].transpose() * phi[j]));
     }
@@ -160,8 +174,8 @@ void Sweep::bias_pass(const P& p, std::vector<S>& phi) const {
 }
 
 template <class S, class P, class Pout>
-void Sweep::velocity_pass(const P& p, const std::vector<S>& phi, const Vec6& v_base, Pout& dq,
-                          std::vector<S>& v) const {
+void Sweep::velocity_pass(const P& p, const std::vector<S>& phi, const Vec6& v_base, Pout& dq, std::vector<S>& v,
+                          const double* driven) const {
   const int N = model_.size();
   const S base = v_base.replicate(1, phi.empty() ? 1 : phi[0].cols());
   for (int i = 0; i < N; ++i) {
@@ -173,6 +187,9 @@ void Sweep::velocity_pass(const P& p, const std::vector<S>& phi, const Vec6& v_b
       const auto w = (J.D * (padded(p, c, J.n) - J.A.transpose() * (phi[i] + M_star_[i] * v[i]))).eval();
       dq.middleRows(c, J.n) = w.topRows(J.n);
       v[i].noalias() += J.A * w;
+    } else if (driven_[i]) {
+      dq.row(c).setConstant(driven ? driven[c] : 0.0);
+      v[i].noalias() += A_[i] * dq.row(c);
     } else if (c >= 0) {
       dq.row(c) = D_[i] * (p.row(c) - A_[i].transpose() * (phi[i] + M_star_[i] * v[i]));
       v[i].noalias() += A_[i] * dq.row(c);

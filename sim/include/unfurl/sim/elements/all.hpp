@@ -7,6 +7,7 @@
 #include "unfurl/sim/elements/gravity.hpp"
 #include "unfurl/sim/elements/joint_compliance.hpp"
 #include "unfurl/sim/elements/joint_damper.hpp"
+#include "unfurl/sim/elements/joint_driver.hpp"
 #include "unfurl/sim/elements/joint_friction.hpp"
 #include "unfurl/sim/elements/joint_spring.hpp"
 #include "unfurl/sim/elements/joint_stop.hpp"
