@@ -11,6 +11,7 @@
 #include "unfurl/sim/dynamics.hpp"
 #include "unfurl/sim/modes.hpp"
 #include "unfurl/sim/scene_file.hpp"
+#include "unfurl/sim/summary.hpp"
 
 namespace unfurl {
 namespace {
@@ -200,6 +201,49 @@ TEST(JointDriver, ADrivenCrankTurnsAFourBarWithItsLoopClosed) {
   for (const sim::Sample& s : run.trajectory.samples)
     drift = std::max(drift, std::abs(s.energy.balance() - run.trajectory.samples.front().energy.balance()));
   EXPECT_LT(drift, 1e-6 * std::abs(end.energy.driven) + 1e-9);
+}
+
+// A motor on a free-floating bus swings an arm: its torque is internal, so
+// the bus turns the other way and the system's momentum stays at zero.
+TEST(JointDriver, AMotorOnAFreeBusKeepsTheMomentum) {
+  const sim::Scene scene = sim::load_scene_text(R"(
+name: bus_and_arm
+base: {name: bus, free: true, mass: 50, com: [0, 0, 0], inertia: [5, 6, 7]}
+bodies:
+  - name: arm
+    parent: bus
+    mass: 4
+    com: [0.5, 0, 0]
+    inertia: [0.01, 0.1, 0.1]
+    joint: {name: shoulder, type: revolute, axis: [0, 0, 1], parent_point: [0.6, 0, 0], child_point: [0, 0, 0]}
+drivers:
+  - {joint: shoulder, profile: move, amount: 2, duration: 3}
+run: {t_end: 4, rtol: 1e-10, atol: 1e-12}
+)",
+                                                "bus_and_arm");
+  const sim::RunResult run = sim::simulate(scene, scene.run);
+  ASSERT_EQ(run.status, sim::RunStatus::finished);
+  double linear = 0, angular = 0, linear_scale = 0, angular_scale = 0, balance = 0;
+  const double E0 = run.trajectory.samples.front().energy.balance();
+  for (const sim::Sample& s : run.trajectory.samples) {
+    linear = std::max(linear, s.momentum.linear.norm());
+    angular = std::max(angular, s.momentum.angular.norm());
+    linear_scale = std::max(linear_scale, s.momentum.linear_scale);
+    angular_scale = std::max(angular_scale, s.momentum.angular_scale);
+    balance = std::max(balance, std::abs(s.energy.balance() - E0));
+  }
+  EXPECT_GT(angular_scale, 1.0);
+  EXPECT_LT(linear, 1e-10 * linear_scale);
+  EXPECT_LT(angular, 1e-10 * angular_scale);
+  // The arm's 2 rad, the bus's turn against it; at rest after the move,
+  // every joule the motor put in taken out again.
+  const sim::Sample& end = run.trajectory.samples.back();
+  EXPECT_NEAR(end.y[scene.model.position_of(1).value], 2.0, 1e-8);
+  const sim::RunSummary summary = sim::summarize(scene, run);
+  ASSERT_TRUE(summary.free_bus);
+  EXPECT_GT(summary.free_bus->final_attitude_change, 0.1);
+  EXPECT_NEAR(end.energy.kinetic, 0, 1e-12);
+  EXPECT_LT(balance, 1e-8);
 }
 
 TEST(JointDriver, TheSceneFileSaysWhatIsWrong) {

@@ -69,7 +69,7 @@ void add_curves(PlotSpec& spec, PlotKind kind, const sim::Scene& scene, const si
       break;
     case PlotKind::hinge_forces:
     case PlotKind::loads: {
-      // Latch torques (solid) and the hinge moments' magnitudes (dashed), or
+      // Latch and drive torques (solid) and the hinge moments' magnitudes (dashed), or
       // the hinge forces' magnitudes, of the latched joints, or of the
       // first joints of a scene without latches.
       if (tr.empty() || tr.samples.front().loads.reaction.empty()) break;
@@ -100,6 +100,10 @@ void add_curves(PlotSpec& spec, PlotKind kind, const sim::Scene& scene, const si
         if (latch >= 0)
           added.push_back(
               series(tr, "latch " + name, color, [latch](const sim::Sample& s) { return s.loads.element[latch]; }));
+        const int drive = sim::find_load_column(tr.load_columns, "drive_torque." + name);
+        if (drive >= 0)
+          added.push_back(
+              series(tr, "drive " + name, color, [drive](const sim::Sample& s) { return s.loads.element[drive]; }));
         added.push_back(series(tr, "|hinge moment| " + name, color,
                                [j](const sim::Sample& s) { return s.loads.reaction[j].tail<3>().norm(); }));
         added.back().dashed = !latches.empty();
