@@ -17,6 +17,25 @@ sim::SceneFile generate_pantograph(int stages);
 // Chain A of the pantograph with N panels: a tree; N = 3 is `zfold`.
 sim::SceneFile generate_zfold(int panels);
 
+// A uniform beam in bending as N rigid segments hinged end to end with
+// bending springs (the finite-segment, or lumped, model: segments of
+// length l = L / N, each hinge's spring EI / l, the clamp's 2 EI / l as
+// though the beam went on mirrored beyond it), cantilevered to a hub that
+// turns about z; no gravity. By default Simo and Vu-Quoc's spin-up beam:
+// L = 10 m, EI = 1.4e4 N m^2, rho A = 1.2 kg/m, the hub driven by a
+// spin-up to 6 rad/s over 15 s. Being a chain of rigid bodies at large
+// rotations, it carries the centrifugal stiffening a linear floating-frame
+// model leaves out: the reference a flexible body's modes are checked
+// against.
+struct BeamSpec {
+  double length = 10;         // m
+  double bending_stiffness = 1.4e4;  // EI, N m^2
+  double mass_per_length = 1.2;      // rho A, kg/m
+  double spin_rate = 6;              // rad/s, the hub's final rate
+  double spin_up_time = 15;          // s
+};
+sim::SceneFile generate_beam(int segments, const BeamSpec& spec = {});
+
 // N identical links hinged end to end about x, hanging under gravity with
 // light damping, released from a bent shape: a tree for scaling runs.
 sim::SceneFile generate_chain(int links);
