@@ -158,7 +158,9 @@ TEST(JointDriver, ADrivenHubMovesASprungLinkAsLagrangesEquationsSay) {
       worst_torque = std::max(worst_torque, std::abs(s.loads.element[drive] - tau));
       largest_torque = std::max(largest_torque, std::abs(tau));
     }
-    auto f = [&](double tt, double x, double v) { return std::array<double, 2>{v, link_acceleration(x, driver->at(tt))}; };
+    auto f = [&](double tt, double x, double v) {
+      return std::array<double, 2>{v, link_acceleration(x, driver->at(tt))};
+    };
     const auto k1 = f(t, phi, phi_rate);
     const auto k2 = f(t + h / 2, phi + h / 2 * k1[0], phi_rate + h / 2 * k1[1]);
     const auto k3 = f(t + h / 2, phi + h / 2 * k2[0], phi_rate + h / 2 * k2[1]);
@@ -175,8 +177,7 @@ TEST(JointDriver, ADrivenHubMovesASprungLinkAsLagrangesEquationsSay) {
 }
 
 TEST(JointDriver, TheEnergyBalanceHoldsWithTheDriversWork) {
-  sim::Scene scene = sim::load_scene_text(kHubAndLink, "hub_and_link",
-                                          {{"springs.elbow.damping", "0.3"}});
+  sim::Scene scene = sim::load_scene_text(kHubAndLink, "hub_and_link", {{"springs.elbow.damping", "0.3"}});
   const sim::RunResult run = sim::simulate(scene, scene.run);
   ASSERT_EQ(run.status, sim::RunStatus::finished);
   const double E0 = run.trajectory.samples.front().energy.balance();
@@ -257,13 +258,13 @@ TEST(JointDriver, TheSceneFileSaysWhatIsWrong) {
             std::string::npos);
   EXPECT_NE(with("duration: 2", "duration: 0").find("drivers[0].duration"), std::string::npos);
   EXPECT_NE(with("joint: hinge, profile", "joint: elbow, profile").find("unknown joint 'elbow'"), std::string::npos);
-  EXPECT_NE(with("run:", "latches: [{joint: hinge, position: 1, stiffness: 10, damping: 1}]\nrun:")
-                .find("has a latch"),
+  EXPECT_NE(with("run:", "latches: [{joint: hinge, position: 1, stiffness: 10, damping: 1}]\nrun:").find("has a latch"),
             std::string::npos);
   EXPECT_NE(with("run:", "initial: {dq: {hinge: 1}}\nrun:").find("initial.dq.hinge: joint 'hinge' is driven"),
             std::string::npos);
-  EXPECT_NE(with("type: revolute, axis: [1, 0, 0]", "type: spherical").find("drivers[0].joint: joint 'hinge' is spherical"),
-            std::string::npos);
+  EXPECT_NE(
+      with("type: revolute, axis: [1, 0, 0]", "type: spherical").find("drivers[0].joint: joint 'hinge' is spherical"),
+      std::string::npos);
   // The line and column of the field.
   EXPECT_NE(with("profile: move", "profile: jog").find("bad:12:29: drivers[0].profile"), std::string::npos);
 }
@@ -297,7 +298,8 @@ TEST(JointDriver, JacobianProductsAreTakenAtTheirTime) {
     for (std::size_t c = 0; c < n; ++c) y_plus[c] = y[c] + h * v[c], y_minus[c] = y[c] - h * v[c];
     dynamics.rhs(t, y_plus.data(), plus.data());
     dynamics.rhs(t, y_minus.data(), minus.data());
-    for (std::size_t c = 0; c < n; ++c) EXPECT_NEAR(Jv[c], (plus[c] - minus[c]) / (2 * h), 1e-6 * (1 + std::abs(Jv[c]))) << t;
+    for (std::size_t c = 0; c < n; ++c)
+      EXPECT_NEAR(Jv[c], (plus[c] - minus[c]) / (2 * h), 1e-6 * (1 + std::abs(Jv[c]))) << t;
   }
 }
 
@@ -305,7 +307,8 @@ TEST(JointDriver, ModesHoldTheDrivenJoints) {
   // The hub moved and held: the link alone rings on its spring,
   // omega^2 = k / (m2 b^2 + I2).
   const sim::Scene moved = sim::load_scene_text(
-      kHubAndLink, "hub_and_link", {{"drivers.drive.profile", "move"}, {"drivers.drive.amount", "1"}, {"drivers.drive.duration", "1"}});
+      kHubAndLink, "hub_and_link",
+      {{"drivers.drive.profile", "move"}, {"drivers.drive.amount", "1"}, {"drivers.drive.duration", "1"}});
   const sim::RunResult run = sim::simulate(moved, moved.run);
   ASSERT_EQ(run.status, sim::RunStatus::finished);
   const sim::LinearizationState state = sim::state_of_run(moved, run.trajectory, moved.run.t_end);

@@ -109,8 +109,8 @@ TEST(RightHandSide, JacobianProductsAllocateNothing) {
 // The drivers' rates and accelerations, in the right-hand side and its
 // Jacobian products.
 TEST(RightHandSide, ADrivenCrankAllocatesNothing) {
-  const sim::Scene fourbar = test::scene_file(
-      "fourbar", {{"drivers", "[{joint: crank_pivot, profile: spin_up, amount: 3, duration: 1}]"}});
+  const sim::Scene fourbar =
+      test::scene_file("fourbar", {{"drivers", "[{joint: crank_pivot, profile: spin_up, amount: 3, duration: 1}]"}});
   EXPECT_EQ(allocations_in_rhs(fourbar, true), 0);
   EXPECT_EQ(allocations_in_jacobian_times(fourbar), 0);
 }

@@ -51,7 +51,8 @@ int size_argument(const Args& args, const std::string& flag) {
 }  // namespace
 
 int command_generate(const std::vector<std::string>& argv) {
-  const Args args(argv, {"--stages", "--panels", "--links", "--rods", "--segments", "-o", "--output"}, {"--help", "-h"});
+  const Args args(argv, {"--stages", "--panels", "--links", "--rods", "--segments", "-o", "--output"},
+                  {"--help", "-h"});
   if (args.has("--help") || args.has("-h")) {
     std::printf("%s", kHelp);
     return 0;

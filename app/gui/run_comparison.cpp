@@ -45,6 +45,7 @@ std::vector<RunFigure> run_figures(const sim::RunSummary& s) {
   figures.push_back({"spans of contact", closest ? static_cast<double>(s.clearance->contacts.size()) : kNone});
   figures.push_back({"final energy, J", s.energy_final});
   figures.push_back({"dissipated, J", s.energy_dissipated});
+  if (s.energy_driven) figures.push_back({"put in by drivers, J", *s.energy_driven});
   figures.push_back({"largest gap, m", s.max_closure_gap});
   figures.push_back({"largest gap, rad", s.max_closure_angle});
   for (const auto& [joint, t] : s.latch_times) figures.push_back({"latch " + joint + ", s", t});

@@ -156,6 +156,15 @@ void bind_builder(py::module_& m) {
              b.element(l);
            },
            py::arg("joint"), py::arg("position"), py::arg("stiffness"), py::arg("damping"), py::arg("free_play") = 0.0)
+      .def("driver",
+           [](B& b, const std::string& joint, const std::string& profile, double amount, double duration, double start) {
+             auto d = std::make_shared<sim::JointDriver>(b.joint_index(joint, "drivers.joint"));
+             const auto parsed = sim::parse_driver_profile(profile);
+             if (!parsed) throw py::value_error("profile: expected move or spin_up, got '" + profile + "'");
+             d->profile = *parsed, d->amount = amount, d->duration = duration, d->start = start;
+             b.element(d);
+           },
+           py::arg("joint"), py::arg("profile"), py::arg("amount"), py::arg("duration"), py::arg("start") = 0.0)
       .def("point_spring",
            [](B& b, const std::string& name, const std::string& body_a, const sim::Vec3& point_a,
               const std::string& body_b, const sim::Vec3& point_b, double stiffness, double rest_length,

@@ -89,6 +89,19 @@ def test_a_scene_built_in_code_runs_as_its_closed_form():
     assert "name: rod" in text and "gravity: [0, 0, -9.81]" in text
 
 
+def test_a_driver_moves_the_rod_and_reports_its_torque():
+    b = pendulum_builder()
+    b.driver("h", profile="move", amount=math.pi / 2, duration=2)
+    b.run(t_end=3, rtol=1e-10, atol=1e-12)
+    run = unfurl.simulate(b.build())
+    # tau = I_o theta'' + m g d sin(theta) at the state reached; held at
+    # 90 degrees after the move, the weight's moment.
+    theta = run.trajectory["q.h"]
+    assert abs(theta[-1] - math.pi / 2) < 1e-8
+    assert abs(run.loads["drive_torque.h"][-1] - 1.5 * 9.81 * 0.4) < 1e-8
+    assert run.loads.unit("drive_torque.h") == "N m"
+
+
 def test_the_builder_checks_as_a_file_is_checked():
     b = pendulum_builder()
     b.body("arm", parent="rod", mass=0, inertia=[1, 1, 1], joint=dict(name="k", type="revolute"))

@@ -138,7 +138,8 @@ class SceneBuilder:
 
     Methods: fixed_base, free_base, body (joint: a dict with name, type,
     axis, axis2, parent_point, child_point and an optional compliance dict),
-    spring, damper, friction, latch, point_spring, bushing, applied_force,
+    spring, damper, friction, latch, driver (joint, profile "move" or
+    "spin_up", amount, duration, start), point_spring, bushing, applied_force,
     gravity, loop, sensor, initial, run, build. Each checks what it is
     given; build() checks the whole scene as a file is checked and raises
     SceneError naming the field.

@@ -125,7 +125,8 @@ void add_curves(PlotSpec& spec, PlotKind kind, const sim::Scene& scene, const si
         added.push_back(series(tr, "regulator", palette(5), [](const sim::Sample& s) { return s.energy.regulator; }));
       added.push_back(series(tr, "dissipated", palette(6), [](const sim::Sample& s) { return s.energy.dissipated; }));
       added.back().dashed = true;
-      if (std::none_of(tr.samples.begin(), tr.samples.end(), [](const sim::Sample& s) { return s.energy.driven != 0; })) {
+      if (std::none_of(tr.samples.begin(), tr.samples.end(),
+                       [](const sim::Sample& s) { return s.energy.driven != 0; })) {
         added.push_back(
             series(tr, "total + dissipated", palette(7), [](const sim::Sample& s) { return s.energy.balance(); }));
       } else {

@@ -37,8 +37,8 @@ void DissipationMeter::advance(Integrator& integrator, double t) {
     integrator.interpolate(t_k, y_.data());
     integrator.interpolate_rate(t_k, ydot_.data());
     if (dissipative_)
-      sum += weights[k] *
-             dynamics_.dissipation(y_.data() + dynamics_.layout().q(), ydot_.data() + dynamics_.layout().q());
+      sum +=
+          weights[k] * dynamics_.dissipation(y_.data() + dynamics_.layout().q(), ydot_.data() + dynamics_.layout().q());
     if (driven_) drive_sum += weights[k] * dynamics_.drive_power(t_k, y_.data());
   }
   work_ += half * sum;

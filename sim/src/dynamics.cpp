@@ -127,15 +127,10 @@ std::vector<double> Dynamics::initial_state() {
     std::copy(scene_.p0.begin(), scene_.p0.end(), y.begin() + layout_.p());
   } else {
     // p = A^T mu with mu the subtree momenta of the given joint rates (a
-    // driven joint's the driver's; runs start at t = 0).
+    // driven joint's is 0: every profile starts at rest, and validation
+    // refuses another).
     configure(scene_.q0.data());
-    drive(0);
-    std::vector<double> dq0 = scene_.dq0;
-    for (const JointDriver* d : drivers_) {
-      const int c = model.velocity_of(d->joint).value;
-      dq0[c] = driven_rate_[c];
-    }
-    body_velocities(dq0.data(), true);
+    body_velocities(scene_.dq0.data(), true);
     for (int i = 0; i < model.size(); ++i) F_[i] = model.bodies[i].spatial_mass() * v_[i];
     sweep_.generalized_forces(F_, y.data() + layout_.p());
   }

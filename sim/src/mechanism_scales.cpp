@@ -1,5 +1,7 @@
 #include "unfurl/sim/mechanism_scales.hpp"
 
+#include "unfurl/sim/elements/joint_driver.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -38,6 +40,9 @@ MechanismScales mechanism_scales(const Scene& scene, Sweep& sweep) {
     if (s.inertia[c] > 0) rate = std::max(rate, std::sqrt(stiffness[c] / s.inertia[c]));
     rate = std::max(rate, std::abs(scene.dq0[c]) / (linear ? s.length : 1.0));
   }
+  // What the drivers make it do.
+  for (const JointDriver* d : scene.elements_of<JointDriver>())
+    rate = std::max(rate, d->peak_rate() / (model.joints[d->joint].type == JointType::prismatic ? s.length : 1.0));
   rate = std::max(rate, std::sqrt(scene.gravity().norm() / s.length));
   // Nothing moves it by itself: one turn over the run.
   s.rate = rate > 0 ? rate : 2 * M_PI / scene.run.t_end;

@@ -117,7 +117,9 @@ class Linearizer {
 
   // L^-T for M = L L^T at q (on the free coordinates, S L_f^-T with M_f =
   // S^T M S, where drivers hold some).
-  Eigen::MatrixXd inverse_factor(const std::vector<double>& q) { return inverse_factor_of(dynamics_.mass_matrix(q.data())); }
+  Eigen::MatrixXd inverse_factor(const std::vector<double>& q) {
+    return inverse_factor_of(dynamics_.mass_matrix(q.data()));
+  }
   Eigen::MatrixXd inverse_factor_of(const Eigen::MatrixXd& M) const {
     const int n = free_coordinates();
     const Eigen::LLT<Eigen::MatrixXd> llt(held_.size() ? Eigen::MatrixXd(held_.transpose() * M * held_) : M);

@@ -43,6 +43,10 @@ void NewtonPreconditioner::setup(const double* y, const double* ydot, double gam
     scene.elements[k]->add_joint_stiffness(
         dynamics_.element_state(k, q, w_.data(), no_poses, no_velocities, Vec6::Zero()), RatesOut(stiffness_.data()),
         RatesOut(damping_.data()));
+  // A driven joint's row of the Newton matrix is the identity (its p is
+  // not a state): nothing of its elements' enters.
+  for (int c = 0; c < model.nv; ++c)
+    if (model.joints[model.joint_of_velocity[c]].driven) stiffness_[c] = damping_[c] = 0;
   for (int c = 0; c < model.nv; ++c) diagonal_[c] = gamma * damping_[c] + gamma * gamma * stiffness_[c];
   std::copy_n(q, model.nq, q_.begin());
   sweep_.set_configuration(q, diagonal_.data());

@@ -1,7 +1,6 @@
 #include "unfurl/sim/scene_builder.hpp"
 
 #include "unfurl/sim/elements/gravity.hpp"
-#include "unfurl/sim/elements/joint_driver.hpp"
 #include "unfurl/sim/scene_validation.hpp"
 
 namespace unfurl::sim {
@@ -81,9 +80,6 @@ SceneBuilder& SceneBuilder::body(const Body& body, const std::string& parent, Jo
 }
 
 SceneBuilder& SceneBuilder::element(std::shared_ptr<const ForceElement> element) {
-  if (const auto* driver = dynamic_cast<const JointDriver*>(element.get());
-      driver && driver->joint >= 0 && driver->joint < scene_.model.size())
-    scene_.model.joints[driver->joint].driven = true;
   scene_.elements.push_back(std::move(element));
   return *this;
 }

@@ -669,9 +669,8 @@ SceneFile SceneReader::read(const std::string& text_in, const std::vector<Overri
   if (root["loads"]) fail(root["loads"], "loads", "renamed: the constant forces on bodies are `applied_forces:`");
   check_keys(root,
              {"name", "description", "base", "gravity", "bodies", "springs", "dampers", "stops", "friction", "point_springs",
-              "bushings", "applied_forces", "latches", "drivers", "loops", "sensors", "regulator", "initial", "closure_tolerance",
-              "torque_margin",
-              "run"},
+              "bushings", "applied_forces", "latches", "drivers", "loops", "sensors", "regulator", "initial",
+              "closure_tolerance", "torque_margin", "run"},
              "");
   SceneBuilder b(root["name"] ? text(root["name"], "name") : "scene",
                  root["description"] ? text(root["description"], "description") : "");

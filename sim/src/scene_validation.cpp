@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "unfurl/sim/elements/joint_compliance.hpp"
+#include "unfurl/sim/elements/joint_driver.hpp"
 #include "unfurl/sim/kinematics.hpp"
 #include "unfurl/sim/mechanism_scales.hpp"
 #include "unfurl/sim/number_text.hpp"
@@ -130,8 +131,7 @@ void check_initial_state(Scene& scene) {
       if (scene.dq0[c] != 0)
         throw SceneInvalid("initial.dq." + j.name, "joint '" + j.name + "' is driven: its rate is its driver's");
       if (!scene.p0.empty() && scene.p0[c] != 0)
-        throw SceneInvalid("initial.p." + j.name,
-                           "joint '" + j.name + "' is driven: its momentum is not a state");
+        throw SceneInvalid("initial.p." + j.name, "joint '" + j.name + "' is driven: its momentum is not a state");
     }
     if (!j.has_quaternion()) continue;
     Eigen::Map<Eigen::Vector4d> quaternion(&scene.q0[(model.first_position[i] + j.quaternion_offset()).value]);
@@ -287,6 +287,11 @@ std::vector<std::string> scene_warnings(const Scene& scene) {
 }
 
 void validate(Scene& scene) {
+  // Which joints are driven follows from the drivers alone (the sweep reads
+  // it off the model).
+  for (Joint& j : scene.model.joints) j.driven = false;
+  for (const JointDriver* d : scene.elements_of<JointDriver>())
+    if (d->joint >= 0 && d->joint < scene.model.size()) scene.model.joints[d->joint].driven = true;
   validate_model(scene);
   check_initial_state(scene);
   for (std::size_t k = 0; k < scene.elements.size(); ++k) scene.elements[k]->validate(scene, element_field(scene, k));

@@ -46,7 +46,8 @@ std::vector<LoadColumn> JointDriver::load_columns(const Model& model) const { re
 void JointDriver::validate(const Scene& scene, const std::string& field) const {
   JointElement::validate(scene, field);
   const Joint& j = scene.model.joints[joint];
-  if (j.compliant) throw SceneInvalid(field + ".joint", "joint '" + j.name + "' is compliant: a driver holds a rigid joint");
+  if (j.compliant)
+    throw SceneInvalid(field + ".joint", "joint '" + j.name + "' is compliant: a driver holds a rigid joint");
   if (!std::isfinite(amount)) throw SceneInvalid(field + ".amount", "must be a finite number");
   check_positive(duration, field + ".duration");
   check_non_negative(start, field + ".start");
@@ -55,7 +56,8 @@ void JointDriver::validate(const Scene& scene, const std::string& field) const {
   if (drivers > 1) throw SceneInvalid(field + ".joint", "joint '" + j.name + "' has more than one driver");
   for (const Latch* latch : scene.latches())
     if (latch->joint == joint)
-      throw SceneInvalid(field + ".joint", "joint '" + j.name + "' has a latch: a driven joint's motion is the driver's");
+      throw SceneInvalid(field + ".joint",
+                         "joint '" + j.name + "' has a latch: a driven joint's motion is the driver's");
 }
 
 std::vector<ElementParameter> JointDriver::parameters() const {

@@ -112,8 +112,8 @@ class Dynamics {
   // sides. J then leaves out how the gains turn with q, which only the
   // Newton iteration sees (its residual is f itself, exact), and a product
   // costs the sweeps and one triangular solve instead of a factorization
-  // and a refined solve. y, f(y) and the gains' configuration key make the
-  // product's base: while they stand (GMRES asks for several products at
+  // and a refined solve. y, f(y), the gains' configuration key (and t, with
+  // drivers) make the product's base: while they stand (GMRES asks for several products at
   // one iterate) the base is reused. False where f is not finite.
   bool jacobian_times(double t, const double* y, const double* v, double* Jv);
   long jacobian_product_evals() const { return jacobian_product_evals_; }
@@ -156,7 +156,8 @@ class Dynamics {
   // - the generalized force element k alone puts on every velocity
   //   coordinate (nv), at rates w;
   Eigen::VectorXd element_generalized_forces(std::size_t k, const double* q, const double* w);
-  // - the mass matrix, p = M(q) w;
+  // - the mass matrix, T = w^T M(q) w / 2 (p = M w but on a driven joint,
+  //   whose p is not a state);
   Eigen::MatrixXd mass_matrix(const double* q);
   // - the loops' gap on the active components in the closure's metric (a
   //   distance over the mechanism's length, an angle), and its rate per

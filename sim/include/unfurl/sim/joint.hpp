@@ -51,8 +51,8 @@ struct Joint {
   Vec3 parent_point = Vec3::Zero(); // r^k: the hinge point in the parent frame
   Vec3 child_point = Vec3::Zero();  // r^i: the same point in the child frame
   bool compliant = false;           // a revolute joint whose pin gives (above)
-  // Its motion is prescribed (a JointDriver says how; SceneBuilder sets
-  // this with the driver): the sweep takes its rate, not its momentum.
+  // Its motion is prescribed (a JointDriver says how; validate() sets this
+  // from the drivers): the sweep takes its rate, not its momentum.
   bool driven = false;
 
   // n_i: velocity coordinates (and momenta).

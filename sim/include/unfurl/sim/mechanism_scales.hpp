@@ -19,7 +19,7 @@ struct MechanismScales {
   // rad/s: the fastest rate the mechanism has of its own: the highest
   // frequency of a joint's stiffness (latches counted engaged) against its
   // articulated inertia, the pendulum frequency of gravity over `length`,
-  // and the initial rates.
+  // the initial rates and the drivers' peak rates.
   double rate = 1;
   // Per velocity coordinate: its articulated inertia at q0 (kg m^2, or kg
   // on a slider).

@@ -15,9 +15,10 @@
 // A driven joint (Joint::driven) has its rate and acceleration given: it
 // passes its whole articulated inertia to its parent, as a locked joint
 // does, and its rate's momentum with it (the hybrid form of the
-// recursion). Its entry of p is not read; the passes take its rate from
-// `driven` (per velocity coordinate), zero where that is null: the load
-// cases see the driven joints locked, as the motor holds them.
+// recursion, as in Featherstone's Rigid Body Dynamics Algorithms, ch. 9).
+// Its entry of p is not read; the single-column passes (the state's) take
+// its rate from `driven` (per velocity coordinate), and the load cases
+// pass none: they see the driven joints locked, as the motor holds them.
 #pragma once
 
 #include <vector>
@@ -46,8 +47,8 @@ class Sweep {
   }
 
   // The forward pass: dq_i and v_i from p, phi* and the base velocity.
-  void velocities(const double* p, const std::vector<Vec6>& phi, const Vec6& v_base, double* dq,
-                  std::vector<Vec6>& v, const double* driven = nullptr) const {
+  void velocities(const double* p, const std::vector<Vec6>& phi, const Vec6& v_base, double* dq, std::vector<Vec6>& v,
+                  const double* driven = nullptr) const {
     auto dq_ = coordinates(dq);
     velocity_pass(coordinates(p), phi, v_base, dq_, v, driven);
   }
@@ -81,8 +82,7 @@ class Sweep {
   // in its frame). The base moves steadily (its acceleration is zero). A
   // driven joint's acceleration is `driven`'s entry (zero where null).
   void accelerations(const std::vector<Vec6>& v, const double* dq, const std::vector<Vec6>& F, const double* Q,
-                     std::vector<Vec6>& bias, std::vector<Vec6>& a, double* ddq,
-                     const double* driven = nullptr) const;
+                     std::vector<Vec6>& bias, std::vector<Vec6>& a, double* ddq, const double* driven = nullptr) const;
 
   // M*_i a_i + p^A_i: the joint wrench from accelerations() results.
   Vec6 joint_wrench(int i, const std::vector<Vec6>& bias, const std::vector<Vec6>& a) const {
@@ -104,8 +104,9 @@ class Sweep {
 
   const Placement& placement(int i) const { return X_[i]; }
   // The articulated inertia of joint i's coordinate r, (D_i^-1)_rr: the
-  // inertia it moves against with every other joint free (kg m^2 for a
-  // turn, kg for a slide).
+  // inertia it moves against with every other joint free but the driven
+  // ones (kg m^2 for a turn, kg for a slide); a driven joint's is A_i^T M*_i
+  // A_i, what its driver moves.
   double articulated_inertia(int i, int r = 0) const;
   // A_i at the configuration, 6 x n_i in the leading columns.
   Mat6 motion_axes(int i) const {

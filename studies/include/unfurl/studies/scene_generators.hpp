@@ -28,7 +28,7 @@ sim::SceneFile generate_zfold(int panels);
 // model leaves out: the reference a flexible body's modes are checked
 // against.
 struct BeamSpec {
-  double length = 10;         // m
+  double length = 10;                // m
   double bending_stiffness = 1.4e4;  // EI, N m^2
   double mass_per_length = 1.2;      // rho A, kg/m
   double spin_rate = 6;              // rad/s, the hub's final rate

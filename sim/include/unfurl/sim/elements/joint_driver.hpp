@@ -21,6 +21,7 @@
 //   x = 6 t - 45.
 #pragma once
 
+#include <cmath>
 #include <optional>
 #include <string>
 
@@ -43,6 +44,9 @@ class JointDriver : public JointElement {
     double x = 0, rate = 0, acceleration = 0;
   };
   Motion at(double t) const;
+  // The largest |rate| it reaches: 2 amount / duration for a move, amount
+  // for a spin-up.
+  double peak_rate() const { return profile == Profile::move ? 2 * std::abs(amount) / duration : std::abs(amount); }
 
   std::string kind() const override { return "driver"; }
   std::string list() const override { return "drivers"; }
