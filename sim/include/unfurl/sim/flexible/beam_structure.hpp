@@ -1,0 +1,34 @@
+// A straight beam along the body frame's x-axis, for a yoke or a boom:
+// Euler-Bernoulli elements (cubic Hermite in bending about y and z, linear
+// in stretch and twist), consistent masses, six degrees of freedom at each
+// node (u_x, u_y, u_z, theta_x, theta_y, theta_z), nodes from x = 0.
+// Shear deformation is left out: it matters where the section's depth is
+// not small against a bending half-wave, which is not a deploying boom's
+// first modes.
+#pragma once
+
+#include <vector>
+
+#include "unfurl/sim/flexible/structure.hpp"
+
+namespace unfurl::sim::flexible {
+
+struct BeamSection {
+  double length = 1;               // m
+  double axial_stiffness = 1;      // EA, N
+  double bending_stiffness_y = 1;  // EI_y, N m^2: bending in the xz-plane
+  double bending_stiffness_z = 1;  // EI_z, N m^2: bending in the xy-plane
+  double torsional_stiffness = 1;  // GJ, N m^2
+  double mass_per_length = 1;      // rho A, kg/m
+  double polar_inertia_per_length = 1;  // rho (I_y + I_z), kg m: the twist's inertia
+  int elements = 8;
+};
+
+enum BeamDof { beam_u_x = 0, beam_u_y, beam_u_z, beam_theta_x, beam_theta_y, beam_theta_z };
+
+Structure beam_structure(const BeamSection& section);
+
+// Every degree of freedom of a node: what a clamp there holds.
+std::vector<int> node_dofs(const Structure& structure, int node);
+
+}  // namespace unfurl::sim::flexible
