@@ -54,6 +54,15 @@ Structure beam_structure(const BeamSection& s) {
   const int n = 6 * static_cast<int>(beam.nodes.size());
   beam.M.setZero(n, n);
   beam.K.setZero(n, n);
+  beam.node_motion = Eigen::MatrixXd::Identity(6, 6);
+  // Translation v + w x r, rotation w.
+  beam.rigid.setZero(n, 6);
+  for (int node = 0; node <= s.elements; ++node) {
+    const Eigen::Vector3d& r = beam.nodes[node];
+    beam.rigid.block<3, 3>(beam.dof(node, beam_u_x), 0).setIdentity();
+    beam.rigid.block<3, 3>(beam.dof(node, beam_u_x), 3) << 0, r.z(), -r.y(), -r.z(), 0, r.x(), r.y(), -r.x(), 0;
+    beam.rigid.block<3, 3>(beam.dof(node, beam_theta_x), 3).setIdentity();
+  }
   for (int e = 0; e < s.elements; ++e) {
     add_field(beam, e, h, beam_u_x, -1, 1, 1, s.axial_stiffness, s.mass_per_length);
     add_field(beam, e, h, beam_theta_x, -1, 1, 1, s.torsional_stiffness, s.polar_inertia_per_length);

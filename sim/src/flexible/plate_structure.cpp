@@ -58,6 +58,21 @@ Structure plate_structure(const PlateSpec& s) {
   const int n = 4 * static_cast<int>(plate.nodes.size());
   plate.M.setZero(n, n);
   plate.K.setZero(n, n);
+  // w along z; the rotation about x is w_y, about y -w_x.
+  plate.node_motion.setZero(6, 4);
+  plate.node_motion(2, plate_w) = 1;
+  plate.node_motion(3, plate_w_y) = 1;
+  plate.node_motion(4, plate_w_x) = -1;
+  // w = v_z + w_x y - w_y x for the frame's motion (v, w).
+  plate.rigid.setZero(n, 6);
+  for (int node = 0; node < static_cast<int>(plate.nodes.size()); ++node) {
+    const Eigen::Vector3d& r = plate.nodes[node];
+    plate.rigid(plate.dof(node, plate_w), 2) = 1;
+    plate.rigid(plate.dof(node, plate_w), 3) = r.y();
+    plate.rigid(plate.dof(node, plate_w), 4) = -r.x();
+    plate.rigid(plate.dof(node, plate_w_x), 4) = -1;
+    plate.rigid(plate.dof(node, plate_w_y), 3) = 1;
+  }
   // Every element is the same rectangle.
   Mat16 Me, Ke;
   element_matrices(s, hx, hy, Me, Ke);

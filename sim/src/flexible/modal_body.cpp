@@ -1,0 +1,71 @@
+#include "unfurl/sim/flexible/modal_body.hpp"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "unfurl/sim/flexible/structural_modes.hpp"
+
+namespace unfurl::sim::flexible {
+namespace {
+
+// The rows and columns of x at the listed indices.
+Eigen::MatrixXd block(const Eigen::MatrixXd& x, const std::vector<int>& rows, const std::vector<int>& cols) {
+  Eigen::MatrixXd out(rows.size(), cols.size());
+  for (size_t a = 0; a < rows.size(); ++a)
+    for (size_t b = 0; b < cols.size(); ++b) out(a, b) = x(rows[a], cols[b]);
+  return out;
+}
+
+// The constraint modes: for each interface degree of freedom c, the static
+// shape with u_c = 1, the other interface and frame ones 0, the interior
+// free of load (K_II psi_I = -K_Ic).
+Eigen::MatrixXd constraint_modes(const Structure& s, const std::vector<int>& interface,
+                                 const std::vector<int>& interior) {
+  const Eigen::LDLT<Eigen::MatrixXd> K_II(block(s.K, interior, interior));
+  const Eigen::MatrixXd psi_I = K_II.solve(-block(s.K, interior, interface));
+  if (K_II.info() != Eigen::Success || !K_II.isPositive() || !psi_I.allFinite())
+    throw std::invalid_argument("flexible body: the frame's attachment leaves a rigid motion of the body free");
+  Eigen::MatrixXd psi = Eigen::MatrixXd::Zero(s.size(), interface.size());
+  for (size_t c = 0; c < interface.size(); ++c) psi(interface[c], c) = 1;
+  for (size_t a = 0; a < interior.size(); ++a) psi.row(interior[a]) = psi_I.row(a);
+  return psi;
+}
+
+}  // namespace
+
+ModalBody reduce(const Structure& s, const ModalReduction& reduction) {
+  std::vector<char> role(s.size(), 0);  // 1 frame, 2 interface
+  for (int d : reduction.frame_dofs) role.at(d) = 1;
+  for (int d : reduction.interface_dofs) role.at(d) = 2;
+  std::vector<int> held, interior;
+  for (int d = 0; d < s.size(); ++d) (role[d] ? held : interior).push_back(d);
+
+  const StructuralModes fixed = structural_modes(s, held);
+  if (fixed.rigid > 0)
+    throw std::invalid_argument("flexible body: the frame's attachment leaves a rigid motion of the body free");
+  if (fixed.frequency_hz.size() < reduction.normal_modes)
+    throw std::invalid_argument("flexible body: " + std::to_string(reduction.normal_modes) + " modes asked, the mesh has " +
+                                std::to_string(fixed.frequency_hz.size()));
+  Eigen::MatrixXd T(s.size(), reduction.normal_modes + reduction.interface_dofs.size());
+  T << fixed.shape.leftCols(reduction.normal_modes), constraint_modes(s, reduction.interface_dofs, interior);
+
+  // Orthonormalized: the eigenvectors of the reduced pair, the frame held.
+  const Eigen::MatrixXd M_T = s.M * T;
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(T.transpose() * s.K * T,
+                                                                         T.transpose() * M_T);
+  if (solver.info() != Eigen::Success) throw std::invalid_argument("flexible body: the reduced mass is singular");
+  ModalBody body;
+  body.shape = T * solver.eigenvectors();
+  body.frequency_hz = solver.eigenvalues().cwiseMax(0.0).cwiseSqrt() / (2 * M_PI);
+  body.coupling = s.rigid.transpose() * s.M * body.shape;
+  return body;
+}
+
+Eigen::MatrixXd ModalBody::node_shape(const Structure& structure, int node) const {
+  return structure.node_motion * shape.middleRows(structure.dof(node, 0), structure.dofs_per_node);
+}
+
+}  // namespace unfurl::sim::flexible
