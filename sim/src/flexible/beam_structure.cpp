@@ -72,6 +72,29 @@ Structure beam_structure(const BeamSection& s) {
   return beam;
 }
 
+Eigen::MatrixXd geometric_stiffness(const BeamSection& s, const std::function<double(double)>& axial_force) {
+  const int n = 6 * (s.elements + 1);
+  Eigen::MatrixXd KG = Eigen::MatrixXd::Zero(n, n);
+  const double h = s.length / s.elements;
+  // Bending in xy (v, theta_z = v') and in xz (w, theta_y = -w').
+  const int value[2] = {beam_u_y, beam_u_z}, slope[2] = {beam_theta_z, beam_theta_y};
+  const double sign[2] = {1, -1};
+  for (int e = 0; e < s.elements; ++e)
+    for (int g = 0; g < 4; ++g) {
+      const double xi = GaussFour::x[g];
+      const CubicHermiteShape S(xi, h);
+      const double N_dx = axial_force((e + xi) * h) * GaussFour::w[g] * h;
+      for (int plane = 0; plane < 2; ++plane) {
+        const int to[4] = {6 * e + value[plane], 6 * e + slope[plane], 6 * (e + 1) + value[plane],
+                           6 * (e + 1) + slope[plane]};
+        const double d[4] = {S.dN[0], sign[plane] * S.dN[1], S.dN[2], sign[plane] * S.dN[3]};
+        for (int a = 0; a < 4; ++a)
+          for (int b = 0; b < 4; ++b) KG(to[a], to[b]) += N_dx * d[a] * d[b];
+      }
+    }
+  return KG;
+}
+
 std::vector<int> node_dofs(const Structure& structure, int node) {
   std::vector<int> dofs;
   for (int k = 0; k < structure.dofs_per_node; ++k) dofs.push_back(structure.dof(node, k));

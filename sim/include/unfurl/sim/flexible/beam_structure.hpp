@@ -7,6 +7,7 @@
 // first modes.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "unfurl/sim/flexible/structure.hpp"
@@ -27,6 +28,12 @@ struct BeamSection {
 enum BeamDof { beam_u_x = 0, beam_u_y, beam_u_z, beam_theta_x, beam_theta_y, beam_theta_z };
 
 Structure beam_structure(const BeamSection& section);
+
+// The geometric stiffness of an axial force N(x) along the beam (tension
+// positive, N): the second-order work (1/2) N (v'^2 + w'^2) of the bending
+// slopes, the stiffening a spinning beam's centrifugal tension gives it
+// (Kane, Ryan and Banerjee, 1987). Exact for N up to cubic in x.
+Eigen::MatrixXd geometric_stiffness(const BeamSection& section, const std::function<double(double)>& axial_force);
 
 // Every degree of freedom of a node: what a clamp there holds.
 std::vector<int> node_dofs(const Structure& structure, int node);
