@@ -1,0 +1,74 @@
+#include "unfurl/sim/flexible/inertia_invariants.hpp"
+
+#include "unfurl/sim/spatial.hpp"
+
+namespace unfurl::sim::flexible {
+
+InertiaInvariants::InertiaInvariants(const std::vector<MassPoint>& points, const Eigen::MatrixXd& shape)
+    : m_(static_cast<int>(shape.cols())),
+      S0_(Vec3::Zero()),
+      S1_(Eigen::Matrix3Xd::Zero(3, m_)),
+      C0_(Eigen::Matrix3Xd::Zero(3, m_)),
+      J0_(Mat3::Zero()),
+      J1_(m_, Mat3::Zero()),
+      J2_(m_ * m_, Mat3::Zero()),
+      C1_(m_, Eigen::Matrix3Xd::Zero(3, m_)),
+      Me_(Eigen::MatrixXd::Zero(m_, m_)) {
+  Eigen::MatrixXd local(0, m_);
+  for (const MassPoint& p : points) {
+    local.resize(p.dofs.size(), m_);
+    for (size_t a = 0; a < p.dofs.size(); ++a) local.row(a) = shape.row(p.dofs[a]);
+    const Eigen::Matrix3Xd Phi = p.N * local, Psi = p.R * local;
+    const Mat3 r = skew(p.r);
+    mass_ += p.m;
+    S0_ += p.m * p.r;
+    S1_ += p.m * Phi;
+    J0_ += p.m * r.transpose() * r + p.J;
+    C0_ += p.m * r * Phi + p.J * Psi;
+    Me_ += p.m * Phi.transpose() * Phi + Psi.transpose() * p.J * Psi;
+    for (int k = 0; k < m_; ++k) {
+      const Mat3 phi_k = skew(Phi.col(k));
+      J1_[k] += p.m * (r.transpose() * phi_k + phi_k.transpose() * r);
+      C1_[k] += p.m * phi_k * Phi;
+      for (int l = 0; l < m_; ++l) J2_[k * m_ + l] += p.m * phi_k.transpose() * skew(Phi.col(l));
+    }
+  }
+}
+
+Eigen::MatrixXd InertiaInvariants::mass_matrix(const Eigen::VectorXd& eta) const {
+  const Vec3 S = S0_ + S1_ * eta;
+  Mat3 J = J0_;
+  Eigen::Matrix3Xd C = C0_;
+  for (int k = 0; k < m_; ++k) {
+    J += eta[k] * J1_[k];
+    C += eta[k] * C1_[k];
+    for (int l = 0; l < m_; ++l) J += eta[k] * eta[l] * J2_[k * m_ + l];
+  }
+  Eigen::MatrixXd M(6 + m_, 6 + m_);
+  M.topLeftCorner<3, 3>() = mass_ * Mat3::Identity();
+  M.block<3, 3>(0, 3) = -skew(S);
+  M.block<3, 3>(3, 0) = skew(S);
+  M.block<3, 3>(3, 3) = J;
+  M.topRightCorner(3, m_) = S1_;
+  M.block(3, 6, 3, m_) = C;
+  M.bottomLeftCorner(m_, 3) = S1_.transpose();
+  M.block(6, 3, m_, 3) = C.transpose();
+  M.bottomRightCorner(m_, m_) = Me_;
+  return M;
+}
+
+// d/d eta_k of (1/2) V^T M^ V: -v^T (S1_k)~ w + (1/2) w^T (J1_k + 2 eta_l
+// J2_kl) w + w^T C1_k eta' (J2_lk = J2_kl^T gives the factor 2).
+Eigen::VectorXd InertiaInvariants::kinetic_gradient(const Eigen::VectorXd& eta, const Eigen::VectorXd& V) const {
+  const Vec3 v = V.head<3>(), w = V.segment<3>(3);
+  const Eigen::VectorXd eta_dot = V.tail(m_);
+  Eigen::VectorXd g(m_);
+  for (int k = 0; k < m_; ++k) {
+    Mat3 Jk = 0.5 * J1_[k];
+    for (int l = 0; l < m_; ++l) Jk += eta[l] * J2_[k * m_ + l];
+    g[k] = -v.dot(skew(S1_.col(k)) * w) + w.dot(Jk * w) + w.dot(C1_[k] * eta_dot);
+  }
+  return g;
+}
+
+}  // namespace unfurl::sim::flexible
