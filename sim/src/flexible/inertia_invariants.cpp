@@ -4,18 +4,22 @@
 
 namespace unfurl::sim::flexible {
 
-InertiaInvariants::InertiaInvariants(const std::vector<MassPoint>& points, const Eigen::MatrixXd& shape)
+InertiaInvariants::InertiaInvariants(const std::vector<MassPoint>& points, const Eigen::MatrixXd& shape,
+                                     const std::vector<Shortening>& shortening)
     : m_(static_cast<int>(shape.cols())),
       S0_(Vec3::Zero()),
       S1_(Eigen::Matrix3Xd::Zero(3, m_)),
       C0_(Eigen::Matrix3Xd::Zero(3, m_)),
       J0_(Mat3::Zero()),
+      S2_(m_ * m_, Vec3::Zero()),
+      E_(m_, Eigen::Matrix3Xd::Zero(3, m_)),
       J1_(m_, Mat3::Zero()),
       J2_(m_ * m_, Mat3::Zero()),
       C1_(m_, Eigen::Matrix3Xd::Zero(3, m_)),
       Me_(Eigen::MatrixXd::Zero(m_, m_)) {
   Eigen::MatrixXd local(0, m_);
-  for (const MassPoint& p : points) {
+  for (size_t g = 0; g < points.size(); ++g) {
+    const MassPoint& p = points[g];
     local.resize(p.dofs.size(), m_);
     for (size_t a = 0; a < p.dofs.size(); ++a) local.row(a) = shape.row(p.dofs[a]);
     const Eigen::Matrix3Xd Phi = p.N * local, Psi = p.R * local;
@@ -32,41 +36,64 @@ InertiaInvariants::InertiaInvariants(const std::vector<MassPoint>& points, const
       C1_[k] += p.m * phi_k * Phi;
       for (int l = 0; l < m_; ++l) J2_[k * m_ + l] += p.m * phi_k.transpose() * skew(Phi.col(l));
     }
+    if (shortening.empty()) continue;
+    const Vec3 e = shortening[g].axis;
+    const Eigen::MatrixXd& G = shortening[g].G;
+    const Mat3 e_skew = skew(e);
+    for (int k = 0; k < m_; ++k) {
+      const Eigen::Matrix3Xd e_Gk = e * G.row(k);  // 3 x m
+      E_[k] += p.m * e_Gk;
+      C1_[k] -= p.m * r * e_Gk;
+      for (int l = 0; l < m_; ++l) {
+        S2_[k * m_ + l] += p.m * G(k, l) * e;
+        J2_[k * m_ + l] -= 0.5 * p.m * G(k, l) * (r.transpose() * e_skew + e_skew.transpose() * r);
+      }
+    }
   }
 }
 
 Eigen::MatrixXd InertiaInvariants::mass_matrix(const Eigen::VectorXd& eta) const {
-  const Vec3 S = S0_ + S1_ * eta;
+  Vec3 S = S0_ + S1_ * eta;
+  Eigen::Matrix3Xd B = S1_, C = C0_;
   Mat3 J = J0_;
-  Eigen::Matrix3Xd C = C0_;
   for (int k = 0; k < m_; ++k) {
+    B -= eta[k] * E_[k];
     J += eta[k] * J1_[k];
     C += eta[k] * C1_[k];
-    for (int l = 0; l < m_; ++l) J += eta[k] * eta[l] * J2_[k * m_ + l];
+    for (int l = 0; l < m_; ++l) {
+      const double kl = eta[k] * eta[l];
+      S -= 0.5 * kl * S2_[k * m_ + l];
+      J += kl * J2_[k * m_ + l];
+    }
   }
   Eigen::MatrixXd M(6 + m_, 6 + m_);
   M.topLeftCorner<3, 3>() = mass_ * Mat3::Identity();
   M.block<3, 3>(0, 3) = -skew(S);
   M.block<3, 3>(3, 0) = skew(S);
   M.block<3, 3>(3, 3) = J;
-  M.topRightCorner(3, m_) = S1_;
+  M.topRightCorner(3, m_) = B;
   M.block(3, 6, 3, m_) = C;
-  M.bottomLeftCorner(m_, 3) = S1_.transpose();
+  M.bottomLeftCorner(m_, 3) = B.transpose();
   M.block(6, 3, m_, 3) = C.transpose();
   M.bottomRightCorner(m_, m_) = Me_;
   return M;
 }
 
-// d/d eta_k of (1/2) V^T M^ V: -v^T (S1_k)~ w + (1/2) w^T (J1_k + 2 eta_l
-// J2_kl) w + w^T C1_k eta' (J2_lk = J2_kl^T gives the factor 2).
+// d/d eta_k of T = (1/2) m v^2 - v^T S~ w + v^T B eta' + (1/2) w^T J w +
+// w^T C eta' + (1/2) eta'^T Me eta' (S2's and J2's symmetric parts give
+// the factors 2; J2_lk = J2_kl^T).
 Eigen::VectorXd InertiaInvariants::kinetic_gradient(const Eigen::VectorXd& eta, const Eigen::VectorXd& V) const {
   const Vec3 v = V.head<3>(), w = V.segment<3>(3);
   const Eigen::VectorXd eta_dot = V.tail(m_);
   Eigen::VectorXd g(m_);
   for (int k = 0; k < m_; ++k) {
-    Mat3 Jk = 0.5 * J1_[k];
-    for (int l = 0; l < m_; ++l) Jk += eta[l] * J2_[k * m_ + l];
-    g[k] = -v.dot(skew(S1_.col(k)) * w) + w.dot(Jk * w) + w.dot(C1_[k] * eta_dot);
+    Vec3 dS = S1_.col(k);
+    Mat3 dJ = 0.5 * J1_[k];
+    for (int l = 0; l < m_; ++l) {
+      dS -= eta[l] * S2_[k * m_ + l];
+      dJ += eta[l] * J2_[k * m_ + l];
+    }
+    g[k] = -v.dot(skew(dS) * w) - v.dot(E_[k] * eta_dot) + w.dot(dJ * w) + w.dot(C1_[k] * eta_dot);
   }
   return g;
 }

@@ -65,6 +65,45 @@ std::vector<MassPoint> beam_mass_points(const BeamSection& s) {
   return points;
 }
 
+namespace {
+
+// The slopes v' and w' of every mode at xi in element e: 2 x m.
+Eigen::MatrixXd beam_slopes(const Eigen::MatrixXd& shape, int e, double xi, double h) {
+  const CubicHermiteShape S(xi, h);
+  Eigen::MatrixXd slopes = Eigen::MatrixXd::Zero(2, shape.cols());
+  for (int end = 0; end < 2; ++end) {
+    const int node = 6 * (e + end);
+    slopes.row(0) += S.dN[2 * end] * shape.row(node + beam_u_y) + S.dN[2 * end + 1] * shape.row(node + beam_theta_z);
+    slopes.row(1) += S.dN[2 * end] * shape.row(node + beam_u_z) - S.dN[2 * end + 1] * shape.row(node + beam_theta_y);
+  }
+  return slopes;
+}
+
+// integral over [e h, (e + upto) h] of the slopes' squares, by four Gauss
+// points on that span (exact: the integrand is of degree 4).
+Eigen::MatrixXd squared_slopes(const Eigen::MatrixXd& shape, int e, double upto, double h) {
+  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(shape.cols(), shape.cols());
+  for (int g = 0; g < 4; ++g) {
+    const Eigen::MatrixXd s = beam_slopes(shape, e, upto * GaussFour::x[g], h);
+    G.noalias() += upto * GaussFour::w[g] * h * s.transpose() * s;
+  }
+  return G;
+}
+
+}  // namespace
+
+std::vector<Shortening> beam_shortening(const BeamSection& section, const Eigen::MatrixXd& shape) {
+  std::vector<Shortening> out;
+  const double h = section.length / section.elements;
+  Eigen::MatrixXd before = Eigen::MatrixXd::Zero(shape.cols(), shape.cols());  // up to element e's start
+  for (int e = 0; e < section.elements; ++e) {
+    for (int g = 0; g < 4; ++g)
+      out.push_back({Eigen::Vector3d::UnitX(), before + squared_slopes(shape, e, GaussFour::x[g], h)});
+    before += squared_slopes(shape, e, 1.0, h);
+  }
+  return out;
+}
+
 Eigen::MatrixXd mass_matrix(const std::vector<MassPoint>& points, int size) {
   Eigen::MatrixXd M = Eigen::MatrixXd::Zero(size, size);
   for (const MassPoint& p : points) {

@@ -2,12 +2,21 @@
 // energy T = (1/2) V^T M^(eta) V, V = (v, w, eta') (the frame's velocity,
 // linear first, and the elastic rates), as sums over its mass points
 // (mass_points.hpp) precomputed once, so that M^(eta) and dT/d eta cost
-// O(m^2) an evaluation, whatever the mesh. With rho_g = r_g + Phi_g eta:
-//   M^ = [ m E        -S(eta)~   S1          ]   S(eta) = S0 + S1 eta
-//        [ S(eta)~     J(eta)    C(eta)      ]   J(eta) = J0 + eta_k J1_k + eta_k eta_l J2_kl
-//        [ S1^T        C(eta)^T  Me          ]   C(eta) = C0 + eta_k C1_k
-// (sums over repeated k, l), the terms in eta being what turns a spinning
-// body's centrifugal load into its spin softening. The point inertias
+// O(m^2) an evaluation, whatever the mesh. A point is at
+// rho_g = r_g + Phi_g eta - (1/2) (eta^T G_g eta) e_g (the last term the
+// foreshortening, mass_points.hpp; zero for a plate), moving at
+// v + w x rho_g + B_g eta', B_g = Phi_g - e_g eta^T G_g:
+//   M^ = [ m E        -S(eta)~   B(eta)      ]   S(eta) = sum m_g rho_g, B(eta) = sum m_g B_g
+//        [ S(eta)~     J(eta)    C(eta)      ]   J(eta) = sum m_g rho_g~^T rho_g~
+//        [ B(eta)^T    C(eta)^T  Me          ]   C(eta) = sum m_g rho_g~ B_g, Me = sum m_g Phi_g^T Phi_g
+// The kinetic energy is kept to second order in the deformation, eta and
+// eta' counted alike (S and J to eta^2, B and C to eta, Me constant): the
+// order of linear elasticity, whose stiffening terms it holds, and the
+// equations of motion stay linear in eta at a given frame motion. dT/d eta
+// is that energy's derivative, so the mechanics stays Lagrangian (energy
+// is conserved). The terms in eta are what turn a spinning body's
+// centrifugal load into its spin softening and, through the foreshortening,
+// its stiffening (Kane, Ryan and Banerjee, 1987). The point inertias
 // (the beam's twist) turn with the modes' rotations Psi_g: they add
 // J_g to J0, J_g Psi_g to C0 and Psi_g^T J_g Psi_g to Me; their own
 // turning with the deformation is left out (second order in small
@@ -23,8 +32,10 @@ namespace unfurl::sim::flexible {
 
 class InertiaInvariants {
  public:
-  // shape: the modes over the structure's degrees of freedom (size x m).
-  InertiaInvariants(const std::vector<MassPoint>& points, const Eigen::MatrixXd& shape);
+  // shape: the modes over the structure's degrees of freedom (size x m);
+  // shortening: per point (beam_shortening), or none.
+  InertiaInvariants(const std::vector<MassPoint>& points, const Eigen::MatrixXd& shape,
+                    const std::vector<Shortening>& shortening = {});
 
   int coordinates() const { return m_; }
   double mass() const { return mass_; }
@@ -40,8 +51,13 @@ class InertiaInvariants {
   Eigen::Vector3d S0_;
   Eigen::Matrix3Xd S1_, C0_;
   Eigen::Matrix3d J0_;
-  std::vector<Eigen::Matrix3d> J1_;  // k
-  std::vector<Eigen::Matrix3d> J2_;  // k * m + l
+  // S(eta) = S0 + S1 eta - (1/2) eta_k eta_l S2_kl, B(eta) = S1 - eta_k E_k,
+  // J(eta) = J0 + eta_k J1_k + eta_k eta_l J2_kl, C(eta) = C0 + eta_k C1_k
+  // (sums over k, l).
+  std::vector<Eigen::Vector3d> S2_;   // k * m + l
+  std::vector<Eigen::Matrix3Xd> E_;   // k
+  std::vector<Eigen::Matrix3d> J1_;   // k
+  std::vector<Eigen::Matrix3d> J2_;   // k * m + l
   std::vector<Eigen::Matrix3Xd> C1_;  // k
   Eigen::MatrixXd Me_;
 };

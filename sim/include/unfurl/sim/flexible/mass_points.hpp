@@ -30,6 +30,25 @@ struct MassPoint {
 std::vector<MassPoint> plate_mass_points(const PlateSpec& spec);
 std::vector<MassPoint> beam_mass_points(const BeamSection& section);
 
+// A mass point's second-order displacement in modal coordinates eta:
+// -(1/2) (eta^T G eta) axis, the foreshortening of a bent beam (its point at
+// x draws back along the axis by half the integral of the squared slopes
+// from the root). It is what gives a spinning beam its centrifugal
+// stiffening through the kinetic energy (inertia_invariants.hpp), so the
+// stiffening conserves energy, where a geometric stiffness computed from
+// the current inertia loads would not.
+struct Shortening {
+  Eigen::Vector3d axis = Eigen::Vector3d::Zero();
+  Eigen::MatrixXd G;  // m x m
+};
+
+// For each of beam_mass_points(section), in order: G(x_g) = integral from
+// the root (x = 0) to x_g of v'^T v' + w'^T w' for the modes `shape` (the
+// structure's degrees of freedom x m), along the beam's axis x. A plate
+// has none: its foreshortening is a membrane problem, and its stiffening
+// by in-plane inertia loads is negligible at deployment speeds.
+std::vector<Shortening> beam_shortening(const BeamSection& section, const Eigen::MatrixXd& shape);
+
 // sum_g m_g N_g^T N_g + R_g^T J_g R_g over the structure's degrees of
 // freedom: the consistent mass matrix again (a check that the points hold
 // all of it).
