@@ -24,6 +24,7 @@ Eigen::MatrixXd block(const Eigen::MatrixXd& x, const std::vector<int>& rows, co
 // free of load (K_II psi_I = -K_Ic).
 Eigen::MatrixXd constraint_modes(const Structure& s, const std::vector<int>& interface,
                                  const std::vector<int>& interior) {
+  if (interface.empty()) return Eigen::MatrixXd::Zero(s.size(), 0);
   const Eigen::LDLT<Eigen::MatrixXd> K_II(block(s.K, interior, interior));
   const Eigen::MatrixXd psi_I = K_II.solve(-block(s.K, interior, interface));
   if (K_II.info() != Eigen::Success || !K_II.isPositive() || !psi_I.allFinite())
