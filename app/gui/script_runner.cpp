@@ -151,7 +151,8 @@ void ScriptRunner::step(ScriptTarget& target, double now) {
       const sim::Model& model = state.scene.model;
       for (const std::string& joint : c.args)
         for (int k = 0; k < model.nq; ++k)
-          if (model.joints[model.joint_of_position[k]].name == joint) state.plot_coordinates.push_back(k);
+          if (model.joint_of_position[k] >= 0 && model.joints[model.joint_of_position[k]].name == joint)
+            state.plot_coordinates.push_back(k);
       ++state.plots_version;
     } else if (c.name == "report") {
       write_session_report(state, arg(0));

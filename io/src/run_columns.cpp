@@ -49,14 +49,14 @@ std::vector<RunColumn> trajectory_columns(const sim::Scene& scene, const sim::Tr
   // of ball, planar and free joints with their q', then their momenta.
   for (int c = 0; c < m.nq; ++c) {
     const int j = m.joint_of_position[c];
-    if (!m.joints[j].is_scalar()) continue;
+    if (j < 0 || !m.joints[j].is_scalar()) continue;
     position(c);
     momentum(m.velocity_of(j).value);
   }
   for (int c = 0; c < m.nq; ++c)
-    if (!m.joints[m.joint_of_position[c]].is_scalar()) position(c);
+    if (m.joint_of_position[c] < 0 || !m.joints[m.joint_of_position[c]].is_scalar()) position(c);
   for (int v = 0; v < m.nv; ++v)
-    if (!m.joints[m.joint_of_velocity[v]].is_scalar()) momentum(v);
+    if (m.joint_of_velocity[v] < 0 || !m.joints[m.joint_of_velocity[v]].is_scalar()) momentum(v);
   for (std::size_t l = 0; l < scene.loops.size(); ++l) {
     add(
         out, "closure_gap." + scene.loops[l].name, "m", "", [l](const sim::Sample& s) { return s.closure[l].distance; },

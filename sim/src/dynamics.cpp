@@ -95,13 +95,23 @@ Dynamics::~Dynamics() = default;
 std::vector<double> state_scale_of(const Model& model, const StateLayout& layout, const MechanismScales& scales,
                                    const Regulator* regulator) {
   std::vector<double> scale(layout.size());
-  for (int c = 0; c < layout.nq; ++c) scale[layout.q() + c] = model.position_unit(c) == "m" ? scales.length : 1.0;
+  // An elastic coordinate (unit modal mass): its body's size times the
+  // square root of its mass.
+  auto elastic = [&](int v) {
+    return scales.length * std::sqrt(model.bodies[model.body_of_elastic_velocity[v]].mass);
+  };
+  for (int c = 0; c < layout.nq; ++c)
+    scale[layout.q() + c] = model.joint_of_position[c] < 0 ? elastic(c - layout.nq + layout.nv)
+                            : model.position_unit(c) == "m" ? scales.length
+                                                            : 1.0;
   // The momentum that drifts its coordinate by one radian (one length) over
   // half a period of the mechanism's fastest own motion, pi / rate: as
   // long as an error of p drifts q one way before the motion turns.
   for (int c = 0; c < layout.nv; ++c)
-    scale[layout.p() + c] =
-        scales.inertia[c] * scales.rate / M_PI * (model.velocity_unit(c) == "m/s" ? scales.length : 1.0);
+    scale[layout.p() + c] = scales.inertia[c] * scales.rate / M_PI *
+                            (model.joint_of_velocity[c] < 0     ? elastic(c)
+                             : model.velocity_unit(c) == "m/s" ? scales.length
+                                                                : 1.0);
   for (int c = 0; c < layout.m; ++c) scale[layout.u() + c] = regulator->component_scale(c);
   return scale;
 }
@@ -130,9 +140,7 @@ std::vector<double> Dynamics::initial_state() {
     // driven joint's is 0: every profile starts at rest, and validation
     // refuses another).
     configure(scene_.q0.data());
-    body_velocities(scene_.dq0.data(), true);
-    for (int i = 0; i < model.size(); ++i) F_[i] = model.bodies[i].spatial_mass() * v_[i];
-    sweep_.generalized_forces(F_, y.data() + layout_.p());
+    momenta_of_rates(scene_.dq0.data(), true, y.data() + layout_.p());
   }
   for (const JointDriver* d : drivers_) y[layout_.p() + model.velocity_of(d->joint).value] = 0;
   if (regulator_ && closure_rank_ && regulator_->uses_feedforward()) start_integral_at_rest(y.data());
@@ -149,11 +157,28 @@ void Dynamics::start_integral_at_rest(double* y) {
   regulator_->integral_at_rest(W, lambda_.data(), d_.data(), y + layout_.u());
 }
 
+void Dynamics::momenta_of_rates(const double* w, bool base_moves, double* p) {
+  const Model& model = scene_.model;
+  body_velocities(w, base_moves);
+  for (int i = 0; i < model.size(); ++i) F_[i] = model.flexible(i) ? Vec6(sweep_.own_momentum(i, v_[i], w).head<6>())
+                                                                  : Vec6(model.bodies[i].spatial_mass() * v_[i]);
+  sweep_.generalized_forces(F_, p);
+  for (int i = 0; i < model.size(); ++i)
+    if (model.flexible(i)) {
+      const int m = model.bodies[i].flexible->modes();
+      Eigen::Map<Eigen::VectorXd>(p + model.first_elastic_velocity[i], m) +=
+          sweep_.own_momentum(i, v_[i], w).tail(m);
+    }
+}
+
 void Dynamics::body_velocities(const double* w, bool base_moves) {
   const Model& model = scene_.model;
   for (int i = 0; i < model.size(); ++i) {
     const int k = model.parent[i];
-    v_[i] = sweep_.placement(i).transform_velocity(k != kBase ? v_[k] : base_moves ? model.base_velocity : Vec6::Zero());
+    if (model.node_of(i) >= 0)
+      v_[i] = sweep_.placement(i).transform_velocity(sweep_.node_velocity(i, v_, w));
+    else
+      v_[i] = sweep_.placement(i).transform_velocity(k != kBase ? v_[k] : base_moves ? model.base_velocity : Vec6::Zero());
     for (int r = 0; r < model.joints[i].dof(); ++r)
       v_[i] += sweep_.motion_axes(i).col(r) * w[(model.first_velocity[i] + r).value];
   }
@@ -382,8 +407,19 @@ bool Dynamics::observe(double t, const double* y, Observation& out) {
 
   EnergyParts& E = out.energy;
   E = EnergyParts{};
-  for (int i = 0; i < model.size(); ++i)
-    E.kinetic += 0.5 * v_[i].dot(model.bodies[i].spatial_mass() * v_[i]);
+  std::vector<Vec6> h(model.size());
+  for (int i = 0; i < model.size(); ++i) {
+    if (model.flexible(i)) {
+      const Eigen::VectorXd own = sweep_.own_momentum(i, v_[i], w_.data());
+      const int m = model.bodies[i].flexible->modes();
+      h[i] = own.head<6>();
+      E.kinetic += 0.5 * (v_[i].dot(h[i]) +
+                          Eigen::Map<const Eigen::VectorXd>(w_.data() + model.first_elastic_velocity[i], m).dot(own.tail(m)));
+    } else {
+      h[i] = model.bodies[i].spatial_mass() * v_[i];
+      E.kinetic += 0.5 * v_[i].dot(h[i]);
+    }
+  }
   for (std::size_t k = 0; k < scene_.elements.size(); ++k) {
     const ForceElement& e = *scene_.elements[k];
     const double V = e.potential_energy(element_state(k, y + L.q(), w_.data(), out.poses, v_, model.base_velocity));
@@ -399,7 +435,7 @@ bool Dynamics::observe(double t, const double* y, Observation& out) {
         break;
     }
   }
-  out.momentum = system_momentum(model, out.poses, v_);
+  out.momentum = system_momentum(model, out.poses, h);
 
   const int n_loops = static_cast<int>(scene_.loops.size());
   out.closure.resize(n_loops);

@@ -26,6 +26,8 @@ MechanismScales mechanism_scales(const Scene& scene, Sweep& sweep) {
   for (int i = 0; i < model.size(); ++i)
     for (int r = 0; r < model.joints[i].dof(); ++r)
       s.inertia[(model.first_velocity[i] + r).value] = sweep.articulated_inertia(i, r);
+  for (int c = 0; c < model.nv; ++c)
+    if (model.joint_of_velocity[c] < 0) s.inertia[c] = 1;  // an elastic coordinate's modal mass
   // The joints' stiffness with every latch engaged, as they will be.
   std::vector<double> stiffness(model.nv, 0.0), damping(model.nv, 0.0);
   const std::vector<Pose> no_poses;

@@ -37,6 +37,26 @@ void Model::finalize() {
   scalar_coordinates = nv;
   for (int i = 0; i < N; ++i)
     if (joints[i].dof() > 1) place(i);
+  if (parent_node.empty()) parent_node.assign(N, -1);
+  first_elastic_position.assign(N, -1);
+  first_elastic_velocity.assign(N, -1);
+  body_of_elastic_velocity.assign(nv, -1);
+  elastic_coordinates = 0;
+  for (int i = 0; i < N; ++i) {
+    if (parent_node[i] >= 0 && (parent[i] == kBase || !bodies[parent[i]].flexible ||
+                                parent_node[i] >= static_cast<int>(bodies[parent[i]].flexible->nodes.size())))
+      throw std::invalid_argument("model: joint '" + joints[i].name + "' hangs on a node its parent does not have");
+    if (!bodies[i].flexible) continue;
+    const int m = bodies[i].flexible->modes();
+    first_elastic_position[i] = nq;
+    first_elastic_velocity[i] = nv;
+    nq += m;
+    nv += m;
+    elastic_coordinates += m;
+    joint_of_position.insert(joint_of_position.end(), m, -1);
+    joint_of_velocity.insert(joint_of_velocity.end(), m, -1);
+    body_of_elastic_velocity.insert(body_of_elastic_velocity.end(), m, i);
+  }
 }
 
 namespace {
@@ -65,6 +85,7 @@ const char* entry_name(const Joint& joint, int k, bool position) {
 
 std::string Model::position_name(int c) const {
   const int i = joint_of_position[c];
+  if (i < 0) return velocity_name(c - nq + nv);  // an elastic coordinate: the same entry of the rates
   // A compliant hinge's angle keeps its joint's name.
   if (joints[i].is_scalar() || (joints[i].compliant && c == first_position[i].value)) return joints[i].name;
   return joints[i].name + "." + entry_name(joints[i], c - first_position[i].value, true);
@@ -72,6 +93,10 @@ std::string Model::position_name(int c) const {
 
 std::string Model::velocity_name(int c) const {
   const int i = joint_of_velocity[c];
+  if (i < 0) {
+    const int b = body_of_elastic_velocity[c];
+    return bodies[b].name + ".eta" + std::to_string(c - first_elastic_velocity[b] + 1);
+  }
   if (joints[i].is_scalar() || (joints[i].compliant && c == first_velocity[i].value)) return joints[i].name;
   return joints[i].name + "." + entry_name(joints[i], c - first_velocity[i].value, false);
 }
@@ -95,18 +120,25 @@ bool translational_rate(const Joint& joint, int k) {
 
 }  // namespace
 
+// A modal coordinate of unit modal mass: a displacement times the square
+// root of a mass.
+constexpr const char* kModal = "m kg^0.5";
+
 std::string Model::position_unit(int c) const {
+  if (joint_of_position[c] < 0) return kModal;
   const int i = joint_of_position[c], k = c - first_position[i].value;
   if (joints[i].has_quaternion() && k >= joints[i].quaternion_offset()) return "";
   return translational_rate(joints[i], k) ? "m" : "rad";
 }
 
 std::string Model::velocity_unit(int c) const {
+  if (joint_of_velocity[c] < 0) return "m kg^0.5/s";
   const int i = joint_of_velocity[c];
   return translational_rate(joints[i], c - first_velocity[i].value) ? "m/s" : "rad/s";
 }
 
 std::string Model::momentum_unit(int c) const {
+  if (joint_of_velocity[c] < 0) return "m kg^0.5/s";  // unit modal mass: p = eta'
   const int i = joint_of_velocity[c];
   return translational_rate(joints[i], c - first_velocity[i].value) ? "N s" : "N m s";
 }

@@ -60,7 +60,7 @@ class Linearizer {
     // coordinates.
     std::vector<int> free;
     for (int c = 0; c < model_.nv; ++c)
-      if (!model_.joints[model_.joint_of_velocity[c]].driven) free.push_back(c);
+      if (model_.joint_of_velocity[c] < 0 || !model_.joints[model_.joint_of_velocity[c]].driven) free.push_back(c);
     if (static_cast<int>(free.size()) < model_.nv) {
       held_ = Eigen::MatrixXd::Zero(model_.nv, static_cast<Eigen::Index>(free.size()));
       for (std::size_t k = 0; k < free.size(); ++k) held_(free[k], static_cast<Eigen::Index>(k)) = 1;

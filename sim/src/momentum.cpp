@@ -5,7 +5,7 @@
 
 namespace unfurl::sim {
 
-SystemMomentum system_momentum(const Model& model, const std::vector<Pose>& poses, const std::vector<Vec6>& v) {
+SystemMomentum system_momentum(const Model& model, const std::vector<Pose>& poses, const std::vector<Vec6>& h_body) {
   SystemMomentum out;
   double mass = 0;
   Vec3 first_moment = Vec3::Zero();
@@ -15,9 +15,9 @@ SystemMomentum system_momentum(const Model& model, const std::vector<Pose>& pose
   }
   const Vec3 centre = first_moment / mass;
   for (int i = 0; i < model.size(); ++i) {
-    // M_i v_i is (linear momentum, angular momentum about the body origin)
-    // in the body frame; move it to the inertial axes and the centre.
-    const Vec6 h = model.bodies[i].spatial_mass() * v[i];
+    // (linear momentum, angular momentum about the body origin) in the body
+    // frame; moved to the inertial axes and the centre.
+    const Vec6& h = h_body[i];
     const Mat3 Gt = poses[i].rotation.transpose();
     const Vec3 P = Gt * h.head<3>();
     const Vec3 L = Gt * h.tail<3>() + (poses[i].position - centre).cross(P);

@@ -26,6 +26,7 @@ NewtonPreconditioner::NewtonPreconditioner(Dynamics& dynamics)
   const Model& model = dynamics.model();
   for (int j = 0; j < model.size(); ++j)
     if (model.joints[j].has_free_coordinate()) spring_position_[model.velocity_of(j).value] = model.position_of(j).value;
+  for (int c = 0; c < model.elastic_coordinates; ++c) spring_position_[model.nv - 1 - c] = model.nq - 1 - c;
 }
 
 void NewtonPreconditioner::setup(const double* y, const double* ydot, double gamma) {
@@ -46,7 +47,8 @@ void NewtonPreconditioner::setup(const double* y, const double* ydot, double gam
   // A driven joint's row of the Newton matrix is the identity (its p is
   // not a state): nothing of its elements' enters.
   for (int c = 0; c < model.nv; ++c)
-    if (model.joints[model.joint_of_velocity[c]].driven) stiffness_[c] = damping_[c] = 0;
+    if (model.joint_of_velocity[c] >= 0 && model.joints[model.joint_of_velocity[c]].driven)
+      stiffness_[c] = damping_[c] = 0;
   for (int c = 0; c < model.nv; ++c) diagonal_[c] = gamma * damping_[c] + gamma * gamma * stiffness_[c];
   std::copy_n(q, model.nq, q_.begin());
   sweep_.set_configuration(q, diagonal_.data());

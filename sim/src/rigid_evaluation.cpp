@@ -53,9 +53,7 @@ Eigen::MatrixXd Dynamics::mass_matrix(const double* q) {
   for (int c = 0; c < n; ++c) {
     unit.setZero();
     unit[c] = 1;
-    body_velocities(unit.data(), false);
-    for (int i = 0; i < model.size(); ++i) F_[i] = model.bodies[i].spatial_mass() * v_[i];
-    sweep_.generalized_forces(F_, M.col(c).data());
+    momenta_of_rates(unit.data(), false, M.col(c).data());
   }
   return M;
 }

@@ -1,5 +1,6 @@
 #include "unfurl/sim/scene_builder.hpp"
 
+#include "unfurl/sim/elements/elasticity.hpp"
 #include "unfurl/sim/elements/gravity.hpp"
 #include "unfurl/sim/scene_validation.hpp"
 
@@ -72,11 +73,40 @@ SceneBuilder& SceneBuilder::body(const Body& body, const std::string& parent, Jo
   for (const Joint& other : scene_.model.joints)
     if (other.name == joint.name)
       throw SceneInvalid(field + " (" + body.name + ").joint", "a joint named '" + joint.name + "' already exists");
-  scene_.model.parent.push_back(body_index(parent, field + ".parent"));
-  scene_.model.bodies.push_back(body);
+  const int k = body_index(parent, field + ".parent");
+  scene_.model.parent_node.resize(scene_.model.size(), -1);
+  scene_.model.parent_node.push_back(k == kBase ? -1 : node_at(k, joint.parent_point, field + ".joint.parent_point"));
+  scene_.model.parent.push_back(k);
+  scene_.model.bodies.push_back(body.flexible ? undeformed(body) : body);
   scene_.model.joints.push_back(std::move(joint));
   visuals_.bodies.push_back(std::move(visual));
+  if (body.flexible) scene_.elements.push_back(std::make_shared<Elasticity>(scene_.model.size() - 1));
   return *this;
+}
+
+// A flexible body's mass, centre of mass and inertia are its undeformed
+// shape's (what the rules, the mechanism's scales and the drawing read).
+Body SceneBuilder::undeformed(Body body) {
+  const int m = body.flexible->modes();
+  const Eigen::MatrixXd M = body.flexible->inertia.mass_matrix(Eigen::VectorXd::Zero(m));
+  body.mass = M(0, 0);
+  const Mat3 mc = M.block<3, 3>(3, 0);  // (m c)~
+  body.com = Vec3(mc(2, 1), mc(0, 2), mc(1, 0)) / body.mass;
+  body.inertia_com = M.block<3, 3>(3, 3) -
+                     body.mass * (body.com.squaredNorm() * Mat3::Identity() - body.com * body.com.transpose());
+  return body;
+}
+
+// A child of a flexible body hangs on the node at its joint's point (the
+// frame itself where no node is there and the point is the frame's
+// origin).
+int SceneBuilder::node_at(int k, const Vec3& point, const std::string& field) const {
+  const auto& flexible = scene_.model.bodies[k].flexible;
+  if (!flexible) return -1;
+  for (std::size_t a = 0; a < flexible->nodes.size(); ++a)
+    if ((flexible->nodes[a].point - point).norm() <= 1e-9 * std::max(1.0, point.norm())) return static_cast<int>(a);
+  if (point.isZero(0)) return -1;
+  throw SceneInvalid(field, "no node of the flexible body '" + scene_.model.bodies[k].name + "' is at this point");
 }
 
 SceneBuilder& SceneBuilder::element(std::shared_ptr<const ForceElement> element) {

@@ -79,6 +79,30 @@ Eigen::MatrixXd InertiaInvariants::mass_matrix(const Eigen::VectorXd& eta) const
   return M;
 }
 
+Eigen::MatrixXd InertiaInvariants::mass_matrix_rate(const Eigen::VectorXd& eta, const Eigen::VectorXd& eta_dot) const {
+  Vec3 dS = S1_ * eta_dot;
+  Eigen::Matrix3Xd dB = Eigen::Matrix3Xd::Zero(3, m_), dC = Eigen::Matrix3Xd::Zero(3, m_);
+  Mat3 dJ = Mat3::Zero();
+  for (int k = 0; k < m_; ++k) {
+    dB -= eta_dot[k] * E_[k];
+    dJ += eta_dot[k] * J1_[k];
+    dC += eta_dot[k] * C1_[k];
+    for (int l = 0; l < m_; ++l) {
+      dS -= eta_dot[k] * eta[l] * S2_[k * m_ + l];
+      dJ += (eta_dot[k] * eta[l] + eta[k] * eta_dot[l]) * J2_[k * m_ + l];
+    }
+  }
+  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(6 + m_, 6 + m_);
+  M.block<3, 3>(0, 3) = -skew(dS);
+  M.block<3, 3>(3, 0) = skew(dS);
+  M.block<3, 3>(3, 3) = dJ;
+  M.topRightCorner(3, m_) = dB;
+  M.block(3, 6, 3, m_) = dC;
+  M.bottomLeftCorner(m_, 3) = dB.transpose();
+  M.block(6, 3, m_, 3) = dC.transpose();
+  return M;
+}
+
 // d/d eta_k of T = (1/2) m v^2 - v^T S~ w + v^T B eta' + (1/2) w^T J w +
 // w^T C eta' + (1/2) eta'^T Me eta' (S2's and J2's symmetric parts give
 // the factors 2; J2_lk = J2_kl^T).

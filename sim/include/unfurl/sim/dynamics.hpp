@@ -191,6 +191,9 @@ class Dynamics {
   // v_i of the configured sweep for velocity coordinates w, the base moving
   // with its steady velocity when `base_moves`.
   void body_velocities(const double* w, bool base_moves);
+  // p = M(q) w at the configured q: the subtree momenta of the rates w
+  // projected on each coordinate (the base at rest unless `base_moves`).
+  void momenta_of_rates(const double* w, bool base_moves, double* p);
   // Sets y's regulator state to where its integral settles under the rigid
   // loop forces (Regulator::integral_at_rest).
   void start_integral_at_rest(double* y);

@@ -19,6 +19,11 @@ struct Pose {
   Pose child(const Placement& X) const { return {to_base(X.rho), X.G * rotation}; }
 };
 
+// Joint i's placement of body i from its parent's frame at q: the joint's
+// own, or on a flexible parent the node frame's (flexible/node_frame.hpp)
+// then the joint's from the node.
+Placement placement_in_parent(const Model& model, int i, const double* q);
+
 // Poses of bodies 1..N in the frame of body 0 for coordinates q.
 void body_poses(const Model& model, const double* q, std::vector<Pose>& poses);
 

@@ -3,11 +3,13 @@
 // with a given motion.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "unfurl/sim/coordinates.hpp"
+#include "unfurl/sim/flexible/flexible_body.hpp"
 #include "unfurl/sim/joint.hpp"
 #include "unfurl/sim/spatial.hpp"
 
@@ -18,6 +20,10 @@ struct Body {
   double mass = 0;
   Vec3 com = Vec3::Zero();            // centre of mass, body frame
   Mat3 inertia_com = Mat3::Zero();    // about the centre of mass, body axes
+  // A flexible body's elastic model (docs/FLEXIBLE.md); null for a rigid
+  // one. Its mass and inertia are then the invariants', not the fields
+  // above.
+  std::shared_ptr<const flexible::FlexibleBody> flexible;
 
   // J_i of (6): the inertia about the body origin (parallel axes).
   Mat3 inertia_origin() const;
@@ -32,6 +38,11 @@ struct Model {
   std::vector<Body> bodies;
   std::vector<Joint> joints;  // joint i carries body i
   std::vector<int> parent;    // k_i, kBase for body 0
+  // The node of the parent's flexible body that joint i hangs on (an index
+  // into FlexibleBody::nodes; its placement is then from the node's frame,
+  // with the node's point taken off rho), -1 on a rigid parent. Empty: all
+  // -1.
+  std::vector<int> parent_node;
   // The base's velocity (v, w) in its own frame, constant: a steady drift
   // or spin of body 0. Zero for a fixed base.
   Vec6 base_velocity = Vec6::Zero();
@@ -45,15 +56,21 @@ struct Model {
   // trajectory's columns keep them together; nothing else relies on it.
   std::vector<PositionIndex> first_position;
   std::vector<VelocityIndex> first_velocity;
-  std::vector<int> joint_of_position;  // per entry of q
-  std::vector<int> joint_of_velocity;  // per entry of the rates
+  std::vector<int> joint_of_position;  // per entry of q; -1 for an elastic coordinate
+  std::vector<int> joint_of_velocity;  // per entry of the rates; -1 for an elastic coordinate
+  // A flexible body's m elastic coordinates, after every joint's: from
+  // first_elastic_position[i] in q and first_elastic_velocity[i] in the
+  // rates and p (the rates are eta' themselves); -1 for a rigid body.
+  std::vector<int> first_elastic_position, first_elastic_velocity;
+  std::vector<int> body_of_elastic_velocity;  // per entry of the rates, -1 for a joint's
   int nq = 0;  // positions
   int nv = 0;  // velocity coordinates
 
   int size() const { return static_cast<int>(bodies.size()); }
   // Names of q's entry c and of the rates' entry c in outputs: the joint's
   // name for a one-coordinate joint, "joint.qw" or "joint.wx" for the
-  // entries of a ball, planar or free joint.
+  // entries of a ball, planar or free joint, "body.eta3" for a flexible
+  // body's third elastic coordinate.
   std::string position_name(int c) const;
   std::string velocity_name(int c) const;
   // The SI units of q's entry c, of the rates' entry c and of the momentum
@@ -78,6 +95,10 @@ struct Model {
   int scalar_coordinates = 0;  // how many one-coordinate joints (the first of q and of the rates)
   // Body 0 on a free joint: a free-floating spacecraft bus.
   bool free_floating() const { return !joints.empty() && joints[0].type == JointType::free; }
+  int elastic_coordinates = 0;  // all flexible bodies' together
+  bool has_flexible_bodies() const { return elastic_coordinates > 0; }
+  bool flexible(int i) const { return bodies[i].flexible != nullptr; }
+  int node_of(int j) const { return parent_node.empty() ? -1 : parent_node[j]; }
 };
 
 }  // namespace unfurl::sim

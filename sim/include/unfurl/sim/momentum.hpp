@@ -19,8 +19,9 @@ struct SystemMomentum {
   double angular_scale = 0;
 };
 
-// From the poses and the body velocities v_i (body frames).
-SystemMomentum system_momentum(const Model& model, const std::vector<Pose>& poses, const std::vector<Vec6>& v);
+// From the poses and h: each body's own momentum (linear, angular about its origin) in its
+// frame: M_i v_i, or a flexible body's frame part of M^ (v_i, eta').
+SystemMomentum system_momentum(const Model& model, const std::vector<Pose>& poses, const std::vector<Vec6>& h);
 
 // The orientation a ball or free joint gives its child, from q and q': the
 // quaternion (w, x, y, z, unit), the rotation vector (angle times axis, the

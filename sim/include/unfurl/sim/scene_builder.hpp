@@ -69,6 +69,8 @@ class SceneBuilder {
 
  private:
   void set_initial(const std::string& joint, std::vector<double> values, int which);
+  int node_at(int body, const Vec3& point, const std::string& field) const;
+  static Body undeformed(Body body);
 
   Scene scene_;
   SceneVisuals visuals_;

@@ -19,10 +19,20 @@
 // Its entry of p is not read; the single-column passes (the state's) take
 // its rate from `driven` (per velocity coordinate), and the load cases
 // pass none: they see the driven joints locked, as the motor holds them.
+//
+// A flexible body (docs/FLEXIBLE.md) is a body of 6 + m velocities: its
+// frame's and its elastic rates eta'. Its own joint then has the hinge's
+// coordinates and the m elastic ones; its articulated inertia M*^ is
+// (6 + m) square, and its parent sees the frame's 6 x 6 block of H M*^ as
+// from any body. A child of a flexible body hangs on a node frame that the
+// modes move (flexible::NodeFrame): it is carried to the body's extended
+// velocity by N_a = [C_node, A L]. Rigid bodies keep their passes as they
+// were, operation for operation.
 #pragma once
 
 #include <vector>
 
+#include "unfurl/sim/flexible/node_frame.hpp"
 #include "unfurl/sim/kinematics.hpp"
 #include "unfurl/sim/model.hpp"
 #include "unfurl/sim/spatial.hpp"
@@ -53,7 +63,8 @@ class Sweep {
     velocity_pass(coordinates(p), phi, v_base, dq_, v, driven);
   }
 
-  // mu_i = M*_i v_i + phi*_i.
+  // mu_i = M*_i v_i + phi*_i (a flexible body's: the frame's 6 of M*^ (v_i,
+  // eta') + phi*^, with the elastic rates of the last velocity pass).
   void momenta(const std::vector<Vec6>& v, const std::vector<Vec6>& phi, std::vector<Vec6>& mu) const;
 
   // F*_i = F_i + sum_{j in U_i} C_j^T F*_j in place, and Q_i = A_i^T F*_i,
@@ -84,13 +95,17 @@ class Sweep {
   void accelerations(const std::vector<Vec6>& v, const double* dq, const std::vector<Vec6>& F, const double* Q,
                      std::vector<Vec6>& bias, std::vector<Vec6>& a, double* ddq, const double* driven = nullptr) const;
 
-  // M*_i a_i + p^A_i: the joint wrench from accelerations() results.
+  // M*_i a_i + p^A_i: the joint wrench from accelerations() results (a
+  // flexible body's: the frame's 6 of M*^ a^ + p^A^, kept by the pass).
   Vec6 joint_wrench(int i, const std::vector<Vec6>& bias, const std::vector<Vec6>& a) const {
+    if (flex_[i] >= 0) return flexible_[flex_[i]].wrench;
     return M_star_[i] * a[i] + bias[i];
   }
 
   // dp_i = (dA_i^T - A_i^T Omega_i) mu_i, the velocity-dependent part of
-  // (7); dA_i = 0 but for a universal joint (its rates from w).
+  // (7); dA_i = 0 but for a universal joint (its rates from w). A flexible
+  // body's elastic momenta get dT/d eta: its own kinetic energy's and its
+  // nodes' (NodeFrame::kinetic_gradient).
   void gyroscopic(const std::vector<Vec6>& v, const std::vector<Vec6>& mu, const double* w, double* dp) const;
 
   // The same three passes for k load cases: S[i] is 6 x k, P is nq x k.
@@ -102,7 +117,18 @@ class Sweep {
   template <class S, class Pout>
   void force_pass(std::vector<S>& F, Pout& Q) const;
 
+  // Joint i's placement from its parent's frame, or, for a child of a
+  // flexible body, from the node frame it hangs on.
   const Placement& placement(int i) const { return X_[i]; }
+  // Body i's own momentum at its frame's velocity v and the rates w: M_i v,
+  // or for a flexible body M^ (v, eta') (6 + m entries: the frame's, then
+  // the elastic momenta's own part).
+  Eigen::VectorXd own_momentum(int i, const Vec6& v, const double* w) const;
+  // The velocity of the node frame joint i hangs on (flexible parent),
+  // from the bodies' velocities v and the rates w.
+  Vec6 node_velocity(int i, const std::vector<Vec6>& v, const double* w) const {
+    return parent_velocity(i, v, Eigen::Map<const Eigen::VectorXd>(w, model_.nv));
+  }
   // The articulated inertia of joint i's coordinate r, (D_i^-1)_rr: the
   // inertia it moves against with every other joint free but the driven
   // ones (kg m^2 for a turn, kg for a slide); a driven joint's is A_i^T M*_i
@@ -136,6 +162,53 @@ class Sweep {
     return out;
   }
   void factor_multi_axis(int i, const double* joint_diagonal);
+
+  // A flexible body's extended quantities: d = 6 + m; the free axes of its
+  // joint in the extended space (the hinge's unless driven, then eta's);
+  // a driven hinge's axis. phi, F and eta_dot are the passes' scratch.
+  struct Flexible {
+    int body = -1, m = 0, d = 6;
+    bool hinge_free = false, driven = false;
+    Eigen::MatrixXd M_star, A_free, D, M_star_A;
+    Eigen::VectorXd A_driven;
+    std::vector<flexible::NodeFrame> nodes;
+    std::vector<Eigen::Matrix<double, 6, Eigen::Dynamic>> N;  // per node, [C_node, A L]
+    Eigen::MatrixXd M_own;                                    // M^(eta), the body's own
+    mutable Eigen::MatrixXd phi, phi_prime, F;                // d x k
+    mutable Eigen::VectorXd eta_dot;
+    // The accelerations pass's: p^A^, the velocity-product acceleration of
+    // the hinge (and a driven hinge's given one), the free coordinates'
+    // unbalanced force, a^, and the joint's wrench.
+    mutable Eigen::VectorXd b, a_c, u, a_hat;
+    mutable Vec6 wrench;
+  };
+  void flexible_accelerations(const std::vector<Vec6>& v, const double* dq, const std::vector<Vec6>& F,
+                              const double* Q, std::vector<Vec6>& bias, std::vector<Vec6>& a, double* ddq,
+                              const double* driven) const;
+  // A child's carried 6-vector (its frame) into its parent's bias.
+  void carry_bias(int j, const Vec6& carried, std::vector<Vec6>& bias) const;
+  void configure_flexible(int i, const double* joint_diagonal);
+  // Body i's H M* (6 x 6) into its parent's articulated inertia, through
+  // the node frame on a flexible parent.
+  void carry_inertia(int i, const Mat6& HM);
+  void elastic_gyroscopic(int i, const std::vector<Vec6>& v, const std::vector<Vec6>& mu, const double* w,
+                          double* dp) const;
+  // The velocity of joint i's parent where i hangs: the node frame's on a
+  // flexible parent (from its frame's and eta' in dq), the parent's own.
+  template <class S, class Pout>
+  S parent_velocity(int i, const std::vector<S>& v, const Pout& dq) const;
+  // A child's carried wrench (6 x k at its origin, its frame) into its
+  // parent's: through the node frame into the extended scratch on a
+  // flexible parent.
+  template <class S>
+  void carry(int j, const S& carried, std::vector<S>& phi) const;
+  template <class S, class P>
+  void flexible_bias(int j, const P& p, std::vector<S>& phi, const double* driven) const;
+  template <class S, class P, class Pout>
+  void flexible_velocity(int i, const P& p, Pout& dq, std::vector<S>& v, const double* driven) const;
+  // The free coordinates' rows of x: the hinge's (if free), then eta's.
+  template <class P>
+  Eigen::MatrixXd free_rows(int i, const P& x) const;
   // Joint i's entries of a per-velocity-coordinate array, padded to 6.
   Vec6 rates_of(int i, const double* x) const;
 
@@ -149,14 +222,82 @@ class Sweep {
   std::vector<int> multi_;      // index into multi_axes_, -1 for n_i <= 1
   std::vector<char> driven_;    // Joint::driven
   std::vector<MultiAxis> multi_axes_;
+  std::vector<int> flex_;  // index into flexible_, -1 for a rigid body
+  std::vector<Flexible> flexible_;
   std::vector<double> q_;  // the q of the quantities above
 };
+
+template <class P>
+Eigen::MatrixXd Sweep::free_rows(int i, const P& x) const {
+  const Flexible& f = flexible_[flex_[i]];
+  Eigen::MatrixXd out(f.hinge_free + f.m, x.cols());
+  if (f.hinge_free) out.row(0) = x.row(model_.first_velocity[i].value);
+  out.bottomRows(f.m) = x.middleRows(model_.first_elastic_velocity[i], f.m);
+  return out;
+}
+
+template <class S, class Pout>
+S Sweep::parent_velocity(int i, const std::vector<S>& v, const Pout& dq) const {
+  const int k = model_.parent[i], a = model_.node_of(i);
+  if (a < 0) return v[k];
+  const Flexible& f = flexible_[flex_[k]];
+  Eigen::MatrixXd hat(f.d, v[k].cols());
+  hat.topRows(6) = v[k];
+  hat.bottomRows(f.m) = dq.middleRows(model_.first_elastic_velocity[k], f.m);
+  return f.N[a] * hat;
+}
+
+template <class S>
+void Sweep::carry(int j, const S& carried, std::vector<S>& phi) const {
+  const int k = model_.parent[j], a = model_.node_of(j);
+  if (a < 0) {
+    phi[k] += X_[j].transform_force(carried);
+    return;
+  }
+  const Flexible& f = flexible_[flex_[k]];
+  f.phi.noalias() += f.N[a].transpose() * X_[j].transform_force(carried);
+}
+
+template <class S, class P>
+void Sweep::flexible_bias(int j, const P& p, std::vector<S>& phi, const double* driven) const {
+  const Flexible& f = flexible_[flex_[j]];
+  f.phi_prime = f.phi;
+  if (f.driven && driven) f.phi_prime.col(0) += f.M_star * f.A_driven * driven[model_.first_velocity[j].value];
+  const Eigen::MatrixXd carried =
+      f.phi_prime + f.M_star_A * (f.D * (free_rows(j, p) - f.A_free.transpose() * f.phi_prime));
+  phi[j] = f.phi.topRows(6);
+  if (model_.parent[j] != kBase) carry(j, S(carried.topRows(6)), phi);
+}
+
+template <class S, class P, class Pout>
+void Sweep::flexible_velocity(int i, const P& p, Pout& dq, std::vector<S>& v, const double* driven) const {
+  const Flexible& f = flexible_[flex_[i]];
+  const int c = model_.first_velocity[i].value, e = model_.first_elastic_velocity[i];
+  Eigen::MatrixXd hat = Eigen::MatrixXd::Zero(f.d, v[i].cols());
+  hat.topRows(6) = v[i];
+  const Eigen::MatrixXd x = f.D * (free_rows(i, p) - f.A_free.transpose() * (f.phi_prime + f.M_star * hat));
+  if (f.driven) {
+    dq.row(c).setConstant(driven ? driven[c] : 0.0);
+    hat += f.A_driven * dq.row(c);
+  } else if (f.hinge_free) {
+    dq.row(c) = x.row(0);
+  }
+  dq.middleRows(e, f.m) = x.bottomRows(f.m);
+  hat.noalias() += f.A_free * x;
+  v[i] = hat.topRows(6);
+  if (hat.cols() == 1) f.eta_dot = hat.col(0).tail(f.m);
+}
 
 template <class S, class P>
 void Sweep::bias_pass(const P& p, std::vector<S>& phi, const double* driven) const {
   const int N = model_.size();
   for (int i = 0; i < N; ++i) phi[i].setZero();
+  for (const Flexible& f : flexible_) f.phi.setZero(f.d, phi.empty() ? 1 : phi[0].cols());
   for (int j = N - 1; j >= 0; --j) {
+    if (flex_[j] >= 0) {
+      flexible_bias(j, p, phi, driven);
+      continue;
+    }
     const int k = model_.parent[j];
     if (k == kBase) continue;
     // M*_j A_j D_j p_j + H_j phi*_j
@@ -170,6 +311,10 @@ void Sweep::bias_pass(const P& p, std::vector<S>& phi, const double* driven) con
     } else if (c >= 0) {
       carried.noalias() += M_star_A_[j] * (D_[j] * (p.row(c) - A_[j].transpose() * phi[j]));
     }
+    if (model_.node_of(j) >= 0) {
+      carry(j, carried, phi);
+      continue;
+    }
     phi[k] += X_[j].transform_force(carried);
   }
 }
@@ -181,7 +326,14 @@ void Sweep::velocity_pass(const P& p, const std::vector<S>& phi, const Vec6& v_b
   const S base = v_base.replicate(1, phi.empty() ? 1 : phi[0].cols());
   for (int i = 0; i < N; ++i) {
     const int k = model_.parent[i];
-    v[i] = X_[i].transform_velocity(k == kBase ? base : v[k]);
+    if (model_.node_of(i) >= 0)
+      v[i] = X_[i].transform_velocity(parent_velocity(i, v, dq));
+    else
+      v[i] = X_[i].transform_velocity(k == kBase ? base : v[k]);
+    if (flex_[i] >= 0) {
+      flexible_velocity(i, p, dq, v, driven);
+      continue;
+    }
     const int c = model_.first_velocity[i].value;
     if (multi_[i] >= 0) {
       const MultiAxis& J = multi_axes_[multi_[i]];
@@ -200,9 +352,16 @@ void Sweep::velocity_pass(const P& p, const std::vector<S>& phi, const Vec6& v_b
 
 template <class S, class Pout>
 void Sweep::force_pass(std::vector<S>& F, Pout& Q) const {
+  for (const Flexible& f : flexible_) f.F.setZero(f.d, F.empty() ? 1 : F[0].cols());
   for (int i = model_.size() - 1; i >= 0; --i) {
     const int c = model_.first_velocity[i].value;
-    if (multi_[i] >= 0) {
+    if (flex_[i] >= 0) {
+      const Flexible& f = flexible_[flex_[i]];
+      f.F.topRows(6) += F[i];
+      F[i] = f.F.topRows(6);
+      if (c >= 0) Q.row(c).noalias() = A_[i].transpose() * F[i];
+      Q.middleRows(model_.first_elastic_velocity[i], f.m) = f.F.bottomRows(f.m);
+    } else if (multi_[i] >= 0) {
       const MultiAxis& J = multi_axes_[multi_[i]];
       const auto Q_i = (J.A.transpose() * F[i]).eval();
       Q.middleRows(c, J.n) = Q_i.topRows(J.n);
@@ -210,7 +369,13 @@ void Sweep::force_pass(std::vector<S>& F, Pout& Q) const {
       Q.row(c).noalias() = A_[i].transpose() * F[i];
     }
     const int k = model_.parent[i];
-    if (k != kBase) F[k] += X_[i].transform_force(F[i]);
+    if (k == kBase) continue;
+    if (const int a = model_.node_of(i); a >= 0) {
+      const Flexible& f = flexible_[flex_[k]];
+      f.F.noalias() += f.N[a].transpose() * X_[i].transform_force(F[i]);
+    } else {
+      F[k] += X_[i].transform_force(F[i]);
+    }
   }
 }
 

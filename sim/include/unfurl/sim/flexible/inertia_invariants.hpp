@@ -42,6 +42,8 @@ class InertiaInvariants {
 
   // M^(eta), (6 + m) square.
   Eigen::MatrixXd mass_matrix(const Eigen::VectorXd& eta) const;
+  // dM^/dt = sum_k eta'_k dM^/d eta_k.
+  Eigen::MatrixXd mass_matrix_rate(const Eigen::VectorXd& eta, const Eigen::VectorXd& eta_dot) const;
   // dT/d eta at fixed V = (v, w, eta').
   Eigen::VectorXd kinetic_gradient(const Eigen::VectorXd& eta, const Eigen::VectorXd& V) const;
 

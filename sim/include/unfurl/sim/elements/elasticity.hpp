@@ -1,0 +1,34 @@
+// A flexible body's own elasticity: on its elastic coordinates eta (unit
+// modal masses) Q = -K eta - D eta', K = diag(omega_k^2), D = diag(2 zeta_k
+// omega_k); stored energy eta^T K eta / 2, dissipated power eta'^T D eta'.
+// One per flexible body, made with the body (SceneBuilder::body).
+#pragma once
+
+#include "unfurl/sim/force_element.hpp"
+
+namespace unfurl::sim {
+
+class Elasticity : public ForceElement {
+ public:
+  explicit Elasticity(int body) : body_(body) {}
+
+  int body() const { return body_; }
+  std::string kind() const override { return "elasticity"; }
+  std::string list() const override { return "bodies"; }
+  std::string handle(const Model& model) const override { return model.bodies[body_].name; }
+  std::string file_path(const Scene& scene) const override;
+  void add_forces(const ElementState& s, ElementForces& out) const override;
+  double potential_energy(const ElementState& s) const override;
+  double dissipated_power(const ElementState& s) const override;
+  bool dissipative() const override { return true; }
+  void add_joint_stiffness(const ElementState& s, RatesOut stiffness, RatesOut damping) const override;
+  std::vector<LoadColumn> load_columns(const Model& model) const override;  // elastic_energy
+  void load_values(const ElementState& s, double* values) const override;
+  // Flexible bodies are not scaled yet (studies::scale_scene says so).
+  std::shared_ptr<ForceElement> scaled(double L, double M, const Model& model) const override;
+
+ private:
+  int body_;
+};
+
+}  // namespace unfurl::sim

@@ -1,0 +1,48 @@
+// A flexible body as the solver carries it (docs/FLEXIBLE.md): its
+// floating frame's inertia invariants, the modal stiffness and damping of
+// its m elastic coordinates eta (unit modal masses), and the nodes its
+// children hang on, each with its small translation and rotation per unit
+// eta. Made once from a mesh and a reduction (beam_body, plate_body);
+// shared, immutable, by every copy of a scene.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "unfurl/sim/flexible/beam_structure.hpp"
+#include "unfurl/sim/flexible/inertia_invariants.hpp"
+
+namespace unfurl::sim::flexible {
+
+// The largest number of elastic coordinates a body may keep: the sweep's
+// extended blocks are fixed-size (6 + kMaxModes square) so that it
+// allocates nothing.
+inline constexpr int kMaxModes = 24;
+
+struct FlexibleNode {
+  Eigen::Vector3d point;                         // body frame, undeformed
+  Eigen::Matrix<double, 6, Eigen::Dynamic> shape;  // translation, then rotation, per unit eta
+};
+
+struct FlexibleBody {
+  InertiaInvariants inertia;
+  Eigen::VectorXd frequency_hz;  // of each coordinate, the frame held
+  Eigen::VectorXd stiffness;     // omega_k^2, 1/s^2 (the coordinates have unit modal masses)
+  Eigen::VectorXd damping;       // 2 zeta_k omega_k
+  std::vector<FlexibleNode> nodes;
+
+  int modes() const { return static_cast<int>(stiffness.size()); }
+};
+
+// A beam along x from the frame's origin, held there (the frame's
+// attachment), with `attachments` (body-frame points on the beam's axis)
+// as interface nodes, `normal_modes` fixed-interface modes and the
+// attachments' constraint modes, each with damping ratio `zeta`; the
+// foreshortening carried. Each attachment becomes a node at the mesh node
+// nearest it. Throws std::invalid_argument when more coordinates result
+// than kMaxModes or a point lies off the beam.
+FlexibleBody beam_body(const BeamSection& section, int normal_modes, double zeta,
+                       const std::vector<Eigen::Vector3d>& attachments);
+
+}  // namespace unfurl::sim::flexible

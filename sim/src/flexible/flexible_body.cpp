@@ -1,0 +1,42 @@
+#include "unfurl/sim/flexible/flexible_body.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "unfurl/sim/flexible/mass_points.hpp"
+#include "unfurl/sim/flexible/modal_body.hpp"
+
+namespace unfurl::sim::flexible {
+
+FlexibleBody beam_body(const BeamSection& section, int normal_modes, double zeta,
+                       const std::vector<Eigen::Vector3d>& attachments) {
+  const Structure beam = beam_structure(section);
+  const double h = section.length / section.elements;
+  std::vector<int> nodes, interface;
+  for (const Eigen::Vector3d& p : attachments) {
+    if (p.tail<2>().norm() > 1e-9 * section.length || p.x() < -0.5 * h || p.x() > section.length + 0.5 * h)
+      throw std::invalid_argument("flexible beam: an attachment point lies off the beam's axis");
+    const int node = static_cast<int>(std::lround(p.x() / h));
+    nodes.push_back(node);
+    if (node == 0) continue;  // the frame's own attachment: held
+    bool seen = false;
+    for (int d : interface) seen = seen || d == beam.dof(node, 0);
+    if (!seen)
+      for (int d : node_dofs(beam, node)) interface.push_back(d);
+  }
+  const ModalBody reduced = reduce(beam, {node_dofs(beam, 0), interface, normal_modes});
+  if (reduced.coordinates() > kMaxModes)
+    throw std::invalid_argument("flexible beam: " + std::to_string(reduced.coordinates()) +
+                                " elastic coordinates, more than " + std::to_string(kMaxModes));
+  FlexibleBody body{InertiaInvariants(beam_mass_points(section), reduced.shape,
+                                      beam_shortening(section, reduced.shape)),
+                    reduced.frequency_hz, {}, {}, {}};
+  const Eigen::VectorXd omega = 2 * M_PI * reduced.frequency_hz;
+  body.stiffness = omega.array().square();
+  body.damping = 2 * zeta * omega;
+  for (int node : nodes) body.nodes.push_back({beam.nodes[node], reduced.node_shape(beam, node)});
+  return body;
+}
+
+}  // namespace unfurl::sim::flexible
