@@ -5,12 +5,14 @@
 // reader adds where in the file (or which --set) the field is.
 #include <yaml-cpp/yaml.h>
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
 #include "scene_overrides.hpp"
 #include "unfurl/input/yaml_fields.hpp"
 #include "unfurl/sim/elements/all.hpp"
+#include "unfurl/sim/flexible/flexible_body.hpp"
 #include "unfurl/sim/number_text.hpp"
 #include "unfurl/sim/scene_builder.hpp"
 #include "unfurl/sim/scene_file.hpp"
@@ -52,6 +54,9 @@ class SceneReader : private input::YamlFields {
   void read_base(const YAML::Node& node, SceneBuilder& b);
   void read_body(const YAML::Node& node, int index, const YAML::Node& all, SceneBuilder& b) const;
   Body read_mass_properties(const YAML::Node& node, const std::string& field) const;
+  std::shared_ptr<const flexible::FlexibleBody> read_flexible(const YAML::Node& node, const std::string& name,
+                                                              const YAML::Node& all, const std::string& field) const;
+  flexible::BeamSection read_beam_section(const YAML::Node& node, const std::string& field) const;
   Joint read_joint(const YAML::Node& node, const std::string& field) const;
   std::shared_ptr<JointCompliance> read_compliance(const YAML::Node& node, int joint, const std::string& field) const;
   Visual read_visual(const YAML::Node& node, const std::string& field) const;
@@ -275,7 +280,7 @@ Body SceneReader::read_mass_properties(const YAML::Node& node, const std::string
 
 void SceneReader::read_body(const YAML::Node& node, int index, const YAML::Node& all, SceneBuilder& b) const {
   std::string field = input::index_field("bodies", index);
-  check_keys(node, {"name", "parent", "mass", "com", "inertia", "mesh", "collision", "joint"}, field);
+  check_keys(node, {"name", "parent", "mass", "com", "inertia", "flexible", "mesh", "collision", "joint"}, field);
   const std::string name = text(require(node, "name", field), field + ".name");
   field += " (" + name + ")";
   const YAML::Node parent = require(node, "parent", field);
@@ -286,7 +291,16 @@ void SceneReader::read_body(const YAML::Node& node, int index, const YAML::Node&
         fail(parent, field + ".parent",
              "numbering is not regular: the parent '" + parent_name + "' is listed after its child (list " +
                  "every body after its parent)");
-  Body body = read_mass_properties(node, field);
+  Body body;
+  if (const YAML::Node flexible = node["flexible"]) {
+    for (const char* key : {"mass", "com", "inertia"})
+      if (node[key])
+        fail(node[key], field + "." + key, "a flexible body's mass properties are its structure's (leave out " +
+                                               std::string(key) + ")");
+    body.flexible = read_flexible(flexible, name, all, field + ".flexible");
+  } else {
+    body = read_mass_properties(node, field);
+  }
   body.name = name;
   const Joint joint = read_joint(require(node, "joint", field), field + ".joint");
   // In a file the free-floating bus is the base's (`base: {free: true}`).
@@ -299,6 +313,72 @@ void SceneReader::read_body(const YAML::Node& node, int index, const YAML::Node&
   if (joint.compliant)
     b.element(read_compliance(node["joint"]["compliance"], b.joint_index(joint.name.empty() ? name : joint.name, field),
                               field + ".joint.compliance"));
+}
+
+// A flexible body (docs/FLEXIBLE.md): its structure, the modes kept and
+// their damping. The points its children's joints hang on become the
+// reduction's interface nodes, so they must lie on mesh nodes.
+std::shared_ptr<const flexible::FlexibleBody> SceneReader::read_flexible(const YAML::Node& node,
+                                                                         const std::string& name,
+                                                                         const YAML::Node& all,
+                                                                         const std::string& field) const {
+  check_keys(node, {"beam", "modes", "damping", "geometric_stiffening"}, field);
+  flexible::BeamBodySpec spec;
+  spec.section = read_beam_section(require(node, "beam", field), field + ".beam");
+  if (node["modes"]) spec.normal_modes = static_cast<int>(count(node["modes"], field + ".modes", 0, flexible::kMaxModes));
+  if (node["damping"]) {
+    spec.damping_ratio = non_negative(node["damping"], field + ".damping");
+    if (spec.damping_ratio >= 1) fail(node["damping"], field + ".damping", "a modal damping ratio is below 1");
+  }
+  if (node["geometric_stiffening"])
+    spec.geometric_stiffening = flag(node["geometric_stiffening"], field + ".geometric_stiffening");
+  const double h = spec.section.length / spec.section.elements;
+  for (std::size_t c = 0; c < all.size(); ++c) {
+    const YAML::Node child = all[c];
+    if (!child.IsMap() || !child["parent"] || !child["parent"].IsScalar() || child["parent"].Scalar() != name ||
+        !child["joint"] || !child["joint"].IsMap() || !child["joint"]["parent_point"])
+      continue;
+    const std::string at = input::index_field("bodies", c) + ".joint.parent_point";
+    const Vec3 p = vec3(child["joint"]["parent_point"], at);
+    const double node_x = h * std::round(p.x() / h);
+    if (p.tail<2>().norm() > 1e-9 * spec.section.length || std::abs(p.x() - node_x) > 1e-9 * spec.section.length ||
+        p.x() < 0 || p.x() > spec.section.length * (1 + 1e-9))
+      fail(child["joint"]["parent_point"], at,
+           "a child of the flexible beam '" + name + "' hangs on a mesh node: a point (x, 0, 0) with x a multiple of " +
+               format_number(h) + " m (length / elements) in [0, " + format_number(spec.section.length) + "]");
+    spec.attachments.push_back(Vec3(node_x, 0, 0));
+  }
+  try {
+    return std::make_shared<const flexible::FlexibleBody>(flexible::beam_body(spec));
+  } catch (const std::invalid_argument& e) {
+    fail(node, field, e.what());
+  }
+}
+
+// A beam's section along its axis, the body frame's x from the origin.
+// One bending stiffness is both planes'.
+flexible::BeamSection SceneReader::read_beam_section(const YAML::Node& node, const std::string& field) const {
+  check_keys(node, {"length", "axial_stiffness", "bending_stiffness", "torsional_stiffness", "mass_per_length",
+                    "polar_inertia_per_length", "elements"},
+             field);
+  flexible::BeamSection s;
+  s.length = positive(require(node, "length", field), field + ".length");
+  s.axial_stiffness = positive(require(node, "axial_stiffness", field), field + ".axial_stiffness");
+  const YAML::Node bending = require(node, "bending_stiffness", field);
+  if (bending.IsSequence()) {
+    const std::vector<double> EI = numbers(bending, field + ".bending_stiffness");
+    if (EI.size() != 2 || !(EI[0] > 0) || !(EI[1] > 0))
+      fail(bending, field + ".bending_stiffness", "expected one positive number or two, [EI_y, EI_z]");
+    s.bending_stiffness_y = EI[0], s.bending_stiffness_z = EI[1];
+  } else {
+    s.bending_stiffness_y = s.bending_stiffness_z = positive(bending, field + ".bending_stiffness");
+  }
+  s.torsional_stiffness = positive(require(node, "torsional_stiffness", field), field + ".torsional_stiffness");
+  s.mass_per_length = positive(require(node, "mass_per_length", field), field + ".mass_per_length");
+  s.polar_inertia_per_length =
+      positive(require(node, "polar_inertia_per_length", field), field + ".polar_inertia_per_length");
+  s.elements = static_cast<int>(node["elements"] ? count(node["elements"], field + ".elements", 1, 200) : 16);
+  return s;
 }
 
 void SceneReader::read_springs(const YAML::Node& list, SceneBuilder& b) const {

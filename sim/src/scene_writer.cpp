@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "unfurl/sim/elements/all.hpp"
+#include "unfurl/sim/flexible/flexible_body.hpp"
 #include "unfurl/sim/number_text.hpp"
 #include "unfurl/sim/scene_file.hpp"
 
@@ -100,6 +101,22 @@ void mass_properties(std::ostream& out, const Body& b, const std::string& pad) {
   std::vector<double> inertia{I(0, 0), I(1, 1), I(2, 2)};
   if (I(0, 1) != 0 || I(0, 2) != 0 || I(1, 2) != 0) inertia.insert(inertia.end(), {I(0, 1), I(0, 2), I(1, 2)});
   out << pad << "inertia: " << numbers(inertia) << "\n";
+}
+
+// A flexible body's structure and modes, as the reader takes them (its
+// attachments follow from its children's joints).
+void flexible_body(std::ostream& out, const flexible::BeamBodySpec& spec, const std::string& pad) {
+  const flexible::BeamSection& s = spec.section;
+  out << pad << "flexible:\n" << pad << "  beam: {length: " << format_number(s.length)
+      << ", axial_stiffness: " << format_number(s.axial_stiffness) << ", bending_stiffness: ["
+      << format_number(s.bending_stiffness_y) << ", " << format_number(s.bending_stiffness_z)
+      << "], torsional_stiffness: " << format_number(s.torsional_stiffness)
+      << ", mass_per_length: " << format_number(s.mass_per_length)
+      << ", polar_inertia_per_length: " << format_number(s.polar_inertia_per_length) << ", elements: " << s.elements
+      << "}\n"
+      << pad << "  modes: " << spec.normal_modes << "\n"
+      << pad << "  damping: " << format_number(spec.damping_ratio) << "\n";
+  if (!spec.geometric_stiffening) out << pad << "  geometric_stiffening: false\n";
 }
 
 std::string joint_text(const Joint& j, const JointCompliance* compliance) {
@@ -271,7 +288,10 @@ std::string write_scene_text(const SceneFile& file, const std::string& comment) 
     const int k = m.parent[i];
     out << "  - name: " << m.bodies[i].name << "\n    parent: " << (k == kBase ? m.base_name : m.bodies[k].name)
         << "\n";
-    mass_properties(out, m.bodies[i], "    ");
+    if (m.bodies[i].flexible)
+      flexible_body(out, m.bodies[i].flexible->beam, "    ");
+    else
+      mass_properties(out, m.bodies[i], "    ");
     if (!file.visuals.bodies[i].mesh.empty()) out << "    mesh: " << visual(file.visuals.bodies[i]) << "\n";
     collision(out, file.visuals.bodies[i], "    ");
     out << "    joint: " << joint_text(m.joints[i], compliance_of(scene, i)) << "\n";

@@ -48,10 +48,14 @@ void Elasticity::add_joint_stiffness(const ElementState& s, RatesOut stiffness, 
 }
 
 std::vector<LoadColumn> Elasticity::load_columns(const Model& model) const {
-  return {{"elastic_energy." + model.bodies[body_].name, "J", ""}};
+  const std::string& name = model.bodies[body_].name;
+  return {{"elastic_energy." + name, "J", ""}, {"deflection." + name, "m", ""}};
 }
 
-void Elasticity::load_values(const ElementState& s, double* values) const { values[0] = potential_energy(s); }
+void Elasticity::load_values(const ElementState& s, double* values) const {
+  values[0] = potential_energy(s);
+  values[1] = flexible_of(s.model, body_).largest_deflection(&s.q[PositionIndex{s.model.first_elastic_position[body_]}]);
+}
 
 std::shared_ptr<ForceElement> Elasticity::scaled(double, double, const Model&) const {
   throw std::invalid_argument("a scene with flexible bodies cannot be scaled yet");

@@ -22,7 +22,7 @@ class Elasticity : public ForceElement {
   double dissipated_power(const ElementState& s) const override;
   bool dissipative() const override { return true; }
   void add_joint_stiffness(const ElementState& s, RatesOut stiffness, RatesOut damping) const override;
-  std::vector<LoadColumn> load_columns(const Model& model) const override;  // elastic_energy
+  std::vector<LoadColumn> load_columns(const Model& model) const override;  // elastic_energy, deflection
   void load_values(const ElementState& s, double* values) const override;
   // Flexible bodies are not scaled yet (studies::scale_scene says so).
   std::shared_ptr<ForceElement> scaled(double L, double M, const Model& model) const override;
