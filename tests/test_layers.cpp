@@ -67,13 +67,14 @@ TEST(Layers, StudiesIncludeNoRendererOrApplication) {
 }
 
 TEST(Layers, RendererReadsTheSolversDescriptionsNeverItsDynamics) {
-  // What the renderer may know of the solver: the mechanism's description,
-  // poses and recorded runs.
+  // What the renderer may know of the solver: the mechanism's description
+  // (a flexible body's mode shapes, to draw it bent, among it), poses and
+  // recorded runs.
   const std::set<std::string> readable{"spatial",      "joint",      "model",       "kinematics", "loop",
                                        "loads",        "scene",      "visuals",     "energy",     "state_layout",
                                        "run_settings", "trajectory", "number_text", "momentum",   "regulator_settings",
                                        "force_element", "elements/latch", "torque_margin_result",
-                                       "torque_margin_factors"};
+                                       "torque_margin_factors", "flexible/flexible_body"};
   for (const Include& i : includes_under("render", false)) {
     EXPECT_FALSE(starts_with(i.target, "unfurl/studies/")) << i.file << " includes " << i.target;
     if (!starts_with(i.target, "unfurl/sim/")) continue;

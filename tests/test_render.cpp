@@ -19,6 +19,7 @@
 #include "unfurl/render/mesh_generator.hpp"
 #include "render_options.hpp"
 #include "support.hpp"
+#include "unfurl/sim/flexible/flexible_body.hpp"
 #include "unfurl/io/video_pipe.hpp"
 
 namespace unfurl {
@@ -82,6 +83,40 @@ TEST_F(Render, DeployedPantographFromAbove) {
   EXPECT_NEAR(bg[0], 77, 12);
   EXPECT_NEAR(bg[1], 87, 12);
   EXPECT_NEAR(bg[2], 107, 12);
+}
+
+// A flexible beam drawn bent: the spin-up beam, seen from above, with one
+// bending mode displacing its tip 2 m across; the bent beam covers the
+// bent point and leaves the straight one, and undeformed it is the other
+// way round.
+TEST_F(Render, AFlexibleBeamIsDrawnBent) {
+  const sim::SceneFile file = sim::read_builtin_scene("spinup_beam");
+  const sim::Scene& scene = file.scene;
+  const sim::Model& model = scene.model;
+  const int w = 320, h = 320, beam = *model.find_body("beam");
+  const sim::flexible::FlexibleBody& flexible = *model.bodies[beam].flexible;
+  const sim::flexible::FlexibleNode& node = flexible.mesh_nodes[flexible.mesh_nodes.size() - 2];  // near the tip
+  int k = 0;
+  for (int j = 0; j < flexible.modes(); ++j)
+    if (std::abs(node.shape(1, j)) > std::abs(node.shape(1, k))) k = j;
+  std::vector<double> straight(model.nq, 0.0), bent = straight;
+  bent[model.first_elastic_position[beam] + k] = 2.0 / node.shape(1, k);
+  const Eigen::Vector3d moved = node.shape.topRows<3>().col(k) * bent[model.first_elastic_position[beam] + k];
+  render::FrameRenderer renderer(scene, file.visuals, w, h, {render::builtin_mesh_directory()});
+  std::vector<sim::Pose> poses;
+  sim::body_poses(model, straight.data(), poses);
+  const render::Camera camera = *render::camera_preset("top", renderer.view().bounds(poses), float(w) / h);
+  const auto brightness = [&](const std::vector<double>& q, const sim::Vec3& p) {
+    Image image;
+    renderer.deform(model, q.data(), 1.0);
+    renderer.frame(poses, 0, camera, image);
+    const auto [px, py] = project(camera, poses[beam].to_base(p).cast<float>(), w, h);
+    const std::uint8_t* c = image.pixel(px, py);
+    return c[0] + c[1] + c[2];
+  };
+  const sim::Vec3 at_rest = node.point, displaced = node.point + sim::Vec3(moved.x(), moved.y(), 0);
+  EXPECT_GT(brightness(straight, at_rest), brightness(straight, displaced) + 150);
+  EXPECT_GT(brightness(bent, displaced), brightness(bent, at_rest) + 150);
 }
 
 TEST_F(Render, SameFrameTwiceGivesIdenticalPixels) {

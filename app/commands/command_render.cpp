@@ -35,7 +35,7 @@ namespace {
 const char* kHelp =
     "usage: unfurl render [SCENE] [--out DIR] [--fps 30] [--size 1280x720] [--from T0] [--to T1]\n"
     "                     [--video FILE.mp4] [--camera NAME|AZ,EL,DIST] [--orthographic] [--plots] [--no-frames]\n"
-    "                     [--camera-frame bus|inertial] [--loads [--load-scale F]]\n"
+    "                     [--camera-frame bus|inertial] [--loads [--load-scale F]] [--exaggerate X]\n"
     "                     [--trajectory FILE] [scene options]\n"
     "       unfurl render [SCENE] --mode K [--mode-amplitude A] [--mode-period P] [--at T | --q ...]\n"
     "\n"
@@ -66,6 +66,8 @@ const char* kHelp =
     "                        the run's largest of each a quarter of the array's size; the legend\n"
     "                        gives them in N and N m\n"
     "  --load-scale F        arrows F times as long (default 1)\n"
+    "  --exaggerate X        flexible bodies drawn bending X times their elastic displacement\n"
+    "                        (default 1)\n"
     "  --trajectory FILE     draw this trajectory.csv instead of simulating (events.csv and\n"
     "                        loads.csv beside it give the latch marks and the loads plot); SCENE\n"
     "                        must be the scene it was made from\n"
@@ -96,7 +98,7 @@ int render_command(const std::vector<std::string>& argv) {
   std::set<std::string> valued = scene_flags();
   valued.insert(
       {"--out", "--fps", "--size", "--from", "--to", "--video", "--camera", "--camera-frame", "--trajectory", "--gl",
-       "--mode", "--mode-amplitude", "--mode-period", "--load-scale"});
+       "--mode", "--mode-amplitude", "--mode-period", "--load-scale", "--exaggerate"});
   valued.insert(modes_state_flags().begin(), modes_state_flags().end());
   std::set<std::string> switches{"--help", "-h", "--plots", "--no-frames", "--quiet", "--orthographic", "--loads"};
   switches.insert(modes_state_switches().begin(), modes_state_switches().end());
@@ -192,6 +194,7 @@ int render_command(const std::vector<std::string>& argv) {
   for (std::size_t k = 0; k < times.size() && !interrupt.flag().load(); ++k, ++drawn) {
     trajectory.coordinates_at(times[k], q);
     render::poses_in_camera_frame(options.camera_frame, scene.model, q.data(), poses);
+    renderer.deform(scene.model, q.data(), options.exaggerate);
     std::vector<render::LoadArrow> arrows;
     if (options.loads)
       arrows = render::load_arrows(scene, trajectory, trajectory.sample_at(times[k]), poses, arrow_scale);

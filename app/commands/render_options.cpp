@@ -46,6 +46,10 @@ RenderOptions parse_render_options(const Args& args) {
     if (!(scale > 0) || scale > 1000) throw UsageError("--load-scale: expected a factor between 0 and 1000");
     o.load_scale = static_cast<float>(scale);
   }
+  if (args.has("--exaggerate")) {
+    o.exaggerate = args.number("--exaggerate", 1);
+    if (!(o.exaggerate > 0) || o.exaggerate > 1e6) throw UsageError("--exaggerate: expected a factor between 0 and 1e6");
+  }
   return o;
 }
 

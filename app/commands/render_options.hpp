@@ -32,13 +32,15 @@ struct RenderOptions {
   // kind's largest `load_scale` times the default length.
   bool loads = false;
   float load_scale = 1;
+  // Flexible bodies' elastic displacements drawn this many times.
+  double exaggerate = 1;
 };
 
 // "WxH" in pixels, 16 to 8192 each; throws UsageError naming the flag.
 std::pair<int, int> parse_pixel_size(const std::string& flag, const std::string& text);
 
 // From --fps, --size, --from, --to, --video, --camera, --gl, --loads,
-// --load-scale; throws UsageError.
+// --load-scale, --exaggerate; throws UsageError.
 RenderOptions parse_render_options(const Args& args);
 
 // t = T0 + k / fps for k = 0, 1, ... up to T1, within [t_begin, t_end].

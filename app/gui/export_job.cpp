@@ -58,6 +58,7 @@ bool ExportJob::step(double budget_ms) {
     }
     trajectory_.coordinates_at(times_[drawn_], q);
     render::poses_in_camera_frame(request_.options.camera_frame, scene_.model, q.data(), poses);
+    renderer_->deform(scene_.model, q.data(), request_.options.exaggerate);
     render::Image image;
     std::vector<render::LoadArrow> arrows;
     if (loads_) arrows = render::load_arrows(scene_, trajectory_, trajectory_.sample_at(times_[drawn_]), poses, *loads_);

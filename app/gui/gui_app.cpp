@@ -247,6 +247,7 @@ void GuiApp::apply(const Requests& r) {
       if (state_.trajectory.empty()) throw std::runtime_error("nothing computed yet");
       ExportRequest request = *r.export_range;
       request.options.camera_frame = state_.camera_frame;
+      request.options.exaggerate = state_.exaggeration;
       export_job_ = std::make_unique<ExportJob>(request, state_.scene, state_.visuals, state_.trajectory,
                                                 state_.camera, load_arrow_scale());
       state_.export_progress = {true, 0, export_job_->total(), ""};

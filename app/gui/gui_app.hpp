@@ -91,6 +91,8 @@ class GuiApp : private ScriptTarget {
   void keyboard_shortcuts(Requests& requests);
   Eigen::AlignedBox3f swept_bounds() const;
   void current_poses(std::vector<sim::Pose>& poses) const;
+  // The coordinates shown: the mode animation's, the play-head's, or the start.
+  void current_coordinates(std::vector<double>& q) const;
   // The run's loads at the play-head as arrows placed by `poses`; none when
   // they are off or a mode is shown. `legend` gets their scale.
   std::vector<render::LoadArrow> current_load_arrows(const std::vector<sim::Pose>& poses, std::string& legend) const;
@@ -116,9 +118,11 @@ class GuiApp : private ScriptTarget {
     int mode = -1;         // the mode animated
     std::array<float, 9> camera{};  // the camera and the frame it rides in
     float load_scale = 0;           // 0: no load arrows
+    float exaggeration = 1;         // flexible bodies' drawn bending
     bool operator==(const ViewportKey& o) const {
       return view == o.view && w == o.w && h == o.h && generation == o.generation && samples == o.samples &&
-             play_time == o.play_time && mode == o.mode && camera == o.camera && load_scale == o.load_scale;
+             play_time == o.play_time && mode == o.mode && camera == o.camera && load_scale == o.load_scale &&
+             exaggeration == o.exaggeration;
     }
   };
   ViewportKey viewport_key_;

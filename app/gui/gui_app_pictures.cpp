@@ -21,6 +21,9 @@ void GuiApp::save_view_png(const std::string& path) {
     render::FrameRenderer renderer(state_.scene, state_.visuals, w, h, mesh_directories(state_.scene));
     std::vector<sim::Pose> poses;
     current_poses(poses);
+    std::vector<double> q;
+    current_coordinates(q);
+    renderer.deform(state_.scene.model, q.data(), state_.exaggeration);
     std::string legend;
     const std::vector<render::LoadArrow> arrows = current_load_arrows(poses, legend);
     render::Image image;

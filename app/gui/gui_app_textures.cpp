@@ -9,12 +9,17 @@
 
 namespace unfurl::app {
 
-void GuiApp::current_poses(std::vector<sim::Pose>& poses) const {
-  std::vector<double> q = state_.scene.q0;
+void GuiApp::current_coordinates(std::vector<double>& q) const {
+  q = state_.scene.q0;
   if (state_.modes.shown >= 0)
     state_.modes.animation.coordinates_at(state_.modes.clock, q);
   else if (!state_.trajectory.empty())
     state_.trajectory.coordinates_at(state_.play_time, q);
+}
+
+void GuiApp::current_poses(std::vector<sim::Pose>& poses) const {
+  std::vector<double> q;
+  current_coordinates(q);
   render::poses_in_camera_frame(state_.camera_frame, state_.scene.model, q.data(), poses);
 }
 
@@ -81,7 +86,8 @@ void GuiApp::draw_viewport_texture() {
                         state_.modes.shown,
                         {c.target.x(), c.target.y(), c.target.z(), c.azimuth_deg, c.elevation_deg, c.distance,
                          c.fov_deg, c.orthographic ? 1.0f : 0.0f, static_cast<float>(state_.camera_frame)},
-                        state_.show_loads ? state_.load_scale : 0.0f};
+                        state_.show_loads ? state_.load_scale : 0.0f,
+                        state_.exaggeration};
   if (key == viewport_key_ && viewport_drawn_) return;
   viewport_key_ = key;
   viewport_drawn_ = true;
@@ -89,6 +95,9 @@ void GuiApp::draw_viewport_texture() {
   current_poses(poses);
   const std::vector<render::LoadArrow> arrows = current_load_arrows(poses, state_.load_legend);
   state_.load_arrows_drawn = static_cast<int>(arrows.size());
+  std::vector<double> q;
+  current_coordinates(q);
+  view_->deform(state_.scene.model, q.data(), state_.exaggeration);
   viewport_->bind();
   view_->draw(poses, state_.camera, w, h, arrows);
   viewport_->resolve();

@@ -145,6 +145,8 @@ struct GuiState {
   bool show_loads = false;
   float load_scale = 1;
   std::string load_legend;
+  // Flexible bodies' elastic displacements drawn this many times.
+  float exaggeration = 1;
   int load_arrows_drawn = 0;  // in the view as last drawn
   std::string camera_name = "iso";  // the preset the view shows; "" once orbited
   bool camera_fitted = false;

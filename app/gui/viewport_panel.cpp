@@ -55,6 +55,13 @@ void viewport_panel(GuiState& state, unsigned texture, const Eigen::AlignedBox3f
     ImGui::SliderFloat("##load_scale", &state.load_scale, 0.1f, 10.0f, "arrows x%.2g", ImGuiSliderFlags_Logarithmic);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("the arrows' length: the run's largest load is this times a quarter of the array");
   }
+  if (state.scene.model.has_flexible_bodies()) {
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(em(8));
+    ImGui::SliderFloat("##exaggeration", &state.exaggeration, 1.0f, 1000.0f, "bending x%.3g",
+                       ImGuiSliderFlags_Logarithmic);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("flexible bodies' elastic displacements drawn this many times");
+  }
   const ImVec2 size = ImGui::GetContentRegionAvail();
   state.viewport_width = std::max(16, static_cast<int>(size.x));
   state.viewport_height = std::max(16, static_cast<int>(size.y));

@@ -38,11 +38,16 @@ class ObjBuilder {
   }
 
   // A closed cylinder from a to b, smooth-shaded sides.
-  void tube(const V3& a, const V3& b, double radius, int sides) {
+  // `segments` rows of quads along its length (a flexible beam's drawing
+  // bends between them).
+  void tube(const V3& a, const V3& b, double radius, int sides, int segments = 1) {
     const std::vector<V3> ring = unit_ring((b - a).normalized(), sides);
-    for (int k = 0; k < sides; ++k) {
-      const V3 &r0 = ring[k], &r1 = ring[(k + 1) % sides];
-      quad_smooth(a + radius * r0, a + radius * r1, b + radius * r1, b + radius * r0, r0, r1);
+    for (int row = 0; row < segments; ++row) {
+      const V3 from = a + (b - a) * row / segments, to = a + (b - a) * (row + 1) / segments;
+      for (int k = 0; k < sides; ++k) {
+        const V3 &r0 = ring[k], &r1 = ring[(k + 1) % sides];
+        quad_smooth(from + radius * r0, from + radius * r1, to + radius * r1, to + radius * r0, r0, r1);
+      }
     }
     std::vector<V3> top, bottom;
     for (int k = 0; k < sides; ++k) {
@@ -213,6 +218,16 @@ void rod(std::map<std::string, std::string>& files) {
   files["rod.mtl"] = mtl("rod", {{"rod_paint", V3(0.75, 0.22, 0.15)}});
 }
 
+// A flexible beam's drawing: a unit rod along x from 0 to 1 (radius 0.5)
+// in 64 rows, so that it bends smoothly; scale it by [length, d, d].
+void boom(std::map<std::string, std::string>& files) {
+  ObjBuilder b("boom");
+  b.material("boom_paint");
+  b.tube(V3(0, 0, 0), V3(1, 0, 0), 0.5, 16, 64);
+  files["boom.obj"] = b.obj();
+  files["boom.mtl"] = mtl("boom", {{"boom_paint", V3(0.78, 0.74, 0.66)}});
+}
+
 }  // namespace
 
 std::map<std::string, std::string> builtin_mesh_files() {
@@ -223,6 +238,7 @@ std::map<std::string, std::string> builtin_mesh_files() {
   pin(files);
   cone(files);
   rod(files);
+  boom(files);
   return files;
 }
 

@@ -2,10 +2,12 @@
 
 #include "gl.hpp"
 #include "shader.hpp"
+#include "unfurl/sim/flexible/flexible_body.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <string>
 
 namespace unfurl::render {
 
@@ -17,10 +19,24 @@ layout(location = 1) in vec3 normal;
 uniform mat4 model;
 uniform mat4 view_projection;
 uniform mat3 normal_matrix;
+// A flexible beam's mesh bends: each vertex moves by the displacement at
+// its body-frame x, interpolated between stations bend_spacing apart.
+uniform int bend_count;
+uniform float bend_spacing;
+uniform mat4 body_from_mesh;
+uniform mat4 world_from_body;
+uniform vec3 bend[BEND_STATIONS];
 out vec3 world_normal;
 out vec3 world_position;
 void main() {
   vec4 p = model * vec4(position, 1.0);
+  if (bend_count > 1) {
+    vec4 b = body_from_mesh * vec4(position, 1.0);
+    float s = clamp(b.x / bend_spacing, 0.0, float(bend_count - 1));
+    int k = min(int(s), bend_count - 2);
+    b.xyz += mix(bend[k], bend[k + 1], s - float(k));
+    p = world_from_body * b;
+  }
   world_position = p.xyz;
   world_normal = normal_matrix * normal;
   gl_Position = view_projection * p;
@@ -89,10 +105,17 @@ Eigen::Affine3f visual_transform(const sim::Visual& v) {
   return T;
 }
 
+std::string vertex_shader() {
+  std::string text = kVertex;
+  const std::string key = "BEND_STATIONS";
+  text.replace(text.find(key), key.size(), std::to_string(SceneView::kBendStations));
+  return text;
+}
+
 }  // namespace
 
 SceneView::SceneView(const sim::Scene& scene, const sim::SceneVisuals& visuals, MeshLibrary& meshes)
-    : shader_(std::make_unique<Shader>(kVertex, kFragment)),
+    : shader_(std::make_unique<Shader>(vertex_shader().c_str(), kFragment)),
       background_(std::make_unique<Shader>(kBackgroundVertex, kBackgroundFragment)) {
   glGenVertexArrays(1, &background_vao_);
   std::set<int> images;
@@ -105,6 +128,7 @@ SceneView::SceneView(const sim::Scene& scene, const sim::SceneVisuals& visuals, 
     items_.push_back({i, &meshes.get(v.mesh), visual_transform(v)});
   }
   add_pins(scene, visuals, meshes);
+  bends_.resize(scene.model.size());
   for (const auto& element : scene.elements)
     for (const sim::ElementLink& link : element->links()) links_.push_back(link);
   if (!links_.empty()) link_mesh_ = &meshes.get("pin");
@@ -113,6 +137,29 @@ SceneView::SceneView(const sim::Scene& scene, const sim::SceneVisuals& visuals, 
 }
 
 SceneView::~SceneView() = default;
+
+void SceneView::deform(const sim::Model& model, const double* q, double exaggeration) {
+  for (int i = 0; i < model.size(); ++i) {
+    const auto& flexible = model.bodies[i].flexible;
+    if (!flexible) continue;
+    const std::vector<sim::flexible::FlexibleNode>& nodes = flexible->mesh_nodes;
+    const Eigen::Map<const Eigen::VectorXd> eta(q + model.first_elastic_position[i], flexible->modes());
+    Bend& bend = bends_[i];
+    const double length = nodes.back().point.x();
+    bend.spacing = static_cast<float>(length / (kBendStations - 1));
+    bend.displacement.resize(kBendStations);
+    // The mesh nodes' displacements, resampled at equal stations (linear
+    // between nodes).
+    std::size_t a = 0;
+    for (int k = 0; k < kBendStations; ++k) {
+      const double x = length * k / (kBendStations - 1);
+      while (a + 2 < nodes.size() && nodes[a + 1].point.x() < x) ++a;
+      const double f = std::clamp((x - nodes[a].point.x()) / (nodes[a + 1].point.x() - nodes[a].point.x()), 0.0, 1.0);
+      const Eigen::Vector3d u = (1 - f) * (nodes[a].shape.topRows<3>() * eta) + f * (nodes[a + 1].shape.topRows<3>() * eta);
+      bend.displacement[k] = (exaggeration * u).cast<float>();
+    }
+  }
+}
 
 void SceneView::add_pins(const sim::Scene& scene, const sim::SceneVisuals& visuals, MeshLibrary& meshes) {
   // Two short pins near the ends of a hinge line as wide as the child's
@@ -175,7 +222,19 @@ void SceneView::draw(const std::vector<sim::Pose>& poses, const Camera& camera, 
   glUniform3fv(shader_->uniform("sun_direction"), 1, sun.data());
   const Eigen::Vector3f eye = camera.eye();
   glUniform3fv(shader_->uniform("eye"), 1, eye.data());
-  for (const Item& item : items_) draw_mesh(*item.mesh, placement(item, poses), nullptr);
+  for (const Item& item : items_) {
+    const Bend* bend = item.body == sim::kBase || bends_[item.body].displacement.empty() ? nullptr : &bends_[item.body];
+    if (bend) {
+      const Eigen::Affine3f body = pose_transform(poses[item.body]);
+      glUniformMatrix4fv(shader_->uniform("body_from_mesh"), 1, GL_FALSE, item.local.matrix().data());
+      glUniformMatrix4fv(shader_->uniform("world_from_body"), 1, GL_FALSE, body.matrix().data());
+      glUniform1f(shader_->uniform("bend_spacing"), bend->spacing);
+      glUniform3fv(shader_->uniform("bend"), kBendStations, bend->displacement.front().data());
+    }
+    glUniform1i(shader_->uniform("bend_count"), bend ? kBendStations : 0);
+    draw_mesh(*item.mesh, placement(item, poses), nullptr);
+  }
+  glUniform1i(shader_->uniform("bend_count"), 0);
   // Springs orange, cables pale grey, bushings teal.
   const Eigen::Vector3f spring(0.95f, 0.55f, 0.15f), cable(0.85f, 0.85f, 0.8f), bushing(0.15f, 0.7f, 0.7f);
   for (const sim::ElementLink& link : links_) {

@@ -21,6 +21,8 @@ class FrameRenderer {
                 std::vector<std::string> mesh_directories);
 
   const SceneView& view() const { return *view_; }
+  // Flexible bodies drawn bent as at q (SceneView::deform).
+  void deform(const sim::Model& model, const double* q, double exaggeration) { view_->deform(model, q, exaggeration); }
   int width() const { return framebuffer_.width(); }
   int height() const { return framebuffer_.height(); }
 

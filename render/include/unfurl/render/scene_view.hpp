@@ -31,6 +31,13 @@ class SceneView {
   void draw(const std::vector<sim::Pose>& poses, const Camera& camera, int width, int height,
             const std::vector<LoadArrow>& arrows = {}) const;
 
+  // Flexible bodies drawn bent as at q, their displacements times
+  // `exaggeration` (until the next call; rigid bodies are unaffected).
+  void deform(const sim::Model& model, const double* q, double exaggeration);
+
+  // Stations along a flexible beam at which its drawn bending is given.
+  static constexpr int kBendStations = 65;
+
   // The base-frame bounds of everything drawn at these poses.
   Eigen::AlignedBox3f bounds(const std::vector<sim::Pose>& poses) const;
 
@@ -54,7 +61,13 @@ class SceneView {
   // taken from the shaft when the arrow is short.
   void draw_arrow(const LoadArrow& arrow) const;
 
+  struct Bend {
+    float spacing = 0;
+    std::vector<Eigen::Vector3f> displacement;  // body frame, per station; empty: rigid
+  };
+
   std::vector<Item> items_;
+  std::vector<Bend> bends_;  // per body
   std::vector<sim::ElementLink> links_;
   const MeshModel* link_mesh_ = nullptr;
   const MeshModel* shaft_mesh_ = nullptr;
