@@ -115,6 +115,13 @@ TEST(RightHandSide, ADrivenCrankAllocatesNothing) {
   EXPECT_EQ(allocations_in_jacobian_times(fourbar), 0);
 }
 
+// A flexible beam on a driven hub: the extended (6 + m) passes.
+TEST(RightHandSide, AFlexibleBeamAllocatesNothing) {
+  const sim::Scene spinup = test::scene_file("spinup_beam");
+  EXPECT_EQ(allocations_in_rhs(spinup, false), 0);
+  EXPECT_EQ(allocations_in_jacobian_times(spinup), 0);
+}
+
 TEST(RightHandSide, GravitySceneAllocatesNothing) {
   EXPECT_EQ(allocations_in_rhs(test::scene_file("double_pendulum"), false), 0);
 }

@@ -410,7 +410,7 @@ bool Dynamics::observe(double t, const double* y, Observation& out) {
   std::vector<Vec6> h(model.size());
   for (int i = 0; i < model.size(); ++i) {
     if (model.flexible(i)) {
-      const Eigen::VectorXd own = sweep_.own_momentum(i, v_[i], w_.data());
+      const flexible::ExtendedVector own = sweep_.own_momentum(i, v_[i], w_.data());
       const int m = model.bodies[i].flexible->modes();
       h[i] = own.head<6>();
       E.kinetic += 0.5 * (v_[i].dot(h[i]) +

@@ -80,7 +80,7 @@ SceneBuilder& SceneBuilder::body(const Body& body, const std::string& parent, Jo
   scene_.model.bodies.push_back(body.flexible ? undeformed(body) : body);
   scene_.model.joints.push_back(std::move(joint));
   visuals_.bodies.push_back(std::move(visual));
-  if (body.flexible) scene_.elements.push_back(std::make_shared<Elasticity>(scene_.model.size() - 1));
+  if (body.flexible) scene_.elements.push_back(std::make_shared<Elasticity>(scene_.model.size() - 1, body.flexible));
   return *this;
 }
 

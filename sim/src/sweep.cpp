@@ -29,13 +29,14 @@ Sweep::Sweep(const Model& model)
       f.driven = model.joints[i].driven;
       f.hinge_free = model.joints[i].dof() == 1 && !f.driven;
       const int free = f.hinge_free + f.m;
-      f.A_free = Eigen::MatrixXd::Zero(f.d, free);
+      f.A_free = flexible::ExtendedMatrix::Zero(f.d, free);
       if (f.hinge_free) f.A_free.col(0).head<6>() = A_[i];
       f.A_free.bottomRightCorner(f.m, f.m).setIdentity();
-      f.A_driven = Eigen::VectorXd::Zero(f.d);
+      f.A_driven = flexible::ExtendedVector::Zero(f.d);
+      f.M_own.resize(f.d, f.d);
       if (f.driven) f.A_driven.head<6>() = A_[i];
       f.nodes.resize(model.bodies[i].flexible->nodes.size());
-      f.N.assign(f.nodes.size(), Eigen::Matrix<double, 6, Eigen::Dynamic>::Zero(6, f.d));
+      f.N.assign(f.nodes.size(), flexible::NodeMatrix::Zero(6, f.d));
       flexible_.push_back(std::move(f));
     }
     driven_[i] = model.joints[i].driven && model.joints[i].is_scalar();
@@ -65,12 +66,12 @@ void Sweep::factor_multi_axis(int i, const double* joint_diagonal) {
 // free coordinates, and H M*^ whose frame block goes to the parent.
 void Sweep::configure_flexible(int i, const double* joint_diagonal) {
   Flexible& f = flexible_[flex_[i]];
-  Eigen::MatrixXd K = f.A_free.transpose() * f.M_star * f.A_free;
+  flexible::ExtendedMatrix K = f.A_free.transpose() * f.M_star * f.A_free;
   if (joint_diagonal) {
     if (f.hinge_free) K(0, 0) += joint_diagonal[model_.first_velocity[i].value];
     for (int r = 0; r < f.m; ++r) K(f.hinge_free + r, f.hinge_free + r) += joint_diagonal[model_.first_elastic_velocity[i] + r];
   }
-  f.D = Eigen::LLT<Eigen::MatrixXd>(K).solve(Eigen::MatrixXd::Identity(K.rows(), K.cols()));
+  f.D = Eigen::LLT<flexible::ExtendedMatrix>(K).solve(flexible::ExtendedMatrix::Identity(K.rows(), K.cols()));
   f.M_star_A = f.M_star * f.A_free;
   M_star_[i] = (f.M_star - f.M_star_A * f.D * f.M_star_A.transpose()).topLeftCorner<6, 6>();  // H M*^'s frame block
 }
@@ -86,7 +87,7 @@ void Sweep::set_configuration(const double* q, const double* joint_diagonal) {
     if (flex_[i] < 0) continue;
     Flexible& f = flexible_[flex_[i]];
     const double* eta = q + model_.first_elastic_position[i];
-    f.M_own = model_.bodies[i].flexible->inertia.mass_matrix(Eigen::Map<const Eigen::VectorXd>(eta, f.m));
+    model_.bodies[i].flexible->inertia.mass_matrix(eta, f.M_own);
     f.M_star = f.M_own;
     for (std::size_t a = 0; a < f.nodes.size(); ++a) {
       f.nodes[a].set(model_.bodies[i].flexible->nodes[a], eta);
@@ -126,7 +127,7 @@ void Sweep::carry_inertia(int i, const Mat6& HM) {
     return;
   }
   Flexible& f = flexible_[flex_[k]];
-  const Eigen::Matrix<double, 6, Eigen::Dynamic> T = flexible::velocity_matrix(X_[i]) * f.N[a];
+  const flexible::NodeMatrix T = flexible::velocity_matrix(X_[i]) * f.N[a];
   f.M_star.noalias() += T.transpose() * HM * T;
 }
 
@@ -174,10 +175,10 @@ Vec6 Sweep::rates_of(int i, const double* x) const {
   return w;
 }
 
-Eigen::VectorXd Sweep::own_momentum(int i, const Vec6& v, const double* w) const {
+flexible::ExtendedVector Sweep::own_momentum(int i, const Vec6& v, const double* w) const {
   if (flex_[i] < 0) return M_[i] * v;
   const Flexible& f = flexible_[flex_[i]];
-  Eigen::VectorXd V(f.d);
+  flexible::ExtendedVector V(f.d);
   V << v, Eigen::Map<const Eigen::VectorXd>(w + model_.first_elastic_velocity[i], f.m);
   return f.M_own * V;
 }
@@ -203,31 +204,35 @@ void Sweep::flexible_accelerations(const std::vector<Vec6>& v, const double* dq,
   for (int i = 0; i < N; ++i) bias[i] = flex_[i] >= 0 ? Vec6(-F[i]) : Vec6(omega_times(v[i], M_[i] * v[i]) - F[i]);
   for (const Flexible& f : flexible_) {
     const int i = f.body, e = model_.first_elastic_velocity[i];
-    const Eigen::Map<const Eigen::VectorXd> eta(q_.data() + model_.first_elastic_position[i], f.m), eta_dot(dq + e, f.m);
-    Eigen::VectorXd V(f.d);
-    V << v[i], eta_dot;
+    const double* eta = q_.data() + model_.first_elastic_position[i];
+    flexible::ExtendedVector V(f.d);
+    V << v[i], Eigen::Map<const Eigen::VectorXd>(dq + e, f.m);
     const flexible::InertiaInvariants& inertia = model_.bodies[i].flexible->inertia;
-    const Eigen::VectorXd MV = f.M_own * V;
-    f.b = inertia.mass_matrix_rate(eta, eta_dot) * V;
+    const flexible::ExtendedVector MV = f.M_own * V;
+    flexible::ExtendedMatrix M_dot(f.d, f.d);
+    inertia.mass_matrix_rate(eta, dq + e, M_dot);
+    f.b.noalias() = M_dot * V;
     f.b.head<6>() += omega_times(v[i], MV.head<6>());
-    f.b.tail(f.m) -= inertia.kinetic_gradient(eta, V);
+    flexible::ExtendedVector g(f.m);
+    inertia.kinetic_gradient(eta, V.data(), g);
+    f.b.tail(f.m) -= g;
   }
   for (int i = N - 1; i >= 0; --i) {
     const int c = model_.first_velocity[i].value, k = model_.parent[i];
     if (flex_[i] >= 0) {
       const Flexible& f = flexible_[flex_[i]];
       f.b.head<6>() += bias[i];
-      f.a_c = Eigen::VectorXd::Zero(f.d);
+      f.a_c.setZero(f.d);
       if (c >= 0) f.a_c.head<6>() = motion_cross(v[i], A_[i] * dq[c]);
       if (f.driven) f.a_c += f.A_driven * (driven ? driven[c] : 0.0);
       if (const int n = model_.node_of(i); n >= 0)
         f.a_c.head<6>() += X_[i].transform_velocity(
             flexible_[flex_[k]].nodes[n].velocity_product(v[k], dq + model_.first_elastic_velocity[k]));
-      Eigen::VectorXd Q_f(f.hinge_free + f.m);
+      flexible::ExtendedVector Q_f(f.hinge_free + f.m);
       if (f.hinge_free) Q_f[0] = Q[c];
       Q_f.tail(f.m) = Eigen::Map<const Eigen::VectorXd>(Q + model_.first_elastic_velocity[i], f.m);
       f.u = Q_f - f.A_free.transpose() * f.b;
-      const Eigen::VectorXd carried =
+      const flexible::ExtendedVector carried =
           f.b + f.M_star * f.a_c + f.M_star_A * (f.D * (f.u - f.M_star_A.transpose() * f.a_c));
       bias[i] = f.b.head<6>();
       if (k != kBase) carry_bias(i, carried.head<6>(), bias);
@@ -276,7 +281,7 @@ void Sweep::flexible_accelerations(const std::vector<Vec6>& v, const double* dq,
       const Flexible& f = flexible_[flex_[i]];
       f.a_hat = f.a_c;
       f.a_hat.head<6>() += X_[i].transform_velocity(from_parent);
-      const Eigen::VectorXd x = f.D * (f.u - f.M_star_A.transpose() * f.a_hat);
+      const flexible::ExtendedVector x = f.D * (f.u - f.M_star_A.transpose() * f.a_hat);
       f.a_hat += f.A_free * x;
       if (f.driven) ddq[c] = driven ? driven[c] : 0.0;
       if (f.hinge_free) ddq[c] = x[0];
@@ -387,15 +392,15 @@ void Sweep::elastic_gyroscopic(int i, const std::vector<Vec6>& v, const std::vec
                                double* dp) const {
   const Flexible& f = flexible_[flex_[i]];
   const int e = model_.first_elastic_velocity[i];
-  const Eigen::Map<const Eigen::VectorXd> eta(q_.data() + model_.first_elastic_position[i], f.m), eta_dot(w + e, f.m);
-  Eigen::VectorXd V(f.d);
-  V << v[i], eta_dot;
-  Eigen::VectorXd g = model_.bodies[i].flexible->inertia.kinetic_gradient(eta, V);
+  flexible::ExtendedVector V(f.d);
+  V << v[i], Eigen::Map<const Eigen::VectorXd>(w + e, f.m);
+  flexible::ExtendedVector g(f.m);
+  model_.bodies[i].flexible->inertia.kinetic_gradient(q_.data() + model_.first_elastic_position[i], V.data(), g);
   for (std::size_t a = 0; a < f.nodes.size(); ++a) {
     Vec6 hung = Vec6::Zero();
     for (int j : model_.children[i])
       if (model_.node_of(j) == static_cast<int>(a)) hung += X_[j].transform_force(mu[j]);
-    g += f.nodes[a].kinetic_gradient(v[i], w + e, hung);
+    f.nodes[a].add_kinetic_gradient(v[i], w + e, hung, g);
   }
   Eigen::Map<Eigen::VectorXd>(dp + e, f.m) = g;
 }

@@ -1,5 +1,6 @@
 #include "unfurl/sim/elements/elasticity.hpp"
 
+#include <cstdio>
 #include <stdexcept>
 
 #include "unfurl/sim/scene.hpp"
@@ -55,6 +56,27 @@ std::vector<LoadColumn> Elasticity::load_columns(const Model& model) const {
 void Elasticity::load_values(const ElementState& s, double* values) const {
   values[0] = potential_energy(s);
   values[1] = flexible_of(s.model, body_).largest_deflection(&s.q[PositionIndex{s.model.first_elastic_position[body_]}]);
+}
+
+std::vector<ElementParameter> Elasticity::parameters() const {
+  const flexible::BeamBodySpec& spec = flexible_->beam;
+  std::vector<ElementParameter> out{{"damping", "damping ratio", spec.damping_ratio, 0.001, 0, 0.99,
+                                     "every elastic coordinate's modal damping ratio zeta"}};
+  const flexible::BeamSection& s = spec.section;
+  if (s.bending_stiffness_y == s.bending_stiffness_z)
+    out.push_back({"beam.bending_stiffness", "EI [N m^2]", s.bending_stiffness_z, 0.01 * s.bending_stiffness_z, 0,
+                   1e15, "the beam's bending stiffness in both planes"});
+  out.push_back({"beam.mass_per_length", "rho A [kg/m]", s.mass_per_length, 0.01 * s.mass_per_length, 0, 1e9,
+                 "the beam's mass per length"});
+  return out;
+}
+
+std::string Elasticity::note() const {
+  const Eigen::VectorXd& f = flexible_->frequency_hz;
+  char text[96];
+  std::snprintf(text, sizeof text, "%d elastic coordinates, %.4g .. %.4g Hz with the frame held", flexible_->modes(),
+                f.size() ? f.minCoeff() : 0.0, f.size() ? f.maxCoeff() : 0.0);
+  return text;
 }
 
 std::shared_ptr<ForceElement> Elasticity::scaled(double, double, const Model&) const {

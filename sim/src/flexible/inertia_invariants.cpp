@@ -53,8 +53,31 @@ InertiaInvariants::InertiaInvariants(const std::vector<MassPoint>& points, const
 }
 
 Eigen::MatrixXd InertiaInvariants::mass_matrix(const Eigen::VectorXd& eta) const {
+  Eigen::MatrixXd M(6 + m_, 6 + m_);
+  mass_matrix(eta.data(), M);
+  return M;
+}
+
+Eigen::MatrixXd InertiaInvariants::mass_matrix_rate(const Eigen::VectorXd& eta, const Eigen::VectorXd& eta_dot) const {
+  Eigen::MatrixXd M(6 + m_, 6 + m_);
+  mass_matrix_rate(eta.data(), eta_dot.data(), M);
+  return M;
+}
+
+Eigen::VectorXd InertiaInvariants::kinetic_gradient(const Eigen::VectorXd& eta, const Eigen::VectorXd& V) const {
+  Eigen::VectorXd g(m_);
+  kinetic_gradient(eta.data(), V.data(), g);
+  return g;
+}
+
+// B and C are built in M's blocks, so nothing is allocated.
+void InertiaInvariants::mass_matrix(const double* eta_data, Eigen::Ref<Eigen::MatrixXd> M) const {
+  const Eigen::Map<const Eigen::VectorXd> eta(eta_data, m_);
   Vec3 S = S0_ + S1_ * eta;
-  Eigen::Matrix3Xd B = S1_, C = C0_;
+  auto B = M.topRightCorner(3, m_);
+  auto C = M.block(3, 6, 3, m_);
+  B = S1_;
+  C = C0_;
   Mat3 J = J0_;
   for (int k = 0; k < m_; ++k) {
     B -= eta[k] * E_[k];
@@ -66,22 +89,22 @@ Eigen::MatrixXd InertiaInvariants::mass_matrix(const Eigen::VectorXd& eta) const
       J += kl * J2_[k * m_ + l];
     }
   }
-  Eigen::MatrixXd M(6 + m_, 6 + m_);
   M.topLeftCorner<3, 3>() = mass_ * Mat3::Identity();
   M.block<3, 3>(0, 3) = -skew(S);
   M.block<3, 3>(3, 0) = skew(S);
   M.block<3, 3>(3, 3) = J;
-  M.topRightCorner(3, m_) = B;
-  M.block(3, 6, 3, m_) = C;
   M.bottomLeftCorner(m_, 3) = B.transpose();
   M.block(6, 3, m_, 3) = C.transpose();
   M.bottomRightCorner(m_, m_) = Me_;
-  return M;
 }
 
-Eigen::MatrixXd InertiaInvariants::mass_matrix_rate(const Eigen::VectorXd& eta, const Eigen::VectorXd& eta_dot) const {
+void InertiaInvariants::mass_matrix_rate(const double* eta_data, const double* eta_dot_data,
+                                         Eigen::Ref<Eigen::MatrixXd> M) const {
+  const Eigen::Map<const Eigen::VectorXd> eta(eta_data, m_), eta_dot(eta_dot_data, m_);
+  M.setZero();
   Vec3 dS = S1_ * eta_dot;
-  Eigen::Matrix3Xd dB = Eigen::Matrix3Xd::Zero(3, m_), dC = Eigen::Matrix3Xd::Zero(3, m_);
+  auto dB = M.topRightCorner(3, m_);
+  auto dC = M.block(3, 6, 3, m_);
   Mat3 dJ = Mat3::Zero();
   for (int k = 0; k < m_; ++k) {
     dB -= eta_dot[k] * E_[k];
@@ -92,24 +115,20 @@ Eigen::MatrixXd InertiaInvariants::mass_matrix_rate(const Eigen::VectorXd& eta, 
       dJ += (eta_dot[k] * eta[l] + eta[k] * eta_dot[l]) * J2_[k * m_ + l];
     }
   }
-  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(6 + m_, 6 + m_);
   M.block<3, 3>(0, 3) = -skew(dS);
   M.block<3, 3>(3, 0) = skew(dS);
   M.block<3, 3>(3, 3) = dJ;
-  M.topRightCorner(3, m_) = dB;
-  M.block(3, 6, 3, m_) = dC;
   M.bottomLeftCorner(m_, 3) = dB.transpose();
   M.block(6, 3, m_, 3) = dC.transpose();
-  return M;
 }
 
 // d/d eta_k of T = (1/2) m v^2 - v^T S~ w + v^T B eta' + (1/2) w^T J w +
 // w^T C eta' + (1/2) eta'^T Me eta' (S2's and J2's symmetric parts give
 // the factors 2; J2_lk = J2_kl^T).
-Eigen::VectorXd InertiaInvariants::kinetic_gradient(const Eigen::VectorXd& eta, const Eigen::VectorXd& V) const {
-  const Vec3 v = V.head<3>(), w = V.segment<3>(3);
-  const Eigen::VectorXd eta_dot = V.tail(m_);
-  Eigen::VectorXd g(m_);
+void InertiaInvariants::kinetic_gradient(const double* eta_data, const double* V,
+                                         Eigen::Ref<Eigen::VectorXd> g) const {
+  const Eigen::Map<const Eigen::VectorXd> eta(eta_data, m_), eta_dot(V + 6, m_);
+  const Eigen::Map<const Vec3> v(V), w(V + 3);
   for (int k = 0; k < m_; ++k) {
     Vec3 dS = S1_.col(k);
     Mat3 dJ = 0.5 * J1_[k];
@@ -117,9 +136,9 @@ Eigen::VectorXd InertiaInvariants::kinetic_gradient(const Eigen::VectorXd& eta, 
       dS -= eta[l] * S2_[k * m_ + l];
       dJ += eta[l] * J2_[k * m_ + l];
     }
-    g[k] = -v.dot(skew(dS) * w) - v.dot(E_[k] * eta_dot) + w.dot(dJ * w) + w.dot(C1_[k] * eta_dot);
+    const Vec3 E_eta_dot = E_[k] * eta_dot, C_eta_dot = C1_[k] * eta_dot;
+    g[k] = -v.dot(skew(dS) * w) - v.dot(E_eta_dot) + w.dot(dJ * w) + w.dot(C_eta_dot);
   }
-  return g;
 }
 
 }  // namespace unfurl::sim::flexible

@@ -45,7 +45,8 @@ Vec6 NodeFrame::velocity_product(const Vec6& v, const double* eta_dot) const {
   return c;
 }
 
-Eigen::VectorXd NodeFrame::kinetic_gradient(const Vec6& v, const double* eta_dot, const Vec6& mu) const {
+void NodeFrame::add_kinetic_gradient(const Vec6& v, const double* eta_dot, const Vec6& mu,
+                                     Eigen::Ref<Eigen::VectorXd> g_eta) const {
   const int m = static_cast<int>(node_->shape.cols());
   const Vec6 s_dot = node_->shape * Eigen::Map<const Eigen::VectorXd>(eta_dot, m);
   std::array<Vec6, 6> v_k;
@@ -56,7 +57,7 @@ Eigen::VectorXd NodeFrame::kinetic_gradient(const Vec6& v, const double* eta_dot
     g[k] = -axis(k).dot(omega_times(v_k[k], mu_k));
     mu_k = X_[k].transform_force(mu_k);
   }
-  return node_->shape.transpose() * g;
+  g_eta.noalias() += node_->shape.transpose() * g;
 }
 
 }  // namespace unfurl::sim::flexible

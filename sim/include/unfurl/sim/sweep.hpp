@@ -30,6 +30,7 @@
 // were, operation for operation.
 #pragma once
 
+#include <stdexcept>
 #include <vector>
 
 #include "unfurl/sim/flexible/node_frame.hpp"
@@ -123,7 +124,7 @@ class Sweep {
   // Body i's own momentum at its frame's velocity v and the rates w: M_i v,
   // or for a flexible body M^ (v, eta') (6 + m entries: the frame's, then
   // the elastic momenta's own part).
-  Eigen::VectorXd own_momentum(int i, const Vec6& v, const double* w) const;
+  flexible::ExtendedVector own_momentum(int i, const Vec6& v, const double* w) const;
   // The velocity of the node frame joint i hangs on (flexible parent),
   // from the bodies' velocities v and the rates w.
   Vec6 node_velocity(int i, const std::vector<Vec6>& v, const double* w) const {
@@ -166,20 +167,22 @@ class Sweep {
   // A flexible body's extended quantities: d = 6 + m; the free axes of its
   // joint in the extended space (the hinge's unless driven, then eta's);
   // a driven hinge's axis. phi, F and eta_dot are the passes' scratch.
+  // All in place (fixed-size storage): the right-hand side allocates
+  // nothing; the passes' scratch holds up to kMaxExtended load cases.
   struct Flexible {
     int body = -1, m = 0, d = 6;
     bool hinge_free = false, driven = false;
-    Eigen::MatrixXd M_star, A_free, D, M_star_A;
-    Eigen::VectorXd A_driven;
+    flexible::ExtendedMatrix M_star, A_free, D, M_star_A;
+    flexible::ExtendedVector A_driven;
     std::vector<flexible::NodeFrame> nodes;
-    std::vector<Eigen::Matrix<double, 6, Eigen::Dynamic>> N;  // per node, [C_node, A L]
-    Eigen::MatrixXd M_own;                                    // M^(eta), the body's own
-    mutable Eigen::MatrixXd phi, phi_prime, F;                // d x k
-    mutable Eigen::VectorXd eta_dot;
+    std::vector<flexible::NodeMatrix> N;     // per node, [C_node, A L]
+    flexible::ExtendedMatrix M_own;          // M^(eta), the body's own
+    mutable flexible::ExtendedMatrix phi, phi_prime, F;  // d x k
+    mutable flexible::ExtendedVector eta_dot;
     // The accelerations pass's: p^A^, the velocity-product acceleration of
     // the hinge (and a driven hinge's given one), the free coordinates'
     // unbalanced force, a^, and the joint's wrench.
-    mutable Eigen::VectorXd b, a_c, u, a_hat;
+    mutable flexible::ExtendedVector b, a_c, u, a_hat;
     mutable Vec6 wrench;
   };
   void flexible_accelerations(const std::vector<Vec6>& v, const double* dq, const std::vector<Vec6>& F,
@@ -208,7 +211,16 @@ class Sweep {
   void flexible_velocity(int i, const P& p, Pout& dq, std::vector<S>& v, const double* driven) const;
   // The free coordinates' rows of x: the hinge's (if free), then eta's.
   template <class P>
-  Eigen::MatrixXd free_rows(int i, const P& x) const;
+  flexible::ExtendedMatrix free_rows(int i, const P& x) const;
+  // The passes' number of load cases k, at most kMaxExtended with flexible
+  // bodies (their scratch is in place; loops, the only source of more, are
+  // refused with flexible bodies).
+  template <class S>
+  int load_cases(const std::vector<S>& x) const {
+    const int k = x.empty() ? 1 : static_cast<int>(x[0].cols());
+    if (k > flexible::kMaxExtended) throw std::logic_error("the sweep's passes take at most 30 load cases with flexible bodies");
+    return k;
+  }
   // Joint i's entries of a per-velocity-coordinate array, padded to 6.
   Vec6 rates_of(int i, const double* x) const;
 
@@ -228,9 +240,9 @@ class Sweep {
 };
 
 template <class P>
-Eigen::MatrixXd Sweep::free_rows(int i, const P& x) const {
+flexible::ExtendedMatrix Sweep::free_rows(int i, const P& x) const {
   const Flexible& f = flexible_[flex_[i]];
-  Eigen::MatrixXd out(f.hinge_free + f.m, x.cols());
+  flexible::ExtendedMatrix out(f.hinge_free + f.m, x.cols());
   if (f.hinge_free) out.row(0) = x.row(model_.first_velocity[i].value);
   out.bottomRows(f.m) = x.middleRows(model_.first_elastic_velocity[i], f.m);
   return out;
@@ -241,7 +253,7 @@ S Sweep::parent_velocity(int i, const std::vector<S>& v, const Pout& dq) const {
   const int k = model_.parent[i], a = model_.node_of(i);
   if (a < 0) return v[k];
   const Flexible& f = flexible_[flex_[k]];
-  Eigen::MatrixXd hat(f.d, v[k].cols());
+  flexible::ExtendedMatrix hat(f.d, v[k].cols());
   hat.topRows(6) = v[k];
   hat.bottomRows(f.m) = dq.middleRows(model_.first_elastic_velocity[k], f.m);
   return f.N[a] * hat;
@@ -263,7 +275,7 @@ void Sweep::flexible_bias(int j, const P& p, std::vector<S>& phi, const double* 
   const Flexible& f = flexible_[flex_[j]];
   f.phi_prime = f.phi;
   if (f.driven && driven) f.phi_prime.col(0) += f.M_star * f.A_driven * driven[model_.first_velocity[j].value];
-  const Eigen::MatrixXd carried =
+  const flexible::ExtendedMatrix carried =
       f.phi_prime + f.M_star_A * (f.D * (free_rows(j, p) - f.A_free.transpose() * f.phi_prime));
   phi[j] = f.phi.topRows(6);
   if (model_.parent[j] != kBase) carry(j, S(carried.topRows(6)), phi);
@@ -273,9 +285,9 @@ template <class S, class P, class Pout>
 void Sweep::flexible_velocity(int i, const P& p, Pout& dq, std::vector<S>& v, const double* driven) const {
   const Flexible& f = flexible_[flex_[i]];
   const int c = model_.first_velocity[i].value, e = model_.first_elastic_velocity[i];
-  Eigen::MatrixXd hat = Eigen::MatrixXd::Zero(f.d, v[i].cols());
+  flexible::ExtendedMatrix hat = flexible::ExtendedMatrix::Zero(f.d, v[i].cols());
   hat.topRows(6) = v[i];
-  const Eigen::MatrixXd x = f.D * (free_rows(i, p) - f.A_free.transpose() * (f.phi_prime + f.M_star * hat));
+  const flexible::ExtendedMatrix x = f.D * (free_rows(i, p) - f.A_free.transpose() * (f.phi_prime + f.M_star * hat));
   if (f.driven) {
     dq.row(c).setConstant(driven ? driven[c] : 0.0);
     hat += f.A_driven * dq.row(c);
@@ -292,7 +304,7 @@ template <class S, class P>
 void Sweep::bias_pass(const P& p, std::vector<S>& phi, const double* driven) const {
   const int N = model_.size();
   for (int i = 0; i < N; ++i) phi[i].setZero();
-  for (const Flexible& f : flexible_) f.phi.setZero(f.d, phi.empty() ? 1 : phi[0].cols());
+  for (const Flexible& f : flexible_) f.phi.setZero(f.d, load_cases(phi));
   for (int j = N - 1; j >= 0; --j) {
     if (flex_[j] >= 0) {
       flexible_bias(j, p, phi, driven);
@@ -352,7 +364,7 @@ void Sweep::velocity_pass(const P& p, const std::vector<S>& phi, const Vec6& v_b
 
 template <class S, class Pout>
 void Sweep::force_pass(std::vector<S>& F, Pout& Q) const {
-  for (const Flexible& f : flexible_) f.F.setZero(f.d, F.empty() ? 1 : F[0].cols());
+  for (const Flexible& f : flexible_) f.F.setZero(f.d, load_cases(F));
   for (int i = model_.size() - 1; i >= 0; --i) {
     const int c = model_.first_velocity[i].value;
     if (flex_[i] >= 0) {

@@ -4,13 +4,17 @@
 // One per flexible body, made with the body (SceneBuilder::body).
 #pragma once
 
+#include <memory>
+
+#include "unfurl/sim/flexible/flexible_body.hpp"
 #include "unfurl/sim/force_element.hpp"
 
 namespace unfurl::sim {
 
 class Elasticity : public ForceElement {
  public:
-  explicit Elasticity(int body) : body_(body) {}
+  Elasticity(int body, std::shared_ptr<const flexible::FlexibleBody> flexible)
+      : body_(body), flexible_(std::move(flexible)) {}
 
   int body() const { return body_; }
   std::string kind() const override { return "elasticity"; }
@@ -24,11 +28,17 @@ class Elasticity : public ForceElement {
   void add_joint_stiffness(const ElementState& s, RatesOut stiffness, RatesOut damping) const override;
   std::vector<LoadColumn> load_columns(const Model& model) const override;  // elastic_energy, deflection
   void load_values(const ElementState& s, double* values) const override;
+  // The damping ratio, and the beam's bending stiffness (when both planes'
+  // are equal) and mass per length: edited, the body is meshed and
+  // reduced again.
+  std::vector<ElementParameter> parameters() const override;
+  std::string note() const override;  // its coordinates and their frequencies
   // Flexible bodies are not scaled yet (studies::scale_scene says so).
   std::shared_ptr<ForceElement> scaled(double L, double M, const Model& model) const override;
 
  private:
   int body_;
+  std::shared_ptr<const flexible::FlexibleBody> flexible_;
 };
 
 }  // namespace unfurl::sim

@@ -19,6 +19,12 @@ namespace unfurl::sim::flexible {
 // extended blocks are fixed-size (6 + kMaxModes square) so that it
 // allocates nothing.
 inline constexpr int kMaxModes = 24;
+inline constexpr int kMaxExtended = 6 + kMaxModes;
+// A flexible body's extended vectors and matrices (its frame's 6 and its
+// elastic coordinates): dynamic sizes up to kMaxExtended, stored in place.
+using ExtendedVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxExtended, 1>;
+using ExtendedMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxExtended, kMaxExtended>;
+using NodeMatrix = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, kMaxExtended>;
 
 // The modal damping ratio when a scene gives none: 0.5 %, the second and
 // third modes' on-orbit values measured on a solar array paddle (MOS-1,

@@ -46,6 +46,11 @@ class InertiaInvariants {
   Eigen::MatrixXd mass_matrix_rate(const Eigen::VectorXd& eta, const Eigen::VectorXd& eta_dot) const;
   // dT/d eta at fixed V = (v, w, eta').
   Eigen::VectorXd kinetic_gradient(const Eigen::VectorXd& eta, const Eigen::VectorXd& V) const;
+  // The same into M ((6 + m) square) and g (m), allocating nothing: the
+  // sweep's right-hand side.
+  void mass_matrix(const double* eta, Eigen::Ref<Eigen::MatrixXd> M) const;
+  void mass_matrix_rate(const double* eta, const double* eta_dot, Eigen::Ref<Eigen::MatrixXd> M) const;
+  void kinetic_gradient(const double* eta, const double* V, Eigen::Ref<Eigen::VectorXd> g) const;
 
  private:
   int m_ = 0;

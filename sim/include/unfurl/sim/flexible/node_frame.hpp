@@ -36,13 +36,13 @@ class NodeFrame {
   const Placement& placement() const { return to_node_; }
   // The node frame's velocity per unit eta': A L (6 x m).
   const NodeRates& rates() const { return AL_; }
-  // dT/d eta of everything hung at the node: L^T (-a_k^T Omega(v_k)
-  // mu_k)_k for the body frame's velocity v, the elastic rates eta' and
-  // the momentum mu hung at the node (node frame).
   // The node frame's acceleration beyond C_node a + A L eta'': the virtual
   // joints' velocity products v_k x (a_k s'_k), carried to the node frame.
   Vec6 velocity_product(const Vec6& v, const double* eta_dot) const;
-  Eigen::VectorXd kinetic_gradient(const Vec6& v, const double* eta_dot, const Vec6& mu) const;
+  // Adds to g the dT/d eta of everything hung at the node: L^T (-a_k^T
+  // Omega(v_k) mu_k)_k for the body frame's velocity v, the elastic rates
+  // eta' and the momentum mu hung at the node (node frame).
+  void add_kinetic_gradient(const Vec6& v, const double* eta_dot, const Vec6& mu, Eigen::Ref<Eigen::VectorXd> g) const;
 
  private:
   const FlexibleNode* node_ = nullptr;
