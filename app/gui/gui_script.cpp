@@ -17,7 +17,7 @@ std::vector<ScriptCommand> read_gui_script(const std::string& path) {
       {"speed", {1, 1}},  {"loop", {1, 1}},       {"scrub", {1, 1}},      {"camera", {1, 1}},
       {"set", {2, 2}},    {"screenshot", {1, 1}}, {"save_frame", {1, 1}}, {"export", {4, 5}},
       {"wait_export", {0, 0}}, {"cancel_export", {0, 0}}, {"report", {1, 1}}, {"open", {1, 1}}, {"case", {1, 1}}, {"undo", {0, 0}}, {"redo", {0, 0}}, {"save_scene", {1, 1}}, {"plot", {1, 1}},
-      {"pin", {0, 8}}, {"orthographic", {1, 1}}, {"loads", {1, 2}}, {"camera_frame", {1, 1}}, {"ui_scale", {1, 1}}, {"browse", {1, 1}}, {"unpin", {1, 1}}, {"zoom", {1, 2}}, {"curves", {1, 1000}}, {"modes", {0, 0}}, {"mode", {1, 1}}, {"quit", {0, 0}}};
+      {"pin", {0, 8}}, {"orthographic", {1, 1}}, {"loads", {1, 2}}, {"exaggerate", {1, 1}}, {"camera_frame", {1, 1}}, {"ui_scale", {1, 1}}, {"browse", {1, 1}}, {"unpin", {1, 1}}, {"zoom", {1, 2}}, {"curves", {1, 1000}}, {"modes", {0, 0}}, {"mode", {1, 1}}, {"quit", {0, 0}}};
   std::ifstream in(path);
   if (!in) throw std::runtime_error(path + ": cannot open the script");
   std::vector<ScriptCommand> commands;

@@ -10,6 +10,7 @@
 //   camera NAME           a camera preset
 //   orthographic on|off   parallel projection
 //   loads on|off [SCALE]  the load arrows on the 3D view (and their length)
+//   exaggerate X          flexible bodies drawn bending X times (the view's slider)
 //   ui_scale X            the UI scale (as the toolbar's field sets it)
 //   browse open|save_scene|frame|trajectory|export_dir|video
 //                         show the file dialog of that field (as its button does)

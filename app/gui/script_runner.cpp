@@ -82,6 +82,8 @@ void ScriptRunner::step(ScriptTarget& target, double now) {
     } else if (c.name == "loads") {
       state.show_loads = arg(0) == "on";
       if (c.args.size() > 1) state.load_scale = std::stof(arg(1));
+    } else if (c.name == "exaggerate") {
+      state.exaggeration = std::stof(arg(0));
     } else if (c.name == "orthographic") {
       state.camera.orthographic = arg(0) == "on";
     } else if (c.name == "camera") {

@@ -375,7 +375,13 @@ bool Dynamics::loads(double t, const double* y, Loads& out, std::vector<ClosureE
     if (!elements_need_poses_ && !regulator_) sweep_.poses(poses_);
     double* reading = out.sensor.data();
     for (const Sensor& s : scene_.sensors) {
-      s.read(poses_[s.body], v_[s.body], a_[s.body], reading);
+      if (s.node >= 0) {
+        const Placement& X = sweep_.node_placement(s.body, s.node);
+        s.read_at(poses_[s.body].child(X), sweep_.node_frame_velocity(s.body, s.node, v_, w),
+                  sweep_.node_frame_acceleration(s.body, s.node, v_, w), Vec3::Zero(), X.rho, reading);
+      } else {
+        s.read(poses_[s.body], v_[s.body], a_[s.body], reading);
+      }
       reading += 3 * s.measures.size();
     }
   }

@@ -89,6 +89,8 @@ class SceneReader : private input::YamlFields {
   void each(const YAML::Node& list, const char* name, Keys keys, Read read) const;
   // The joint a list entry names, for an element acting on it.
   int element_joint(const YAML::Node& entry, const SceneBuilder& b, const std::string& field) const;
+
+  YAML::Node sensors_;  // the file's sensors: those on a flexible body make its nodes
 };
 
 template <class Read>
@@ -333,20 +335,29 @@ std::shared_ptr<const flexible::FlexibleBody> SceneReader::read_flexible(const Y
   if (node["geometric_stiffening"])
     spec.geometric_stiffening = flag(node["geometric_stiffening"], field + ".geometric_stiffening");
   const double h = spec.section.length / spec.section.elements;
+  // A point where something attaches: on the axis, at a mesh node.
+  const auto attach = [&](const YAML::Node& at_node, const std::string& at, const char* what) {
+    const Vec3 p = vec3(at_node, at);
+    const double node_x = h * std::round(p.x() / h);
+    if (p.tail<2>().norm() > 1e-9 * spec.section.length || std::abs(p.x() - node_x) > 1e-9 * spec.section.length ||
+        p.x() < 0 || p.x() > spec.section.length * (1 + 1e-9))
+      fail(at_node, at,
+           std::string("a ") + what + " of the flexible beam '" + name +
+               "' sits at a mesh node: a point (x, 0, 0) with x a multiple of " + format_number(h) +
+               " m (length / elements) in [0, " + format_number(spec.section.length) + "]");
+    spec.attachments.push_back(Vec3(node_x, 0, 0));
+  };
+  if (sensors_ && sensors_.IsSequence())
+    for (std::size_t k = 0; k < sensors_.size(); ++k)
+      if (sensors_[k].IsMap() && sensors_[k]["body"] && sensors_[k]["body"].IsScalar() &&
+          sensors_[k]["body"].Scalar() == name && sensors_[k]["point"])
+        attach(sensors_[k]["point"], input::index_field("sensors", k) + ".point", "sensor");
   for (std::size_t c = 0; c < all.size(); ++c) {
     const YAML::Node child = all[c];
     if (!child.IsMap() || !child["parent"] || !child["parent"].IsScalar() || child["parent"].Scalar() != name ||
         !child["joint"] || !child["joint"].IsMap() || !child["joint"]["parent_point"])
       continue;
-    const std::string at = input::index_field("bodies", c) + ".joint.parent_point";
-    const Vec3 p = vec3(child["joint"]["parent_point"], at);
-    const double node_x = h * std::round(p.x() / h);
-    if (p.tail<2>().norm() > 1e-9 * spec.section.length || std::abs(p.x() - node_x) > 1e-9 * spec.section.length ||
-        p.x() < 0 || p.x() > spec.section.length * (1 + 1e-9))
-      fail(child["joint"]["parent_point"], at,
-           "a child of the flexible beam '" + name + "' hangs on a mesh node: a point (x, 0, 0) with x a multiple of " +
-               format_number(h) + " m (length / elements) in [0, " + format_number(spec.section.length) + "]");
-    spec.attachments.push_back(Vec3(node_x, 0, 0));
+    attach(child["joint"]["parent_point"], input::index_field("bodies", c) + ".joint.parent_point", "child");
   }
   try {
     return std::make_shared<const flexible::FlexibleBody>(flexible::beam_body(spec));
@@ -758,6 +769,7 @@ SceneFile SceneReader::read(const std::string& text_in, const std::vector<Overri
   try {
     if (root["base"]) read_base(root["base"], b);
     if (root["gravity"]) b.gravity(vec3(root["gravity"], "gravity"));
+    sensors_.reset(root["sensors"]);
     const YAML::Node bodies = require(root, "bodies", "");
     if (!bodies.IsSequence() || bodies.size() == 0) fail(bodies, "bodies", "expected a non-empty list of bodies");
     for (std::size_t i = 0; i < bodies.size(); ++i) read_body(bodies[i], static_cast<int>(i), bodies, b);

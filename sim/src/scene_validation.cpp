@@ -287,11 +287,28 @@ std::vector<std::string> scene_warnings(const Scene& scene) {
   return out;
 }
 
+// A sensor on a flexible body sits at one of its nodes (the reader makes
+// each such point one): found here by its point.
+void place_sensors_on_nodes(Scene& scene) {
+  for (std::size_t k = 0; k < scene.sensors.size(); ++k) {
+    Sensor& s = scene.sensors[k];
+    s.node = -1;
+    if (s.body < 0 || s.body >= scene.model.size() || !scene.model.flexible(s.body)) continue;
+    const auto& nodes = scene.model.bodies[s.body].flexible->nodes;
+    const double length = scene.model.bodies[s.body].flexible->beam.section.length;
+    for (std::size_t a = 0; a < nodes.size() && s.node < 0; ++a)
+      if ((nodes[a].point - s.point).norm() <= 1e-9 * length) s.node = static_cast<int>(a);
+    if (s.node < 0)
+      throw SceneInvalid("sensors[" + std::to_string(k) + "].point",
+                         "a sensor on a flexible body sits at one of its nodes (a mesh node on the beam's axis)");
+  }
+}
+
 // What flexible bodies (docs/FLEXIBLE.md) do not carry yet is refused
 // rather than computed wrong: their joints are hinges, slides or fixed,
-// not driven or compliant; loops, sensors, and elements that push on
-// bodies (gravity, applied forces, point springs, bushings) wait for the
-// forces at a flexible body's points.
+// not driven or compliant; loops, and elements that push on bodies
+// (gravity, applied forces, point springs, bushings) wait for the forces
+// at a flexible body's points.
 void check_flexible(const Scene& scene) {
   const Model& m = scene.model;
   if (!m.has_flexible_bodies()) return;
@@ -302,9 +319,6 @@ void check_flexible(const Scene& scene) {
     if (!(j.has_free_coordinate() || j.type == JointType::fixed) || j.compliant || j.driven)
       throw SceneInvalid(field + ".joint", "a flexible body's joint is a revolute, prismatic or fixed joint, neither "
                                            "compliant nor driven (the others are not carried yet)");
-    for (std::size_t s = 0; s < scene.sensors.size(); ++s)
-      if (scene.sensors[s].body == i)
-        throw SceneInvalid("sensors[" + std::to_string(s) + "].body", "sensors on flexible bodies are not carried yet");
   }
   if (!scene.loops.empty()) throw SceneInvalid("loops", "loops in a scene with flexible bodies are not carried yet");
   for (std::size_t k = 0; k < scene.elements.size(); ++k)
@@ -332,6 +346,7 @@ void validate(Scene& scene) {
   check_loops(scene);
   check_sensors(scene);
   check_flexible(scene);
+  place_sensors_on_nodes(scene);
   for (const auto& [name, x] : {std::pair{"spring", scene.torque_margin.spring}, {"friction", scene.torque_margin.friction},
                                {"damping", scene.torque_margin.damping}, {"harness", scene.torque_margin.harness},
                                {"inertia", scene.torque_margin.inertia}, {"required", scene.torque_margin.required}})

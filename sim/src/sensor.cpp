@@ -46,20 +46,21 @@ std::vector<LoadColumn> Sensor::columns() const {
   return out;
 }
 
-void Sensor::read(const Pose& pose, const Vec6& v, const Vec6& a, double* out) const {
-  // Body frame: v = (velocity of the origin, angular velocity), and a the
+void Sensor::read_at(const Pose& pose, const Vec6& v, const Vec6& a, const Vec3& r, const Vec3& body_position,
+                     double* out) const {
+  // The frame's v = (velocity of its origin, angular velocity), and a the
   // rate of those components; the point's acceleration adds the frame's
   // turning: a_o + w x v_o + alpha x r + w x (w x r), alpha = the rate of w.
   const Vec3 w = v.tail<3>(), alpha = a.tail<3>();
-  const Vec3 velocity = v.head<3>() + w.cross(point);
-  const Vec3 acceleration = a.head<3>() + w.cross(v.head<3>()) + alpha.cross(point) + w.cross(w.cross(point));
+  const Vec3 velocity = v.head<3>() + w.cross(r);
+  const Vec3 acceleration = a.head<3>() + w.cross(v.head<3>()) + alpha.cross(r) + w.cross(w.cross(r));
   const Mat3 to_base = pose.rotation.transpose();
   const bool inertial = frame == SensorFrame::inertial;
   for (const SensorQuantity q : measures) {
     Vec3 x = Vec3::Zero();
     switch (q) {
       case SensorQuantity::position:
-        x = inertial ? pose.to_base(point) : point;
+        x = inertial ? pose.to_base(r) : body_position;
         break;
       case SensorQuantity::velocity:
         x = inertial ? Vec3(to_base * velocity) : velocity;

@@ -183,6 +183,18 @@ flexible::ExtendedVector Sweep::own_momentum(int i, const Vec6& v, const double*
   return f.M_own * V;
 }
 
+Vec6 Sweep::node_frame_velocity(int i, int a, const std::vector<Vec6>& v, const double* w) const {
+  const Flexible& f = flexible_[flex_[i]];
+  flexible::ExtendedVector hat(f.d);
+  hat << v[i], Eigen::Map<const Eigen::VectorXd>(w + model_.first_elastic_velocity[i], f.m);
+  return f.N[a] * hat;
+}
+
+Vec6 Sweep::node_frame_acceleration(int i, int a, const std::vector<Vec6>& v, const double* w) const {
+  const Flexible& f = flexible_[flex_[i]];
+  return f.N[a] * f.a_hat + f.nodes[a].velocity_product(v[i], w + model_.first_elastic_velocity[i]);
+}
+
 void Sweep::carry_bias(int j, const Vec6& carried, std::vector<Vec6>& bias) const {
   const int k = model_.parent[j], a = model_.node_of(j);
   if (a >= 0) {

@@ -33,6 +33,11 @@ struct Sensor {
   std::string name;
   int body = 0;
   Vec3 point = Vec3::Zero();  // body frame
+  // On a flexible body: the node it sits at (validate() finds it; the
+  // reader makes every sensor's point on a flexible body a node). It then
+  // moves and turns with the body's deformation: its "body" frame is the
+  // node's deformed frame, as an accelerometer mounted there sees it.
+  int node = -1;
   SensorFrame frame = SensorFrame::body;
   std::vector<SensorQuantity> measures{SensorQuantity::acceleration};
 
@@ -41,7 +46,13 @@ struct Sensor {
   // Its readings (three per measure, in columns() order) from its body's
   // pose, velocity v and acceleration a (the rate of v in its own frame,
   // Sweep::accelerations).
-  void read(const Pose& pose, const Vec6& v, const Vec6& a, double* out) const;
+  void read(const Pose& pose, const Vec6& v, const Vec6& a, double* out) const {
+    read_at(pose, v, a, point, point, out);
+  }
+  // The same for the point r of the frame placed by pose (moving with v,
+  // a); `body_position` is what the body frame's position reads.
+  void read_at(const Pose& pose, const Vec6& v, const Vec6& a, const Vec3& r, const Vec3& body_position,
+               double* out) const;
   // The peaks a run keeps: the magnitude of each measure but the position.
   std::vector<ElementPeak> peaks() const;
 };

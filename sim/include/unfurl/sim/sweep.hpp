@@ -130,6 +130,13 @@ class Sweep {
   Vec6 node_velocity(int i, const std::vector<Vec6>& v, const double* w) const {
     return parent_velocity(i, v, Eigen::Map<const Eigen::VectorXd>(w, model_.nv));
   }
+  // Node a of flexible body i: its frame's placement in the body frame (the
+  // deformed node), and its velocity and acceleration in its own axes from
+  // the bodies' velocities v and the rates w (the acceleration after
+  // accelerations()).
+  const Placement& node_placement(int i, int a) const { return flexible_[flex_[i]].nodes[a].placement(); }
+  Vec6 node_frame_velocity(int i, int a, const std::vector<Vec6>& v, const double* w) const;
+  Vec6 node_frame_acceleration(int i, int a, const std::vector<Vec6>& v, const double* w) const;
   // The articulated inertia of joint i's coordinate r, (D_i^-1)_rr: the
   // inertia it moves against with every other joint free but the driven
   // ones (kg m^2 for a turn, kg for a slide); a driven joint's is A_i^T M*_i
