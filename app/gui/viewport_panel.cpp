@@ -51,13 +51,12 @@ void viewport_panel(GuiState& state, unsigned texture, const Eigen::AlignedBox3f
         "undetermined) and each engaged latch's torque (violet, double-headed, right-hand rule)");
   if (state.show_loads) {
     ImGui::SameLine();
-    ImGui::SetNextItemWidth(em(8));
+    ImGui::SetNextItemWidth(em(130));
     ImGui::SliderFloat("##load_scale", &state.load_scale, 0.1f, 10.0f, "arrows x%.2g", ImGuiSliderFlags_Logarithmic);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("the arrows' length: the run's largest load is this times a quarter of the array");
   }
-  if (state.scene.model.has_flexible_bodies()) {
-    ImGui::SameLine();
-    ImGui::SetNextItemWidth(em(8));
+  if (state.scene.model.has_flexible_bodies()) {  // on a row of its own: the toolbar is full
+    ImGui::SetNextItemWidth(em(160));
     ImGui::SliderFloat("##exaggeration", &state.exaggeration, 1.0f, 1000.0f, "bending x%.3g",
                        ImGuiSliderFlags_Logarithmic);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("flexible bodies' elastic displacements drawn this many times");
