@@ -5,6 +5,8 @@
 #include <benchmark/benchmark.h>
 
 #include "unfurl/sim/dynamics.hpp"
+#include "unfurl/sim/flexible/flexible_body.hpp"
+#include "unfurl/sim/scene_builder.hpp"
 #include "unfurl/studies/rhs_timing.hpp"
 #include "unfurl/studies/scene_generators.hpp"
 #include "unfurl/sim/scene_file.hpp"
@@ -54,6 +56,33 @@ void BM_RhsPantographStages(benchmark::State& state) {
   run_rhs(state, studies::generate_pantograph(static_cast<int>(state.range(0))).scene);
 }
 BENCHMARK(BM_RhsPantographStages)->Arg(3)->Arg(10)->Arg(33)->Arg(333)->Arg(3333)->Unit(benchmark::kMicrosecond);
+
+// N flexible beams hinged end to end (each 1 m, two fixed-interface modes
+// and, but for the last, its tip's six constraint modes: 8 elastic
+// coordinates a beam): the extended (6 + m) sweep's cost per body.
+sim::Scene flexible_chain(int beams) {
+  sim::flexible::BeamSection section;
+  section.length = 1, section.axial_stiffness = 1e7, section.bending_stiffness_y = section.bending_stiffness_z = 500;
+  section.torsional_stiffness = 300, section.mass_per_length = 1.5, section.polar_inertia_per_length = 1e-3;
+  section.elements = 4;
+  const auto inner = std::make_shared<const sim::flexible::FlexibleBody>(
+      sim::flexible::beam_body(section, 2, 0.005, {sim::Vec3(1, 0, 0)}));
+  const auto last = std::make_shared<const sim::flexible::FlexibleBody>(sim::flexible::beam_body(section, 2, 0.005, {}));
+  sim::SceneBuilder b("flexible chain");
+  b.fixed_base("ground");
+  for (int k = 0; k < beams; ++k) {
+    sim::Body beam;
+    beam.name = "beam" + std::to_string(k);
+    beam.flexible = k + 1 < beams ? inner : last;
+    b.body(beam, k == 0 ? "ground" : "beam" + std::to_string(k - 1),
+           sim::joints::revolute("hinge" + std::to_string(k), sim::Vec3::UnitZ(), k == 0 ? sim::Vec3::Zero() : sim::Vec3(1, 0, 0),
+                                 sim::Vec3::Zero()));
+  }
+  return b.build().scene;
+}
+
+void BM_RhsFlexibleChain(benchmark::State& state) { run_rhs(state, flexible_chain(static_cast<int>(state.range(0)))); }
+BENCHMARK(BM_RhsFlexibleChain)->Arg(10)->Arg(30)->Arg(100)->Arg(300)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace unfurl
