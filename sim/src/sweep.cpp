@@ -250,35 +250,11 @@ void Sweep::flexible_accelerations(const std::vector<Vec6>& v, const double* dq,
       if (k != kBase) carry_bias(i, carried.head<6>(), bias);
       continue;
     }
-    a[i].setZero();
-    if (multi_[i] >= 0) {
-      const MultiAxis& J = multi_axes_[multi_[i]];
-      a[i] = motion_cross(v[i], J.A * rates_of(i, dq));
-      if (J.varying)
-        a[i] += model_.joints[i].motion_axes_rate(q_.data() + model_.first_position[i].value, dq + c) * rates_of(i, dq);
-      const Vec6 u = rates_of(i, Q) - J.A.transpose() * bias[i];
-      for (int r = 0; r < J.n; ++r) ddq[c + r] = u[r];
-    } else if (driven_[i]) {
-      a[i] = motion_cross(v[i], A_[i] * dq[c]);
-      ddq[c] = driven ? driven[c] : 0.0;
-    } else if (c >= 0) {
-      a[i] = motion_cross(v[i], A_[i] * dq[c]);
-      ddq[c] = Q[c] - A_[i].dot(bias[i]);
-    }
+    rigid_joint_backward(i, v, dq, Q, bias, a, ddq, driven);
     if (const int n = model_.node_of(i); n >= 0)
       a[i] += X_[i].transform_velocity(
           flexible_[flex_[k]].nodes[n].velocity_product(v[k], dq + model_.first_elastic_velocity[k]));
-    if (k == kBase) continue;
-    Vec6 carried = bias[i] + M_star_[i] * a[i];
-    if (multi_[i] >= 0) {
-      const MultiAxis& J = multi_axes_[multi_[i]];
-      carried += J.M_star_A * (J.D * (rates_of(i, ddq) - J.M_star_A.transpose() * a[i]));
-    } else if (driven_[i]) {
-      carried += M_star_A_[i] * ddq[c];
-    } else if (c >= 0) {
-      carried += M_star_A_[i] * (D_[i] * (ddq[c] - M_star_A_[i].dot(a[i])));
-    }
-    carry_bias(i, carried, bias);
+    if (k != kBase) carry_bias(i, rigid_carried(i, bias, a, ddq), bias);
   }
   for (int i = 0; i < N; ++i) {
     const int k = model_.parent[i], c = model_.first_velocity[i].value;
@@ -303,15 +279,7 @@ void Sweep::flexible_accelerations(const std::vector<Vec6>& v, const double* dq,
       continue;
     }
     a[i] += X_[i].transform_velocity(from_parent);
-    if (multi_[i] >= 0) {
-      const MultiAxis& J = multi_axes_[multi_[i]];
-      const Vec6 ddq_i = J.D * (rates_of(i, ddq) - J.M_star_A.transpose() * a[i]);
-      for (int r = 0; r < J.n; ++r) ddq[c + r] = ddq_i[r];
-      a[i] += J.A * ddq_i;
-    } else if (c >= 0) {
-      if (!driven_[i]) ddq[c] = D_[i] * (ddq[c] - M_star_A_[i].dot(a[i]));
-      a[i] += A_[i] * ddq[c];
-    }
+    rigid_joint_forward(i, a, ddq);
   }
 }
 
@@ -324,49 +292,61 @@ void Sweep::accelerations(const std::vector<Vec6>& v, const double* dq, const st
   // dq_i) and ddq the joint's unbalanced force u_i = Q_i - A_i^T p^A_i until
   // the forward pass.
   for (int i = N - 1; i >= 0; --i) {
-    const int c = model_.first_velocity[i].value;
-    a[i].setZero();
-    if (multi_[i] >= 0) {
-      const MultiAxis& J = multi_axes_[multi_[i]];
-      a[i] = motion_cross(v[i], J.A * rates_of(i, dq));
-      if (J.varying)
-        a[i] += model_.joints[i].motion_axes_rate(q_.data() + model_.first_position[i].value, dq + c) * rates_of(i, dq);
-      const Vec6 u = rates_of(i, Q) - J.A.transpose() * bias[i];
-      for (int r = 0; r < J.n; ++r) ddq[c + r] = u[r];
-    } else if (driven_[i]) {
-      a[i] = motion_cross(v[i], A_[i] * dq[c]);
-      ddq[c] = driven ? driven[c] : 0.0;
-    } else if (c >= 0) {
-      a[i] = motion_cross(v[i], A_[i] * dq[c]);
-      ddq[c] = Q[c] - A_[i].dot(bias[i]);
-    }
-    const int k = model_.parent[i];
-    if (k == kBase) continue;
-    // p^a = p^A + I^a c + M*A D u with I^a = H_i M*_i = M* - M*A D (M*A)^T.
-    Vec6 carried = bias[i] + M_star_[i] * a[i];
-    if (multi_[i] >= 0) {
-      const MultiAxis& J = multi_axes_[multi_[i]];
-      carried += J.M_star_A * (J.D * (rates_of(i, ddq) - J.M_star_A.transpose() * a[i]));
-    } else if (driven_[i]) {
-      carried += M_star_A_[i] * ddq[c];  // the given acceleration's
-    } else if (c >= 0) {
-      carried += M_star_A_[i] * (D_[i] * (ddq[c] - M_star_A_[i].dot(a[i])));
-    }
-    bias[k] += X_[i].transform_force(carried);
+    rigid_joint_backward(i, v, dq, Q, bias, a, ddq, driven);
+    if (const int k = model_.parent[i]; k != kBase) bias[k] += X_[i].transform_force(rigid_carried(i, bias, a, ddq));
   }
   for (int i = 0; i < N; ++i) {
-    const int k = model_.parent[i];
-    if (k != kBase) a[i] += X_[i].transform_velocity(a[k]);
-    const int c = model_.first_velocity[i].value;
-    if (multi_[i] >= 0) {
-      const MultiAxis& J = multi_axes_[multi_[i]];
-      const Vec6 ddq_i = J.D * (rates_of(i, ddq) - J.M_star_A.transpose() * a[i]);
-      for (int r = 0; r < J.n; ++r) ddq[c + r] = ddq_i[r];
-      a[i] += J.A * ddq_i;
-    } else if (c >= 0) {
-      if (!driven_[i]) ddq[c] = D_[i] * (ddq[c] - M_star_A_[i].dot(a[i]));
-      a[i] += A_[i] * ddq[c];
-    }
+    if (const int k = model_.parent[i]; k != kBase) a[i] += X_[i].transform_velocity(a[k]);
+    rigid_joint_forward(i, a, ddq);
+  }
+}
+
+void Sweep::rigid_joint_backward(int i, const std::vector<Vec6>& v, const double* dq, const double* Q,
+                                 const std::vector<Vec6>& bias, std::vector<Vec6>& a, double* ddq,
+                                 const double* driven) const {
+  const int c = model_.first_velocity[i].value;
+  a[i].setZero();
+  if (multi_[i] >= 0) {
+    const MultiAxis& J = multi_axes_[multi_[i]];
+    a[i] = motion_cross(v[i], J.A * rates_of(i, dq));
+    if (J.varying)
+      a[i] += model_.joints[i].motion_axes_rate(q_.data() + model_.first_position[i].value, dq + c) * rates_of(i, dq);
+    const Vec6 u = rates_of(i, Q) - J.A.transpose() * bias[i];
+    for (int r = 0; r < J.n; ++r) ddq[c + r] = u[r];
+  } else if (driven_[i]) {
+    a[i] = motion_cross(v[i], A_[i] * dq[c]);
+    ddq[c] = driven ? driven[c] : 0.0;
+  } else if (c >= 0) {
+    a[i] = motion_cross(v[i], A_[i] * dq[c]);
+    ddq[c] = Q[c] - A_[i].dot(bias[i]);
+  }
+}
+
+// p^a = p^A + I^a c + M*A D u with I^a = H_i M*_i = M* - M*A D (M*A)^T.
+Vec6 Sweep::rigid_carried(int i, const std::vector<Vec6>& bias, const std::vector<Vec6>& a, const double* ddq) const {
+  const int c = model_.first_velocity[i].value;
+  Vec6 carried = bias[i] + M_star_[i] * a[i];
+  if (multi_[i] >= 0) {
+    const MultiAxis& J = multi_axes_[multi_[i]];
+    carried += J.M_star_A * (J.D * (rates_of(i, ddq) - J.M_star_A.transpose() * a[i]));
+  } else if (driven_[i]) {
+    carried += M_star_A_[i] * ddq[c];  // the given acceleration's
+  } else if (c >= 0) {
+    carried += M_star_A_[i] * (D_[i] * (ddq[c] - M_star_A_[i].dot(a[i])));
+  }
+  return carried;
+}
+
+void Sweep::rigid_joint_forward(int i, std::vector<Vec6>& a, double* ddq) const {
+  const int c = model_.first_velocity[i].value;
+  if (multi_[i] >= 0) {
+    const MultiAxis& J = multi_axes_[multi_[i]];
+    const Vec6 ddq_i = J.D * (rates_of(i, ddq) - J.M_star_A.transpose() * a[i]);
+    for (int r = 0; r < J.n; ++r) ddq[c + r] = ddq_i[r];
+    a[i] += J.A * ddq_i;
+  } else if (c >= 0) {
+    if (!driven_[i]) ddq[c] = D_[i] * (ddq[c] - M_star_A_[i].dot(a[i]));
+    a[i] += A_[i] * ddq[c];
   }
 }
 

@@ -195,6 +195,16 @@ class Sweep {
   void flexible_accelerations(const std::vector<Vec6>& v, const double* dq, const std::vector<Vec6>& F,
                               const double* Q, std::vector<Vec6>& bias, std::vector<Vec6>& a, double* ddq,
                               const double* driven) const;
+  // A rigid body's joint i in the accelerations pass, shared by both
+  // recursions. Backward: a_i the velocity-product acceleration c_i, ddq
+  // the unbalanced force u_i (a driven joint's given acceleration); then
+  // what body i carries to its parent; forward, once a_i holds the
+  // parent's share: ddq_i and a_i.
+  void rigid_joint_backward(int i, const std::vector<Vec6>& v, const double* dq, const double* Q,
+                            const std::vector<Vec6>& bias, std::vector<Vec6>& a, double* ddq,
+                            const double* driven) const;
+  Vec6 rigid_carried(int i, const std::vector<Vec6>& bias, const std::vector<Vec6>& a, const double* ddq) const;
+  void rigid_joint_forward(int i, std::vector<Vec6>& a, double* ddq) const;
   // A child's carried 6-vector (its frame) into its parent's bias.
   void carry_bias(int j, const Vec6& carried, std::vector<Vec6>& bias) const;
   void configure_flexible(int i, const double* joint_diagonal);
