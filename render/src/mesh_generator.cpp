@@ -159,6 +159,40 @@ void panel(std::map<std::string, std::string>& files) {
                                      {"solar_cell", V3(0.06, 0.12, 0.38)}});
 }
 
+// A flexible panel's drawing: the panel in 48 rows along y, so that it
+// bends smoothly between its hinge lines (a rigid panel needs none).
+void flexible_panel(std::map<std::string, std::string>& files) {
+  const double hx = 0.45, hy = 0.60, hz = 0.0125, margin = 0.02, gap = 0.006, lift = 0.0006;
+  const int nx = 6, ny = 8, rows_per_cell = 6, rows = ny * rows_per_cell;
+  ObjBuilder b("flexible_panel");
+  const auto row_y = [&](int r) { return -hy + 2 * hy * r / rows; };
+  b.material("panel_back");
+  for (int r = 0; r < rows; ++r) {
+    const double y0 = row_y(r), y1 = row_y(r + 1), top = hz - 1e-9;
+    b.polygon({{-hx, y0, -hz}, {-hx, y1, -hz}, {hx, y1, -hz}, {hx, y0, -hz}});       // -z
+    b.polygon({{hx, y0, -hz}, {hx, y1, -hz}, {hx, y1, top}, {hx, y0, top}});         // +x
+    b.polygon({{-hx, y0, -hz}, {-hx, y0, top}, {-hx, y1, top}, {-hx, y1, -hz}});     // -x
+  }
+  b.polygon({{-hx, hy, -hz}, {-hx, hy, hz}, {hx, hy, hz}, {hx, hy, -hz}});    // +y
+  b.polygon({{-hx, -hy, -hz}, {hx, -hy, -hz}, {hx, -hy, hz}, {-hx, -hy, hz}});  // -y
+  b.material("panel_substrate");
+  for (int r = 0; r < rows; ++r)
+    b.polygon({{-hx, row_y(r), hz}, {hx, row_y(r), hz}, {hx, row_y(r + 1), hz}, {-hx, row_y(r + 1), hz}});
+  b.material("solar_cell");
+  const double cw = (2 * (hx - margin) - (nx - 1) * gap) / nx, ch = (2 * (hy - margin) - (ny - 1) * gap) / ny;
+  for (int i = 0; i < nx; ++i)
+    for (int j = 0; j < ny; ++j)
+      for (int r = 0; r < rows_per_cell; ++r) {
+        const double x0 = -hx + margin + i * (cw + gap), y0 = -hy + margin + j * (ch + gap) + r * ch / rows_per_cell;
+        const double y1 = y0 + ch / rows_per_cell;
+        b.polygon({{x0, y0, hz + lift}, {x0 + cw, y0, hz + lift}, {x0 + cw, y1, hz + lift}, {x0, y1, hz + lift}});
+      }
+  files["flexible_panel.obj"] = b.obj();
+  files["flexible_panel.mtl"] = mtl("flexible_panel", {{"panel_back", V3(0.86, 0.80, 0.62)},
+                                                       {"panel_substrate", V3(0.78, 0.79, 0.82)},
+                                                       {"solar_cell", V3(0.06, 0.12, 0.38)}});
+}
+
 // The yoke: a frame of 25 mm tubes, 0.9 (x) by 0.6 (y) m, with a diagonal.
 void yoke(std::map<std::string, std::string>& files) {
   const double hx = 0.43, hy = 0.29, r = 0.0125;
@@ -233,6 +267,7 @@ void boom(std::map<std::string, std::string>& files) {
 std::map<std::string, std::string> builtin_mesh_files() {
   std::map<std::string, std::string> files;
   panel(files);
+  flexible_panel(files);
   yoke(files);
   bus(files);
   pin(files);

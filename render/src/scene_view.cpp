@@ -19,26 +19,36 @@ layout(location = 1) in vec3 normal;
 uniform mat4 model;
 uniform mat4 view_projection;
 uniform mat3 normal_matrix;
-// A flexible beam's mesh bends: each vertex moves by the displacement at
-// its body-frame x, interpolated between stations bend_spacing apart.
+// A flexible beam's mesh bends: each vertex moves with the beam's section
+// at its station along the axis (bend_axis from bend_root, body frame): by
+// the section's displacement and its small rotation, interpolated between
+// stations bend_spacing apart.
 uniform int bend_count;
 uniform float bend_spacing;
+uniform vec3 bend_root;
+uniform vec3 bend_axis;
 uniform mat4 body_from_mesh;
 uniform mat4 world_from_body;
 uniform vec3 bend[BEND_STATIONS];
+uniform vec3 bend_turn[BEND_STATIONS];
 out vec3 world_normal;
 out vec3 world_position;
 void main() {
   vec4 p = model * vec4(position, 1.0);
+  world_normal = normal_matrix * normal;
   if (bend_count > 1) {
     vec4 b = body_from_mesh * vec4(position, 1.0);
-    float s = clamp(b.x / bend_spacing, 0.0, float(bend_count - 1));
+    float along = dot(b.xyz - bend_root, bend_axis);
+    float s = clamp(along / bend_spacing, 0.0, float(bend_count - 1));
     int k = min(int(s), bend_count - 2);
-    b.xyz += mix(bend[k], bend[k + 1], s - float(k));
+    vec3 turn = mix(bend_turn[k], bend_turn[k + 1], s - float(k));
+    vec3 arm = b.xyz - (bend_root + along * bend_axis);
+    b.xyz += mix(bend[k], bend[k + 1], s - float(k)) + cross(turn, arm);
     p = world_from_body * b;
+    mat3 turn_world = mat3(world_from_body);
+    world_normal += turn_world * cross(turn, transpose(turn_world) * world_normal);
   }
   world_position = p.xyz;
-  world_normal = normal_matrix * normal;
   gl_Position = view_projection * p;
 }
 )";
@@ -108,7 +118,8 @@ Eigen::Affine3f visual_transform(const sim::Visual& v) {
 std::string vertex_shader() {
   std::string text = kVertex;
   const std::string key = "BEND_STATIONS";
-  text.replace(text.find(key), key.size(), std::to_string(SceneView::kBendStations));
+  for (std::size_t at = text.find(key); at != std::string::npos; at = text.find(key))
+    text.replace(at, key.size(), std::to_string(SceneView::kBendStations));
   return text;
 }
 
@@ -145,18 +156,23 @@ void SceneView::deform(const sim::Model& model, const double* q, double exaggera
     const std::vector<sim::flexible::FlexibleNode>& nodes = flexible->mesh_nodes;
     const Eigen::Map<const Eigen::VectorXd> eta(q + model.first_elastic_position[i], flexible->modes());
     Bend& bend = bends_[i];
-    const double length = nodes.back().point.x();
+    const double length = flexible->station(nodes.back().point);
     bend.spacing = static_cast<float>(length / (kBendStations - 1));
+    bend.root = flexible->beam.root.cast<float>();
+    bend.axis = flexible->axis().cast<float>();
     bend.displacement.resize(kBendStations);
-    // The mesh nodes' displacements, resampled at equal stations (linear
-    // between nodes).
+    bend.turn.resize(kBendStations);
+    // The mesh nodes' displacements and rotations, resampled at equal
+    // stations (linear between nodes).
     std::size_t a = 0;
     for (int k = 0; k < kBendStations; ++k) {
       const double x = length * k / (kBendStations - 1);
-      while (a + 2 < nodes.size() && nodes[a + 1].point.x() < x) ++a;
-      const double f = std::clamp((x - nodes[a].point.x()) / (nodes[a + 1].point.x() - nodes[a].point.x()), 0.0, 1.0);
-      const Eigen::Vector3d u = (1 - f) * (nodes[a].shape.topRows<3>() * eta) + f * (nodes[a + 1].shape.topRows<3>() * eta);
-      bend.displacement[k] = (exaggeration * u).cast<float>();
+      while (a + 2 < nodes.size() && flexible->station(nodes[a + 1].point) < x) ++a;
+      const double x0 = flexible->station(nodes[a].point), x1 = flexible->station(nodes[a + 1].point);
+      const double f = std::clamp((x - x0) / (x1 - x0), 0.0, 1.0);
+      const Eigen::Matrix<double, 6, 1> u = (1 - f) * (nodes[a].shape * eta) + f * (nodes[a + 1].shape * eta);
+      bend.displacement[k] = (exaggeration * u.head<3>()).cast<float>();
+      bend.turn[k] = (exaggeration * u.tail<3>()).cast<float>();
     }
   }
 }
@@ -229,7 +245,10 @@ void SceneView::draw(const std::vector<sim::Pose>& poses, const Camera& camera, 
       glUniformMatrix4fv(shader_->uniform("body_from_mesh"), 1, GL_FALSE, item.local.matrix().data());
       glUniformMatrix4fv(shader_->uniform("world_from_body"), 1, GL_FALSE, body.matrix().data());
       glUniform1f(shader_->uniform("bend_spacing"), bend->spacing);
+      glUniform3fv(shader_->uniform("bend_root"), 1, bend->root.data());
+      glUniform3fv(shader_->uniform("bend_axis"), 1, bend->axis.data());
       glUniform3fv(shader_->uniform("bend"), kBendStations, bend->displacement.front().data());
+      glUniform3fv(shader_->uniform("bend_turn"), kBendStations, bend->turn.front().data());
     }
     glUniform1i(shader_->uniform("bend_count"), bend ? kBendStations : 0);
     draw_mesh(*item.mesh, placement(item, poses), nullptr);

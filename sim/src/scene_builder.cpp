@@ -103,8 +103,7 @@ Body SceneBuilder::undeformed(Body body) {
 int SceneBuilder::node_at(int k, const Vec3& point, const std::string& field) const {
   const auto& flexible = scene_.model.bodies[k].flexible;
   if (!flexible) return -1;
-  for (std::size_t a = 0; a < flexible->nodes.size(); ++a)
-    if ((flexible->nodes[a].point - point).norm() <= 1e-9 * std::max(1.0, point.norm())) return static_cast<int>(a);
+  if (const int a = flexible->node_of(point); a >= 0) return a;
   if (point.isZero(0)) return -1;
   throw SceneInvalid(field, "no node of the flexible body '" + scene_.model.bodies[k].name + "' is at this point");
 }

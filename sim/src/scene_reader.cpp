@@ -57,6 +57,7 @@ class SceneReader : private input::YamlFields {
   std::shared_ptr<const flexible::FlexibleBody> read_flexible(const YAML::Node& node, const std::string& name,
                                                               const YAML::Node& all, const std::string& field) const;
   flexible::BeamSection read_beam_section(const YAML::Node& node, const std::string& field) const;
+  flexible::ModalDamping read_modal_damping(const YAML::Node& node, const std::string& field) const;
   Joint read_joint(const YAML::Node& node, const std::string& field) const;
   std::shared_ptr<JointCompliance> read_compliance(const YAML::Node& node, int joint, const std::string& field) const;
   Visual read_visual(const YAML::Node& node, const std::string& field) const;
@@ -328,36 +329,45 @@ std::shared_ptr<const flexible::FlexibleBody> SceneReader::read_flexible(const Y
   flexible::BeamBodySpec spec;
   spec.section = read_beam_section(require(node, "beam", field), field + ".beam");
   if (node["modes"]) spec.normal_modes = static_cast<int>(count(node["modes"], field + ".modes", 0, flexible::kMaxModes));
-  if (node["damping"]) {
-    spec.damping_ratio = non_negative(node["damping"], field + ".damping");
-    if (spec.damping_ratio >= 1) fail(node["damping"], field + ".damping", "a modal damping ratio is below 1");
-  }
+  if (node["damping"]) spec.damping = read_modal_damping(node["damping"], field + ".damping");
   if (node["geometric_stiffening"])
     spec.geometric_stiffening = flag(node["geometric_stiffening"], field + ".geometric_stiffening");
-  const double h = spec.section.length / spec.section.elements;
-  // A point where something attaches: on the axis, at a mesh node.
-  const auto attach = [&](const YAML::Node& at_node, const std::string& at, const char* what) {
+  const YAML::Node beam = node["beam"];
+  if (const YAML::Node root = beam["root"]) spec.root = vec3(root, field + ".beam.root");
+  if (const YAML::Node axis = beam["axis"]) {
+    const std::string a = text(axis, field + ".beam.axis");
+    if (a != "x" && a != "y" && a != "z") fail(axis, field + ".beam.axis", "expected x, y or z (the body axis the beam runs along)");
+    spec.axis = a[0] - 'x';
+  }
+  const double L = spec.section.length, h = L / spec.section.elements;
+  const Vec3 along = Vec3::Unit(spec.axis);
+  // A point where something attaches: its projection on the axis at a mesh
+  // node; a child's joint may stand off the axis (a rigid bracket), a
+  // sensor sits on it.
+  const auto attach = [&](const YAML::Node& at_node, const std::string& at, const char* what, bool bracket) {
     const Vec3 p = vec3(at_node, at);
-    const double node_x = h * std::round(p.x() / h);
-    if (p.tail<2>().norm() > 1e-9 * spec.section.length || std::abs(p.x() - node_x) > 1e-9 * spec.section.length ||
-        p.x() < 0 || p.x() > spec.section.length * (1 + 1e-9))
+    const double x = along.dot(p - spec.root), node_x = h * std::round(x / h);
+    const double off_axis = (p - spec.root - x * along).norm();
+    if ((!bracket && off_axis > 1e-9 * L) || std::abs(x - node_x) > 1e-9 * L || x < -1e-9 * L || x > L * (1 + 1e-9))
       fail(at_node, at,
-           std::string("a ") + what + " of the flexible beam '" + name +
-               "' sits at a mesh node: a point (x, 0, 0) with x a multiple of " + format_number(h) +
-               " m (length / elements) in [0, " + format_number(spec.section.length) + "]");
-    spec.attachments.push_back(Vec3(node_x, 0, 0));
+           std::string("a ") + what + " of the flexible beam '" + name + "' sits at a mesh node" +
+               (bracket ? " (or on a rigid bracket beside one)" : "") +
+               ": its distance along the axis from the root a multiple of " +
+               format_number(h) + " m (length / elements) in [0, " + format_number(L) + "]" +
+               (bracket ? "" : ", on the axis"));
+    spec.attachments.push_back(p);
   };
   if (sensors_ && sensors_.IsSequence())
     for (std::size_t k = 0; k < sensors_.size(); ++k)
       if (sensors_[k].IsMap() && sensors_[k]["body"] && sensors_[k]["body"].IsScalar() &&
           sensors_[k]["body"].Scalar() == name && sensors_[k]["point"])
-        attach(sensors_[k]["point"], input::index_field("sensors", k) + ".point", "sensor");
+        attach(sensors_[k]["point"], input::index_field("sensors", k) + ".point", "sensor", false);
   for (std::size_t c = 0; c < all.size(); ++c) {
     const YAML::Node child = all[c];
     if (!child.IsMap() || !child["parent"] || !child["parent"].IsScalar() || child["parent"].Scalar() != name ||
         !child["joint"] || !child["joint"].IsMap() || !child["joint"]["parent_point"])
       continue;
-    attach(child["joint"]["parent_point"], input::index_field("bodies", c) + ".joint.parent_point", "child");
+    attach(child["joint"]["parent_point"], input::index_field("bodies", c) + ".joint.parent_point", "child", true);
   }
   try {
     return std::make_shared<const flexible::FlexibleBody>(flexible::beam_body(spec));
@@ -366,11 +376,49 @@ std::shared_ptr<const flexible::FlexibleBody> SceneReader::read_flexible(const Y
   }
 }
 
-// A beam's section along its axis, the body frame's x from the origin.
-// One bending stiffness is both planes'.
+// A flexible body's damping: one ratio for every coordinate, one each
+// ([0.01, 0.02, ...]), or bands of the coordinates' frequencies
+// ([{up_to: 100, ratio: 0.005}, ..., {ratio: 0.5}], the last open-ended).
+flexible::ModalDamping SceneReader::read_modal_damping(const YAML::Node& node, const std::string& field) const {
+  const auto ratio = [&](const YAML::Node& r, const std::string& at) {
+    const double zeta = non_negative(r, at);
+    if (zeta >= 1) fail(r, at, "a modal damping ratio is below 1");
+    return zeta;
+  };
+  if (!node.IsSequence()) return flexible::ModalDamping::uniform(ratio(node, field));
+  if (node.size() == 0) fail(node, field, "expected a ratio, a ratio per coordinate, or frequency bands");
+  flexible::ModalDamping damping;
+  damping.bands.clear();
+  for (std::size_t k = 0; k < node.size(); ++k) {
+    const std::string at = input::index_field(field, k);
+    if (!node[k].IsMap()) {
+      damping.per_coordinate.push_back(ratio(node[k], at));
+      continue;
+    }
+    check_keys(node[k], {"up_to", "ratio"}, at);
+    flexible::DampingBand band;
+    band.ratio = ratio(require(node[k], "ratio", at), at + ".ratio");
+    const bool last = k + 1 == node.size();
+    if (node[k]["up_to"]) {
+      if (last) fail(node[k]["up_to"], at + ".up_to", "the last band has no up_to: it holds every higher frequency");
+      band.up_to_hz = positive(node[k]["up_to"], at + ".up_to");
+      if (!damping.bands.empty() && band.up_to_hz <= damping.bands.back().up_to_hz)
+        fail(node[k]["up_to"], at + ".up_to", "bands go up in frequency");
+    } else if (!last) {
+      fail(node[k], at, "a band before the last says up_to which frequency (Hz) it holds");
+    }
+    damping.bands.push_back(band);
+  }
+  if (!damping.per_coordinate.empty() && !damping.bands.empty())
+    fail(node, field, "either a ratio per coordinate or frequency bands, not both");
+  return damping;
+}
+
+// A beam's section along its axis (read_flexible places it). One bending
+// stiffness is both planes'.
 flexible::BeamSection SceneReader::read_beam_section(const YAML::Node& node, const std::string& field) const {
   check_keys(node, {"length", "axial_stiffness", "bending_stiffness", "torsional_stiffness", "mass_per_length",
-                    "polar_inertia_per_length", "elements"},
+                    "polar_inertia_per_length", "elements", "root", "axis"},
              field);
   flexible::BeamSection s;
   s.length = positive(require(node, "length", field), field + ".length");

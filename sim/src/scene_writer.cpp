@@ -103,6 +103,18 @@ void mass_properties(std::ostream& out, const Body& b, const std::string& pad) {
   out << pad << "inertia: " << numbers(inertia) << "\n";
 }
 
+std::string damping_text(const flexible::ModalDamping& d) {
+  if (!d.per_coordinate.empty()) return numbers(d.per_coordinate);
+  if (d.is_uniform()) return format_number(d.bands[0].ratio);
+  std::string out = "[";
+  for (std::size_t k = 0; k < d.bands.size(); ++k) {
+    out += k ? ", {" : "{";
+    if (k + 1 < d.bands.size()) out += "up_to: " + format_number(d.bands[k].up_to_hz) + ", ";
+    out += "ratio: " + format_number(d.bands[k].ratio) + "}";
+  }
+  return out + "]";
+}
+
 // A flexible body's structure and modes, as the reader takes them (its
 // attachments follow from its children's joints).
 void flexible_body(std::ostream& out, const flexible::BeamBodySpec& spec, const std::string& pad) {
@@ -112,10 +124,12 @@ void flexible_body(std::ostream& out, const flexible::BeamBodySpec& spec, const 
       << format_number(s.bending_stiffness_y) << ", " << format_number(s.bending_stiffness_z)
       << "], torsional_stiffness: " << format_number(s.torsional_stiffness)
       << ", mass_per_length: " << format_number(s.mass_per_length)
-      << ", polar_inertia_per_length: " << format_number(s.polar_inertia_per_length) << ", elements: " << s.elements
-      << "}\n"
+      << ", polar_inertia_per_length: " << format_number(s.polar_inertia_per_length) << ", elements: " << s.elements;
+  if (!spec.root.isZero(0)) out << ", root: " << numbers({spec.root.x(), spec.root.y(), spec.root.z()});
+  if (spec.axis != 0) out << ", axis: " << static_cast<char>('x' + spec.axis);
+  out << "}\n"
       << pad << "  modes: " << spec.normal_modes << "\n"
-      << pad << "  damping: " << format_number(spec.damping_ratio) << "\n";
+      << pad << "  damping: " << damping_text(spec.damping) << "\n";
   if (!spec.geometric_stiffening) out << pad << "  geometric_stiffening: false\n";
 }
 

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "unfurl/sim/number_text.hpp"
 #include "unfurl/sim/scene.hpp"
 
 namespace unfurl::sim {
@@ -60,8 +61,20 @@ void Elasticity::load_values(const ElementState& s, double* values) const {
 
 std::vector<ElementParameter> Elasticity::parameters() const {
   const flexible::BeamBodySpec& spec = flexible_->beam;
-  std::vector<ElementParameter> out{{"damping", "damping ratio", spec.damping_ratio, 0.001, 0, 0.99,
-                                     "every elastic coordinate's modal damping ratio zeta"}};
+  std::vector<ElementParameter> out;
+  const flexible::ModalDamping& d = spec.damping;
+  if (d.is_uniform()) {
+    out.push_back({"damping", "damping ratio", d.bands[0].ratio, 0.001, 0, 0.99,
+                   "every elastic coordinate's modal damping ratio zeta"});
+  } else if (d.per_coordinate.empty()) {
+    for (std::size_t k = 0; k < d.bands.size(); ++k) {
+      const bool last = k + 1 == d.bands.size();
+      const std::string edge = format_number(last ? d.bands[k - 1].up_to_hz : d.bands[k].up_to_hz);
+      out.push_back({"damping." + std::to_string(k) + ".ratio", std::string("zeta ") + (last ? "above " : "to ") + edge + " Hz",
+                     d.bands[k].ratio, 0.001, 0, 0.99,
+                     "the modal damping ratio of the elastic coordinates in this band of frequencies"});
+    }
+  }
   const flexible::BeamSection& s = spec.section;
   if (s.bending_stiffness_y == s.bending_stiffness_z)
     out.push_back({"beam.bending_stiffness", "EI [N m^2]", s.bending_stiffness_z, 0.01 * s.bending_stiffness_z, 0,

@@ -10,15 +10,54 @@
 
 namespace unfurl::sim::flexible {
 
+namespace {
+
+// The body frame's axes of the beam's own (x along the beam, y and z its
+// section's): the next axes in cyclic order.
+Eigen::Matrix3d body_from_beam(int axis) {
+  Eigen::Matrix3d R;
+  for (int c = 0; c < 3; ++c) R.col(c) = Eigen::Vector3d::Unit((axis + c) % 3);
+  return R;
+}
+
+// The mass points and shortening of a beam built along its own x, turned
+// and moved into the body frame.
+std::vector<MassPoint> placed(std::vector<MassPoint> points, const Eigen::Matrix3d& R, const Eigen::Vector3d& root) {
+  for (MassPoint& p : points) {
+    p.r = root + R * p.r;
+    p.N = R * p.N;
+    p.J = R * p.J * R.transpose();
+    if (p.R.size() > 0) p.R = R * p.R;
+  }
+  return points;
+}
+
+std::vector<Shortening> placed(std::vector<Shortening> shortening, const Eigen::Matrix3d& R) {
+  for (Shortening& s : shortening) s.axis = R * s.axis;
+  return shortening;
+}
+
+FlexibleNode placed(const Eigen::Vector3d& point, Eigen::MatrixXd shape, const Eigen::Matrix3d& R,
+                    const Eigen::Vector3d& root) {
+  shape.topRows<3>() = R * shape.topRows<3>();
+  shape.bottomRows<3>() = R * shape.bottomRows<3>();
+  return {root + R * point, shape};
+}
+
+}  // namespace
+
 FlexibleBody beam_body(const BeamBodySpec& spec) {
   const BeamSection& section = spec.section;
+  if (spec.axis < 0 || spec.axis > 2) throw std::invalid_argument("flexible beam: the axis is x, y or z");
+  const Eigen::Matrix3d R = body_from_beam(spec.axis);
   const Structure beam = beam_structure(section);
   const double h = section.length / section.elements;
   std::vector<int> nodes, interface;
   for (const Eigen::Vector3d& p : spec.attachments) {
-    if (p.tail<2>().norm() > 1e-9 * section.length || p.x() < -0.5 * h || p.x() > section.length + 0.5 * h)
-      throw std::invalid_argument("flexible beam: an attachment point lies off the beam's axis");
-    const int node = static_cast<int>(std::lround(p.x() / h));
+    const double x = R.col(0).dot(p - spec.root);
+    if (x < -0.5 * h || x > section.length + 0.5 * h)
+      throw std::invalid_argument("flexible beam: an attachment point lies beyond the beam's ends");
+    const int node = static_cast<int>(std::lround(x / h));
     nodes.push_back(node);
     if (node == 0) continue;  // the frame's own attachment: held
     bool seen = false;
@@ -30,17 +69,37 @@ FlexibleBody beam_body(const BeamBodySpec& spec) {
   if (reduced.coordinates() > kMaxModes)
     throw std::invalid_argument("flexible beam: " + std::to_string(reduced.coordinates()) +
                                 " elastic coordinates, more than " + std::to_string(kMaxModes));
-  FlexibleBody body{InertiaInvariants(beam_mass_points(section), reduced.shape,
-                                      spec.geometric_stiffening ? beam_shortening(section, reduced.shape)
-                                                                : std::vector<Shortening>{}),
-                    reduced.frequency_hz, {}, {}, {}, {}, spec};
+  FlexibleBody body{
+      InertiaInvariants(placed(beam_mass_points(section), R, spec.root), reduced.shape,
+                        spec.geometric_stiffening ? placed(beam_shortening(section, reduced.shape), R)
+                                                  : std::vector<Shortening>{}),
+      reduced.frequency_hz, {}, {}, {}, {}, spec};
   const Eigen::VectorXd omega = 2 * M_PI * reduced.frequency_hz;
   body.stiffness = omega.array().square();
-  body.damping = 2 * spec.damping_ratio * omega;
-  for (int node : nodes) body.nodes.push_back({beam.nodes[node], reduced.node_shape(beam, node)});
+  if (!spec.damping.per_coordinate.empty() && static_cast<int>(spec.damping.per_coordinate.size()) != body.modes())
+    throw std::invalid_argument("flexible beam: " + std::to_string(spec.damping.per_coordinate.size()) +
+                                " damping ratios given, one for each of its " + std::to_string(body.modes()) +
+                                " elastic coordinates expected");
+  body.damping.resize(body.modes());
+  for (int k = 0; k < body.modes(); ++k) body.damping[k] = 2 * spec.damping.ratio(k, reduced.frequency_hz[k]) * omega[k];
+  for (int node : nodes) body.nodes.push_back(placed(beam.nodes[node], reduced.node_shape(beam, node), R, spec.root));
   for (int node = 0; node < static_cast<int>(beam.nodes.size()); ++node)
-    body.mesh_nodes.push_back({beam.nodes[node], reduced.node_shape(beam, node)});
+    body.mesh_nodes.push_back(placed(beam.nodes[node], reduced.node_shape(beam, node), R, spec.root));
   return body;
+}
+
+double ModalDamping::ratio(int k, double f_hz) const {
+  if (!per_coordinate.empty()) return per_coordinate.at(k);
+  for (const DampingBand& band : bands)
+    if (f_hz <= band.up_to_hz) return band.ratio;
+  return bands.back().ratio;
+}
+
+int FlexibleBody::node_of(const Eigen::Vector3d& point) const {
+  const double tolerance = 1e-9 * std::max(beam.section.length, point.norm());
+  for (std::size_t a = 0; a < beam.attachments.size(); ++a)
+    if ((beam.attachments[a] - point).norm() <= tolerance) return static_cast<int>(a);
+  return -1;
 }
 
 double FlexibleBody::largest_deflection(const double* eta) const {

@@ -28,7 +28,10 @@ StructuralModes structural_modes(const Structure& structure, const std::vector<i
   modes.shape.setZero(n, m);
   const double largest = m ? omega2.cwiseAbs().maxCoeff() : 0.0;
   for (int k = 0; k < m; ++k) {
-    const bool rigid = omega2[k] < 1e-9 * largest;
+    // A rigid motion's omega^2 comes out at round-off of the largest
+    // (~1e-15 of it); a panel's first bending mode can lie 1e-9 below its
+    // in-plane stretching, so the cut sits between the two.
+    const bool rigid = omega2[k] < 1e-12 * largest;
     if (rigid) ++modes.rigid;
     modes.frequency_hz[k] = rigid ? 0.0 : std::sqrt(omega2[k]) / (2 * M_PI);
     for (int a = 0; a < m; ++a) modes.shape(free[a], k) = solver.eigenvectors()(a, k);

@@ -63,7 +63,9 @@ class SceneView {
 
   struct Bend {
     float spacing = 0;
+    Eigen::Vector3f root = Eigen::Vector3f::Zero(), axis = Eigen::Vector3f::UnitX();
     std::vector<Eigen::Vector3f> displacement;  // body frame, per station; empty: rigid
+    std::vector<Eigen::Vector3f> turn;          // small rotations, likewise
   };
 
   std::vector<Item> items_;

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -32,17 +33,50 @@ using NodeMatrix = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, kMaxExtended>;
 // that the latch-up shock is not understated.
 inline constexpr double kDefaultDampingRatio = 0.005;
 
+// Each elastic coordinate's modal damping ratio: one for all, by bands of
+// the coordinate's frequency (the frame held), or one per coordinate. Bands
+// are how Adams damps a flexible body by default (1 % below 100 Hz, 10 %
+// below 1 kHz, critical above: FLEX_BODY's CRATIO), so that the stiff
+// constraint modes kept for their compliance do not ring at kHz and set
+// the step size; the structural modes keep a measured, low ratio.
+struct DampingBand {
+  double up_to_hz = std::numeric_limits<double>::infinity();
+  double ratio = 0;
+};
+
+struct ModalDamping {
+  std::vector<DampingBand> bands{{std::numeric_limits<double>::infinity(), kDefaultDampingRatio}};  // ascending
+  std::vector<double> per_coordinate;  // instead of the bands, when given
+
+  static ModalDamping uniform(double zeta) { return {{{std::numeric_limits<double>::infinity(), zeta}}, {}}; }
+  bool is_uniform() const { return per_coordinate.empty() && bands.size() == 1; }
+  // Coordinate k's ratio, its frequency f_hz.
+  double ratio(int k, double f_hz) const;
+};
+
 // What a beam body was made from (a scene file's `flexible: {beam: ...}`),
 // kept so that the scene writes back and its parameters edit and re-run
 // like any other.
 struct BeamBodySpec {
   BeamSection section;
   int normal_modes = 4;
-  double damping_ratio = kDefaultDampingRatio;
+  ModalDamping damping;
+  // Body-frame points where children and sensors attach. Each becomes an
+  // interface node at the mesh node its projection on the axis falls on;
+  // its distance from the axis is a rigid bracket (a hinge's pivot line
+  // off a panel's mid-plane).
   std::vector<Eigen::Vector3d> attachments;
   // The foreshortening that stiffens a spinning beam; off only to show the
   // plain linear floating-frame model's spurious softening.
   bool geometric_stiffening = true;
+  // Where the beam starts (held to the frame: the frame's attachment) and
+  // which body axis it runs along (0 x, 1 y, 2 z). Its section's first and
+  // second transverse axes are the next two body axes in cyclic order, so
+  // bending_stiffness_y is about axis + 1 and bending_stiffness_z about
+  // axis + 2: a panel along y in the xy-plane bends out of its plane about
+  // x, with bending_stiffness_z.
+  Eigen::Vector3d root = Eigen::Vector3d::Zero();
+  int axis = 0;
 };
 
 struct FlexibleNode {
@@ -60,23 +94,31 @@ struct FlexibleBody {
   std::vector<FlexibleNode> mesh_nodes;
   BeamBodySpec beam;
 
+  // The body-frame direction of the beam's axis, and the distance along it
+  // from the root of a body-frame point.
+  Eigen::Vector3d axis() const { return Eigen::Vector3d::Unit(beam.axis); }
+  double station(const Eigen::Vector3d& p) const { return axis().dot(p - beam.root); }
+  // The node attachment `point` hangs on, or -1.
+  int node_of(const Eigen::Vector3d& point) const;
+
   // The largest translation of a mesh node at deformation eta.
   double largest_deflection(const double* eta) const;
 
   int modes() const { return static_cast<int>(stiffness.size()); }
 };
 
-// A beam along x from the frame's origin, held there (the frame's
-// attachment), with `attachments` (body-frame points on the beam's axis)
-// as interface nodes, `normal_modes` fixed-interface modes and the
-// attachments' constraint modes, each with damping ratio `zeta`; the
-// foreshortening carried. Each attachment becomes a node at the mesh node
-// nearest it. Throws std::invalid_argument when more coordinates result
-// than kMaxModes or a point lies off the beam.
+// A beam from spec.root along body axis spec.axis, held at the root (the
+// frame's attachment), with `attachments` as interface nodes,
+// `normal_modes` fixed-interface modes and the attachments' constraint
+// modes, damped as spec.damping says; the foreshortening carried. Each
+// attachment becomes a node at the mesh node nearest its projection.
+// Throws std::invalid_argument when more coordinates result than
+// kMaxModes, a point lies beyond the beam's ends, or the damping ratios
+// given one per coordinate are not one per coordinate.
 FlexibleBody beam_body(const BeamBodySpec& spec);
 inline FlexibleBody beam_body(const BeamSection& section, int normal_modes, double zeta,
                               const std::vector<Eigen::Vector3d>& attachments) {
-  return beam_body(BeamBodySpec{section, normal_modes, zeta, attachments});
+  return beam_body(BeamBodySpec{section, normal_modes, ModalDamping::uniform(zeta), attachments});
 }
 
 }  // namespace unfurl::sim::flexible

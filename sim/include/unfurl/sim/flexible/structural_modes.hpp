@@ -18,7 +18,8 @@ struct StructuralModes {
   // mass-normalized (phi^T M phi = 1), zero on the held ones.
   Eigen::MatrixXd shape;
   // The leading modes that are rigid motions (what the holds leave free):
-  // omega^2 below 1e-9 of the largest, the eigensolver's round-off.
+  // omega^2 below 1e-12 of the largest (the eigensolver's round-off is
+  // ~1e-15 of it).
   int rigid = 0;
 };
 
