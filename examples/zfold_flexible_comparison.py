@@ -11,7 +11,7 @@ through the latch-ups.
 The shock is given twice: the peak over every integrator step (what
 summary.json reports), and the peak of the acceleration sampled every
 0.1 ms and low-passed at 200 Hz (zero phase, a second-order Butterworth's
-magnitude applied forward and back), which keeps the panels' bending
+magnitude applied forward and back), which keeps the panels' own
 modes (13-75 Hz latched) and leaves out the kHz ringing of the panels'
 stiff stretch and in-plane constraint modes, which the latch's damper
 sets off the instant it engages (its torque c_L q' steps on).
