@@ -1,5 +1,10 @@
 #include "unfurl/studies/scene_scaling.hpp"
 
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include "unfurl/sim/flexible/flexible_body.hpp"
 #include "unfurl/sim/scene_validation.hpp"
 
 namespace unfurl::studies {
@@ -12,6 +17,9 @@ sim::SceneFile scale_scene(const sim::SceneFile& file, double L, double M) {
     b.mass *= M;
     b.com *= L;
     b.inertia_com *= M * L * L;
+    if (b.flexible)
+      b.flexible = std::make_shared<const sim::flexible::FlexibleBody>(
+          sim::flexible::beam_body(sim::flexible::scaled(b.flexible->beam, L, M)));
   }
   for (sim::Joint& j : model.joints) {
     j.parent_point *= L;
@@ -20,12 +28,20 @@ sim::SceneFile scale_scene(const sim::SceneFile& file, double L, double M) {
   model.base_velocity.head<3>() *= L;
   for (auto& element : scene.elements) element = element->scaled(L, M, model);
   for (sim::Sensor& s : scene.sensors) s.point *= L;
-  for (int c = 0; c < model.nq; ++c)
-    if (model.position_unit(c) == "m") scene.q0[c] *= L;
+  // Elastic coordinates (m kg^0.5, unit modal masses) and their rates and
+  // momenta grow by L sqrt(M).
+  const double modal = L * std::sqrt(M);
+  for (int c = 0; c < model.nq; ++c) {
+    const std::string unit = model.position_unit(c);
+    if (unit == "m") scene.q0[c] *= L;
+    if (unit == "m kg^0.5") scene.q0[c] *= modal;
+  }
   for (int c = 0; c < model.nv; ++c) {
-    const bool linear = model.velocity_unit(c) == "m/s";
+    const std::string unit = model.velocity_unit(c);
+    const bool linear = unit == "m/s", elastic = unit == "m kg^0.5/s";
     if (linear) scene.dq0[c] *= L;
-    if (!scene.p0.empty()) scene.p0[c] *= linear ? M * L : M * L * L;
+    if (elastic) scene.dq0[c] *= modal;
+    if (!scene.p0.empty()) scene.p0[c] *= elastic ? modal : linear ? M * L : M * L * L;
   }
   const auto scale_visual = [L](sim::Visual& v) {
     v.scale *= L;

@@ -1,7 +1,6 @@
 #include "unfurl/sim/elements/elasticity.hpp"
 
 #include <cstdio>
-#include <stdexcept>
 
 #include "unfurl/sim/number_text.hpp"
 #include "unfurl/sim/scene.hpp"
@@ -92,8 +91,10 @@ std::string Elasticity::note() const {
   return text;
 }
 
-std::shared_ptr<ForceElement> Elasticity::scaled(double, double, const Model&) const {
-  throw std::invalid_argument("a scene with flexible bodies cannot be scaled yet");
+// The body's structure is scaled with the body (studies::scale_scene);
+// the element follows it.
+std::shared_ptr<ForceElement> Elasticity::scaled(double, double, const Model& model) const {
+  return std::make_shared<Elasticity>(body_, model.bodies[body_].flexible);
 }
 
 }  // namespace unfurl::sim

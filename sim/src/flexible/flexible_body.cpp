@@ -88,6 +88,21 @@ FlexibleBody beam_body(const BeamBodySpec& spec) {
   return body;
 }
 
+BeamBodySpec scaled(const BeamBodySpec& spec, double L, double M) {
+  BeamBodySpec out = spec;
+  BeamSection& s = out.section;
+  s.length *= L;
+  s.axial_stiffness *= M * L;                      // a force
+  s.bending_stiffness_y *= M * L * L * L;          // a force by a length squared
+  s.bending_stiffness_z *= M * L * L * L;
+  s.torsional_stiffness *= M * L * L * L;
+  s.mass_per_length *= M / L;
+  s.polar_inertia_per_length *= M * L;
+  out.root *= L;
+  for (Eigen::Vector3d& p : out.attachments) p *= L;
+  return out;
+}
+
 double ModalDamping::ratio(int k, double f_hz) const {
   if (!per_coordinate.empty()) return per_coordinate.at(k);
   for (const DampingBand& band : bands)

@@ -33,7 +33,7 @@ class Elasticity : public ForceElement {
   // reduced again.
   std::vector<ElementParameter> parameters() const override;
   std::string note() const override;  // its coordinates and their frequencies
-  // Flexible bodies are not scaled yet (studies::scale_scene says so).
+  // On the model's (already scaled) structure of the body.
   std::shared_ptr<ForceElement> scaled(double L, double M, const Model& model) const override;
 
  private:

@@ -116,6 +116,11 @@ struct FlexibleBody {
 // kMaxModes, a point lies beyond the beam's ends, or the damping ratios
 // given one per coordinate are not one per coordinate.
 FlexibleBody beam_body(const BeamBodySpec& spec);
+
+// The same beam in units whose lengths are L times and masses M times
+// larger, time unchanged (studies::scale_scene): the frequencies and mode
+// shapes' forms stay, the elastic coordinates (m kg^0.5) grow by L sqrt(M).
+BeamBodySpec scaled(const BeamBodySpec& spec, double L, double M);
 inline FlexibleBody beam_body(const BeamSection& section, int normal_modes, double zeta,
                               const std::vector<Eigen::Vector3d>& attachments) {
   return beam_body(BeamBodySpec{section, normal_modes, ModalDamping::uniform(zeta), attachments});
