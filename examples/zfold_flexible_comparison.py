@@ -54,7 +54,11 @@ def first_frequency(scene):
 
 
 def low_passed(x, dt):
-    """x through a second-order Butterworth low-pass at CUTOFF_HZ, forward and back (zero phase)."""
+    """x through a second-order Butterworth low-pass at CUTOFF_HZ, forward and back (zero phase).
+
+    By FFT, so the record is taken as periodic: its two ends (the wing at
+    rest, and settled) meet smoothly, far from the latch-ups.
+    """
     f = np.fft.rfftfreq(len(x), dt)
     return np.fft.irfft(np.fft.rfft(x) / (1 + (f / CUTOFF_HZ) ** 4), len(x))
 

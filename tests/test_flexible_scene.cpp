@@ -4,7 +4,6 @@
 // with its bending.
 #include <gtest/gtest.h>
 
-#include <Eigen/Geometry>
 #include <cmath>
 
 #include "unfurl/sim/flexible/flexible_body.hpp"

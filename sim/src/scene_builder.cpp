@@ -104,7 +104,7 @@ int SceneBuilder::node_at(int k, const Vec3& point, const std::string& field) co
   const auto& flexible = scene_.model.bodies[k].flexible;
   if (!flexible) return -1;
   if (const int a = flexible->node_of(point); a >= 0) return a;
-  if (point.isZero(0)) return -1;
+  if (point == flexible->beam.root) return -1;
   throw SceneInvalid(field, "no node of the flexible body '" + scene_.model.bodies[k].name + "' is at this point");
 }
 

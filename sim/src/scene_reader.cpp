@@ -318,6 +318,18 @@ void SceneReader::read_body(const YAML::Node& node, int index, const YAML::Node&
                               field + ".joint.compliance"));
 }
 
+// How many elastic coordinates a beam body has (-1 where it cannot be
+// made), its damping aside: a ratio list of the wrong length is the
+// damping field's fault, not the body's.
+int elastic_coordinates(flexible::BeamBodySpec spec) {
+  spec.damping = flexible::ModalDamping::uniform(0);
+  try {
+    return flexible::beam_body(spec).modes();
+  } catch (const std::invalid_argument&) {
+    return -1;
+  }
+}
+
 // A flexible body (docs/FLEXIBLE.md): its structure, the modes kept and
 // their damping. The points its children's joints hang on become the
 // reduction's interface nodes, so they must lie on mesh nodes.
@@ -372,6 +384,9 @@ std::shared_ptr<const flexible::FlexibleBody> SceneReader::read_flexible(const Y
   try {
     return std::make_shared<const flexible::FlexibleBody>(flexible::beam_body(spec));
   } catch (const std::invalid_argument& e) {
+    const std::size_t ratios = spec.damping.per_coordinate.size();
+    if (ratios > 0 && static_cast<int>(ratios) != elastic_coordinates(spec))
+      fail(node["damping"], field + ".damping", e.what());
     fail(node, field, e.what());
   }
 }
@@ -387,6 +402,10 @@ flexible::ModalDamping SceneReader::read_modal_damping(const YAML::Node& node, c
   };
   if (!node.IsSequence()) return flexible::ModalDamping::uniform(ratio(node, field));
   if (node.size() == 0) fail(node, field, "expected a ratio, a ratio per coordinate, or frequency bands");
+  std::size_t bands = 0;
+  for (std::size_t k = 0; k < node.size(); ++k) bands += node[k].IsMap() ? 1 : 0;
+  if (bands != 0 && bands != node.size())
+    fail(node, field, "either a ratio per coordinate or frequency bands, not both");
   flexible::ModalDamping damping;
   damping.bands.clear();
   for (std::size_t k = 0; k < node.size(); ++k) {
@@ -409,8 +428,6 @@ flexible::ModalDamping SceneReader::read_modal_damping(const YAML::Node& node, c
     }
     damping.bands.push_back(band);
   }
-  if (!damping.per_coordinate.empty() && !damping.bands.empty())
-    fail(node, field, "either a ratio per coordinate or frequency bands, not both");
   return damping;
 }
 

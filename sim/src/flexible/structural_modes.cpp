@@ -1,10 +1,30 @@
 #include "unfurl/sim/flexible/structural_modes.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 namespace unfurl::sim::flexible {
+
+namespace {
+
+// How many of the structure's rigid motions the holds leave free: those of
+// its rigid-motion fields that vanish at every held degree of freedom,
+// rank(rigid) - rank(rigid at the held ones). Counted from the geometry,
+// not from the eigenvalues: a panel's first bending omega^2 can lie 1e-10
+// below its in-plane bending's highest mesh mode, and lower as the mesh
+// refines, where no cut on the eigenvalues tells them apart.
+int free_rigid_motions(const Structure& structure, const std::vector<int>& held) {
+  const int all = static_cast<int>(Eigen::FullPivLU<Eigen::MatrixXd>(structure.rigid).rank());
+  if (held.empty()) return all;
+  Eigen::MatrixXd at_held(held.size(), structure.rigid.cols());
+  for (std::size_t a = 0; a < held.size(); ++a) at_held.row(a) = structure.rigid.row(held[a]);
+  return all - static_cast<int>(Eigen::FullPivLU<Eigen::MatrixXd>(at_held).rank());
+}
+
+}  // namespace
 
 StructuralModes structural_modes(const Structure& structure, const std::vector<int>& held) {
   const int n = structure.size();
@@ -26,13 +46,9 @@ StructuralModes structural_modes(const Structure& structure, const std::vector<i
   const Eigen::VectorXd& omega2 = solver.eigenvalues();
   modes.frequency_hz.resize(m);
   modes.shape.setZero(n, m);
-  const double largest = m ? omega2.cwiseAbs().maxCoeff() : 0.0;
+  modes.rigid = std::min(free_rigid_motions(structure, held), m);
   for (int k = 0; k < m; ++k) {
-    // A rigid motion's omega^2 comes out at round-off of the largest
-    // (~1e-15 of it); a panel's first bending mode can lie 1e-9 below its
-    // in-plane stretching, so the cut sits between the two.
-    const bool rigid = omega2[k] < 1e-12 * largest;
-    if (rigid) ++modes.rigid;
+    const bool rigid = k < modes.rigid;
     modes.frequency_hz[k] = rigid ? 0.0 : std::sqrt(omega2[k]) / (2 * M_PI);
     for (int a = 0; a < m; ++a) modes.shape(free[a], k) = solver.eigenvectors()(a, k);
   }

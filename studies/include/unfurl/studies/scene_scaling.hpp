@@ -8,8 +8,9 @@
 
 namespace unfurl::studies {
 
-// Bodies (masses, centres of mass, inertias), joints' points, the base's
-// velocity, initial lengths and momenta, force elements
+// Bodies (masses, centres of mass, inertias; a flexible body's structure,
+// reduced again, and its elastic coordinates, x L sqrt(M)), joints'
+// points, the base's velocity, initial lengths and momenta, force elements
 // (ForceElement::scaled) and the visuals; the regulator's and the run's
 // settings are dimensionless or in time and stay.
 sim::SceneFile scale_scene(const sim::SceneFile& file, double L, double M);

@@ -1,4 +1,5 @@
-// A straight beam along the body frame's x-axis, for a yoke or a boom:
+// A straight beam along its own x-axis (beam_body places it in its body),
+// for a yoke, a boom or a panel between its hinge lines:
 // Euler-Bernoulli elements (cubic Hermite in bending about y and z, linear
 // in stretch and twist), consistent masses, six degrees of freedom at each
 // node (u_x, u_y, u_z, theta_x, theta_y, theta_z), nodes from x = 0.

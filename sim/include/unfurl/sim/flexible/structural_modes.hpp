@@ -17,9 +17,8 @@ struct StructuralModes {
   // One column per mode over all the structure's degrees of freedom,
   // mass-normalized (phi^T M phi = 1), zero on the held ones.
   Eigen::MatrixXd shape;
-  // The leading modes that are rigid motions (what the holds leave free):
-  // omega^2 below 1e-12 of the largest (the eigensolver's round-off is
-  // ~1e-15 of it).
+  // The leading modes that are rigid motions (what the holds leave free),
+  // counted from the structure's rigid-motion fields, not from omega^2.
   int rigid = 0;
 };
 
