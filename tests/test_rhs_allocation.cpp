@@ -122,6 +122,23 @@ TEST(RightHandSide, AFlexibleBeamAllocatesNothing) {
   EXPECT_EQ(allocations_in_jacobian_times(spinup), 0);
 }
 
+// Forces at a flexible body's points: gravity on its deformed mass, and a
+// damped point spring, a bushing and an applied force at its tip's node.
+TEST(RightHandSide, ForcesOnAFlexibleBeamAllocateNothing) {
+  const sim::Scene spinup = test::scene_file(
+      "spinup_beam",
+      {{"gravity", "[0, 0, -9.81]"},
+       {"point_springs",
+        "[{body_a: ground, point_a: [10, 0, -1], body_b: beam, point_b: [10, 0, 0], stiffness: 10, rest_length: 1, "
+        "damping: 1}]"},
+       {"bushings",
+        "[{name: prop, body_a: ground, point_a: [10, 0, 0], body_b: beam, point_b: [10, 0, 0], "
+        "stiffness: [0, 0, 10, 0, 0, 0], damping: [0, 0, 1, 0, 0, 0]}]"},
+       {"applied_forces", "[{body: beam, point: [10, 0, 0], force: [0, 0, -1], frame: base}]"}});
+  EXPECT_EQ(allocations_in_rhs(spinup, false), 0);
+  EXPECT_EQ(allocations_in_jacobian_times(spinup), 0);
+}
+
 TEST(RightHandSide, GravitySceneAllocatesNothing) {
   EXPECT_EQ(allocations_in_rhs(test::scene_file("double_pendulum"), false), 0);
 }

@@ -185,9 +185,9 @@ void Dynamics::body_velocities(const double* w, bool base_moves) {
 }
 
 ElementState Dynamics::element_state(std::size_t k, const double* q, const double* w, const std::vector<Pose>& poses,
-                                     const std::vector<Vec6>& v, const Vec6& v_base) const {
+                                     const std::vector<Vec6>& v, const Vec6& v_base, const Sweep* sweep) const {
   const int l = latch_of_element_[k];
-  return {scene_.model, Positions(q), Rates(w), poses, v, v_base, l >= 0 && latch_state_.engaged(l)};
+  return {scene_.model, Positions(q), Rates(w), poses, v, v_base, l >= 0 && latch_state_.engaged(l), sweep};
 }
 
 void Dynamics::add_element_forces(const double* q, const double* w) {
@@ -195,7 +195,7 @@ void Dynamics::add_element_forces(const double* q, const double* w) {
   std::fill(Q_joint_.begin(), Q_joint_.end(), 0.0);
   ElementForces out{RatesOut(Q_joint_.data()), F_};
   for (std::size_t k = 0; k < scene_.elements.size(); ++k)
-    scene_.elements[k]->add_forces(element_state(k, q, w, poses_, v_, scene_.model.base_velocity), out);
+    scene_.elements[k]->add_forces(element_state(k, q, w, poses_, v_, scene_.model.base_velocity, &sweep_), out);
 }
 
 double Dynamics::dissipation(const double* q, const double* q_dot) {
@@ -212,7 +212,8 @@ double Dynamics::dissipation(const double* q, const double* q_dot) {
     const ForceElement& e = *scene_.elements[k];
     if (!e.dissipative()) continue;
     P += e.dissipated_power(
-        element_state(k, q, dissipation_w_.data(), dissipation_poses_, dissipation_v_, Vec6::Zero()));
+        element_state(k, q, dissipation_w_.data(), dissipation_poses_, dissipation_v_, Vec6::Zero(),
+                      dissipation_sweep_.get()));
   }
   return P;
 }
@@ -328,7 +329,7 @@ bool Dynamics::loads(double t, const double* y, Loads& out, std::vector<ClosureE
   out.element.assign(columns_.size(), 0.0);
   for (std::size_t k = 0; k < scene_.elements.size(); ++k) {
     if (element_columns_[k].empty()) continue;
-    scene_.elements[k]->load_values(element_state(k, q, w, poses_, v_, model.base_velocity), values_.data());
+    scene_.elements[k]->load_values(element_state(k, q, w, poses_, v_, model.base_velocity, &sweep_), values_.data());
     for (std::size_t c = 0; c < element_columns_[k].size(); ++c) out.element[element_columns_[k][c]] += values_[c];
   }
   // The applied forces again (the force pass consumed them); with loops,
@@ -428,7 +429,7 @@ bool Dynamics::observe(double t, const double* y, Observation& out) {
   }
   for (std::size_t k = 0; k < scene_.elements.size(); ++k) {
     const ForceElement& e = *scene_.elements[k];
-    const double V = e.potential_energy(element_state(k, y + L.q(), w_.data(), out.poses, v_, model.base_velocity));
+    const double V = e.potential_energy(element_state(k, y + L.q(), w_.data(), out.poses, v_, model.base_velocity, &sweep_));
     switch (e.energy_store()) {
       case EnergyStore::springs:
         E.springs += V;

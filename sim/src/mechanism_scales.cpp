@@ -34,7 +34,7 @@ MechanismScales mechanism_scales(const Scene& scene, Sweep& sweep) {
   const std::vector<Vec6> no_velocities;
   for (const auto& e : scene.elements)
     e->add_joint_stiffness(ElementState{model, Positions(scene.q0.data()), Rates(scene.dq0.data()), no_poses,
-                                        no_velocities, Vec6::Zero(), true},
+                                        no_velocities, Vec6::Zero(), true, nullptr},
                            RatesOut(stiffness.data()), RatesOut(damping.data()));
   double rate = 0;
   for (int c = 0; c < model.nv; ++c) {

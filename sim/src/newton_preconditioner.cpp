@@ -42,7 +42,7 @@ void NewtonPreconditioner::setup(const double* y, const double* ydot, double gam
   const std::vector<Vec6> no_velocities;
   for (std::size_t k = 0; k < scene.elements.size(); ++k)
     scene.elements[k]->add_joint_stiffness(
-        dynamics_.element_state(k, q, w_.data(), no_poses, no_velocities, Vec6::Zero()), RatesOut(stiffness_.data()),
+        dynamics_.element_state(k, q, w_.data(), no_poses, no_velocities, Vec6::Zero(), nullptr), RatesOut(stiffness_.data()),
         RatesOut(damping_.data()));
   // A driven joint's row of the Newton matrix is the identity (its p is
   // not a state): nothing of its elements' enters.

@@ -38,7 +38,7 @@ Eigen::VectorXd Dynamics::element_generalized_forces(std::size_t k, const double
   for (Vec6& f : F_) f.setZero();
   Eigen::VectorXd Q = Eigen::VectorXd::Zero(model.nv);
   ElementForces out{RatesOut(Q.data()), F_};
-  scene_.elements[k]->add_forces(element_state(k, q, w, poses_, v_, model.base_velocity), out);
+  scene_.elements[k]->add_forces(element_state(k, q, w, poses_, v_, model.base_velocity, &sweep_), out);
   sweep_.generalized_forces(F_, Q_.data());
   for (int c = 0; c < model.nv; ++c) Q[c] += Q_[c];
   return Q;

@@ -91,7 +91,9 @@ class SceneReader : private input::YamlFields {
   // The joint a list entry names, for an element acting on it.
   int element_joint(const YAML::Node& entry, const SceneBuilder& b, const std::string& field) const;
 
-  YAML::Node sensors_;  // the file's sensors: those on a flexible body make its nodes
+  // The file: the sensors and the elements' points on a flexible body make
+  // its nodes.
+  YAML::Node root_;
 };
 
 template <class Read>
@@ -356,8 +358,8 @@ std::shared_ptr<const flexible::FlexibleBody> SceneReader::read_flexible(const Y
   // A point where something attaches: its projection on the axis at a mesh
   // node; a child's joint may stand off the axis (a rigid bracket), a
   // sensor sits on it.
-  const auto attach = [&](const YAML::Node& at_node, const std::string& at, const char* what, bool bracket) {
-    const Vec3 p = vec3(at_node, at);
+  const auto attach = [&](const Vec3& p, const YAML::Node& at_node, const std::string& at, const char* what,
+                          bool bracket) {
     const double x = along.dot(p - spec.root), node_x = h * std::round(x / h);
     const double off_axis = (p - spec.root - x * along).norm();
     if ((!bracket && off_axis > 1e-9 * L) || std::abs(x - node_x) > 1e-9 * L || x < -1e-9 * L || x > L * (1 + 1e-9))
@@ -369,17 +371,39 @@ std::shared_ptr<const flexible::FlexibleBody> SceneReader::read_flexible(const Y
                (bracket ? "" : ", on the axis"));
     spec.attachments.push_back(p);
   };
-  if (sensors_ && sensors_.IsSequence())
-    for (std::size_t k = 0; k < sensors_.size(); ++k)
-      if (sensors_[k].IsMap() && sensors_[k]["body"] && sensors_[k]["body"].IsScalar() &&
-          sensors_[k]["body"].Scalar() == name && sensors_[k]["point"])
-        attach(sensors_[k]["point"], input::index_field("sensors", k) + ".point", "sensor", false);
+  // An entry's point where its `body` key names this body; a missing point
+  // is the body's origin, the beam's root unless it was moved.
+  const auto attach_entries = [&](const char* list, const char* body, const char* point, const char* what,
+                                  bool bracket) {
+    const YAML::Node entries = root_[list];
+    if (!entries || !entries.IsSequence()) return;
+    for (std::size_t k = 0; k < entries.size(); ++k) {
+      const YAML::Node e = entries[k];
+      if (!e.IsMap() || !e[body] || !e[body].IsScalar() || e[body].Scalar() != name) continue;
+      const std::string at = input::index_field(list, k) + "." + point;
+      if (e[point]) attach(vec3(e[point], at), e[point], at, what, bracket);
+      else attach(Vec3::Zero(), e, at, what, bracket);
+    }
+  };
+  if (root_["sensors"] && root_["sensors"].IsSequence())
+    for (std::size_t k = 0; k < root_["sensors"].size(); ++k) {
+      const YAML::Node s = root_["sensors"][k];
+      if (s.IsMap() && s["body"] && s["body"].IsScalar() && s["body"].Scalar() == name && s["point"])
+        attach(vec3(s["point"], input::index_field("sensors", k) + ".point"), s["point"],
+               input::index_field("sensors", k) + ".point", "sensor", false);
+    }
+  attach_entries("point_springs", "body_a", "point_a", "point spring's end", true);
+  attach_entries("point_springs", "body_b", "point_b", "point spring's end", true);
+  attach_entries("bushings", "body_a", "point_a", "bushing's end", true);
+  attach_entries("bushings", "body_b", "point_b", "bushing's end", true);
+  attach_entries("applied_forces", "body", "point", "applied force's point", true);
   for (std::size_t c = 0; c < all.size(); ++c) {
     const YAML::Node child = all[c];
     if (!child.IsMap() || !child["parent"] || !child["parent"].IsScalar() || child["parent"].Scalar() != name ||
         !child["joint"] || !child["joint"].IsMap() || !child["joint"]["parent_point"])
       continue;
-    attach(child["joint"]["parent_point"], input::index_field("bodies", c) + ".joint.parent_point", "child", true);
+    const std::string at = input::index_field("bodies", c) + ".joint.parent_point";
+    attach(vec3(child["joint"]["parent_point"], at), child["joint"]["parent_point"], at, "child", true);
   }
   try {
     return std::make_shared<const flexible::FlexibleBody>(flexible::beam_body(spec));
@@ -834,7 +858,7 @@ SceneFile SceneReader::read(const std::string& text_in, const std::vector<Overri
   try {
     if (root["base"]) read_base(root["base"], b);
     if (root["gravity"]) b.gravity(vec3(root["gravity"], "gravity"));
-    sensors_.reset(root["sensors"]);
+    root_.reset(root);
     const YAML::Node bodies = require(root, "bodies", "");
     if (!bodies.IsSequence() || bodies.size() == 0) fail(bodies, "bodies", "expected a non-empty list of bodies");
     for (std::size_t i = 0; i < bodies.size(); ++i) read_body(bodies[i], static_cast<int>(i), bodies, b);

@@ -306,9 +306,8 @@ void place_sensors_on_nodes(Scene& scene) {
 
 // What flexible bodies (docs/FLEXIBLE.md) do not carry yet is refused
 // rather than computed wrong: their joints are hinges, slides or fixed,
-// not driven or compliant; loops, and elements that push on bodies
-// (gravity, applied forces, point springs, bushings) wait for the forces
-// at a flexible body's points.
+// not driven or compliant; and loops. Elements that push at a flexible
+// body's points check that each point is one of its nodes.
 void check_flexible(const Scene& scene) {
   const Model& m = scene.model;
   if (!m.has_flexible_bodies()) return;
@@ -321,10 +320,6 @@ void check_flexible(const Scene& scene) {
                                            "compliant nor driven (the others are not carried yet)");
   }
   if (!scene.loops.empty()) throw SceneInvalid("loops", "loops in a scene with flexible bodies are not carried yet");
-  for (std::size_t k = 0; k < scene.elements.size(); ++k)
-    if (scene.elements[k]->needs_poses())
-      throw SceneInvalid(element_field(scene, k), "elements that push on bodies (gravity, applied forces, point "
-                                                   "springs, bushings) are not carried with flexible bodies yet");
 }
 
 void validate(Scene& scene) {

@@ -1,5 +1,7 @@
 #include "unfurl/sim/elements/applied_force.hpp"
 
+#include "unfurl/sim/elements/point_frame.hpp"
+
 #include "unfurl/sim/scene.hpp"
 #include "unfurl/sim/scene_validation.hpp"
 
@@ -12,13 +14,19 @@ Vec6 wrench_at_origin(const Vec3& force, const Vec3& torque, const Vec3& point) 
   return F;
 }
 
+// On a flexible body the load acts at the node frame its point rides on,
+// and a body-frame load turns with it (a follower load on the material).
 void AppliedForce::add_forces(const ElementState& s, ElementForces& out) const {
   if (in_base_frame) {
-    const Mat3& R = s.poses[body].rotation;
-    out.F[body] += wrench_at_origin(R * force, R * torque, point);
-  } else {
-    out.F[body] += wrench_at_origin(force, torque, point);
+    const PointFrame at = point_frame(s, body, point);
+    const Mat3& R = at.pose.rotation;
+    add_frame_wrench(s, body, at.node, wrench_at_origin(R * force, R * torque, at.r), out);
+    return;
   }
+  const flexible::FlexibleBody* f = s.model.bodies[body].flexible.get();
+  const int node = f ? f->node_of(point) : -1;
+  add_frame_wrench(s, body, node, wrench_at_origin(force, torque, node < 0 ? point : Vec3(point - f->nodes[node].point)),
+                   out);
 }
 
 std::vector<ElementParameter> AppliedForce::parameters() const {
@@ -35,6 +43,7 @@ std::vector<ElementParameter> AppliedForce::parameters() const {
 
 void AppliedForce::validate(const Scene& scene, const std::string& field) const {
   if (body < 0 || body >= scene.model.size()) throw SceneInvalid(field + ".body", "the base cannot carry this");
+  node_of_point(scene, body, point, field + ".point");
   if (in_base_frame && scene.model.base_rotates())
     throw SceneInvalid(field + ".frame", "base-frame loads need a base that does not rotate");
 }

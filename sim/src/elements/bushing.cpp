@@ -1,5 +1,7 @@
 #include "unfurl/sim/elements/bushing.hpp"
 
+#include "unfurl/sim/elements/point_frame.hpp"
+
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <cstdio>
@@ -14,39 +16,13 @@ namespace {
 constexpr const char* kAxes[] = {"x", "y", "z"};
 constexpr double kLargestTilt = 80.0 * M_PI / 180.0;  // E is singular at 90 degrees
 
-// A body frame's pose and motion in the base frame (the base: fixed, moving
-// with v_base).
-struct FrameMotion {
-  Mat3 to_base = Mat3::Identity();  // body frame to base frame
-  Vec3 origin = Vec3::Zero(), origin_rate = Vec3::Zero(), omega = Vec3::Zero();
-};
-
-FrameMotion frame_motion(int body, const Vec3& r, const std::vector<Pose>& poses, const std::vector<Vec6>& v,
-                         const Vec6& v_base) {
-  FrameMotion m;
-  if (body == kBase) {
-    m.origin = r;
-    m.omega = v_base.tail<3>();
-    m.origin_rate = v_base.head<3>() + m.omega.cross(r);
-    return m;
-  }
-  const Pose& P = poses[body];
-  m.to_base = P.rotation.transpose();
-  m.origin = P.to_base(r);
-  m.omega = m.to_base * v[body].tail<3>();
-  m.origin_rate = m.to_base * (v[body].head<3>() + v[body].tail<3>().cross(r));
-  return m;
-}
-
-// Adds a force and a moment given in the base frame, acting at point r of
-// body i, to its wrench at its origin in its own frame.
-void add_wrench(int body, const Vec3& r, const Vec3& f_base, const Vec3& m_base, const std::vector<Pose>& poses,
-                std::vector<Vec6>& F) {
-  if (body == kBase) return;
-  const Mat3& R = poses[body].rotation;
-  const Vec3 f = R * f_base;
-  F[body].head<3>() += f;
-  F[body].tail<3>() += R * m_base + r.cross(f);
+// The point's velocity (base frame), in the bushing's own order of
+// operations (the axes formed, then applied), which keeps its outputs bit
+// for bit.
+Vec3 point_rate(const PointFrame& F) {
+  if (F.body == kBase) return F.velocity();
+  const Mat3 to_base = F.to_base();
+  return to_base * (F.v.head<3>() + F.v.tail<3>().cross(F.r));
 }
 
 bool symmetric(const Mat6& A) { return (A - A.transpose()).norm() <= 1e-12 * A.norm(); }
@@ -77,23 +53,24 @@ Mat3 bryant_rate_map(const Vec3& phi) {
   return E;
 }
 
-BushingDeflection Bushing::deflection(const std::vector<Pose>& poses, const std::vector<Vec6>& v,
-                                      const Vec6& v_base) const {
-  const FrameMotion A = frame_motion(a.body, a.point, poses, v, v_base);
-  const FrameMotion B = frame_motion(b.body, b.point, poses, v, v_base);
+BushingDeflection Bushing::deflection(const PointFrame& A, const PointFrame& B) const {
   BushingDeflection d;
-  d.frame_a = A.to_base * a.axes();
-  d.origin_a = A.origin;
-  d.origin_b = B.origin;
+  d.frame_a = A.to_base() * a.axes();
+  d.origin_a = A.position();
+  d.origin_b = B.position();
   const Mat3 Ra_T = d.frame_a.transpose();
-  const Vec3 delta = Ra_T * (B.origin - A.origin);
-  const Vec3 phi = bryant_angles(Ra_T * B.to_base * b.axes());
+  const Vec3 delta = Ra_T * (d.origin_b - d.origin_a);
+  const Vec3 phi = bryant_angles(Ra_T * B.to_base() * b.axes());
   d.E = bryant_rate_map(phi);
-  const Vec3 omega_a = Ra_T * A.omega;
+  const Vec3 omega_a = Ra_T * A.angular_velocity();
   d.x << delta, phi;
-  d.x_dot.head<3>() = Ra_T * (B.origin_rate - A.origin_rate) - omega_a.cross(delta);
-  d.x_dot.tail<3>() = d.E.inverse() * (Ra_T * B.omega - omega_a);
+  d.x_dot.head<3>() = Ra_T * (point_rate(B) - point_rate(A)) - omega_a.cross(delta);
+  d.x_dot.tail<3>() = d.E.inverse() * (Ra_T * B.angular_velocity() - omega_a);
   return d;
+}
+
+BushingDeflection Bushing::deflection(const ElementState& s) const {
+  return deflection(point_frame(s, a.body, a.point), point_frame(s, b.body, b.point));
 }
 
 Vec6 Bushing::wrench_on_b(const BushingDeflection& d) const {
@@ -104,22 +81,23 @@ Vec6 Bushing::wrench_on_b(const BushingDeflection& d) const {
 }
 
 void Bushing::add_forces(const ElementState& s, ElementForces& out) const {
-  const BushingDeflection d = deflection(s.poses, s.v, s.base_velocity);
+  const PointFrame A = point_frame(s, a.body, a.point), B = point_frame(s, b.body, b.point);
+  const BushingDeflection d = deflection(A, B);
   const Vec6 w = wrench_on_b(d);
   const Vec3 f_b = d.frame_a * w.head<3>(), m_b = d.frame_a * w.tail<3>();
-  add_wrench(b.body, b.point, f_b, m_b, s.poses, out.F);
+  add_point_wrench(s, B, f_b, m_b, out);
   // On a: the opposite force, and the opposite moment about b's origin
   // moved to a's: -m_b - (x_b - x_a) x f_b.
-  add_wrench(a.body, a.point, -f_b, -m_b - (d.origin_b - d.origin_a).cross(f_b), s.poses, out.F);
+  add_point_wrench(s, A, -f_b, -m_b - (d.origin_b - d.origin_a).cross(f_b), out);
 }
 
 double Bushing::potential_energy(const ElementState& s) const {
-  const Vec6 x = deflection(s.poses, s.v, s.base_velocity).x;
+  const Vec6 x = deflection(s).x;
   return 0.5 * x.dot(stiffness * x) - preload.dot(x);
 }
 
 double Bushing::dissipated_power(const ElementState& s) const {
-  const Vec6 x_dot = deflection(s.poses, s.v, s.base_velocity).x_dot;
+  const Vec6 x_dot = deflection(s).x_dot;
   return x_dot.dot(damping * x_dot);
 }
 
@@ -134,7 +112,7 @@ std::vector<LoadColumn> Bushing::load_columns(const Model&) const {
 }
 
 void Bushing::load_values(const ElementState& s, double* values) const {
-  const BushingDeflection d = deflection(s.poses, s.v, s.base_velocity);
+  const BushingDeflection d = deflection(s);
   const Vec6 w = wrench_on_b(d);
   for (int k = 0; k < 6; ++k) values[k] = w[k];
   values[6] = 0.5 * d.x.dot(stiffness * d.x) - preload.dot(d.x);
@@ -178,10 +156,20 @@ void Bushing::validate(const Scene& scene, const std::string& field) const {
   if (!damping.allFinite() || !symmetric(damping) || !positive_semidefinite(damping))
     throw SceneInvalid(field + ".damping", "must be symmetric and positive semidefinite (it may only dissipate)");
   if (!preload.allFinite()) throw SceneInvalid(field + ".preload", "must be finite");
+  node_of_point(scene, a.body, a.point, field + ".point_a");
+  node_of_point(scene, b.body, b.point, field + ".point_b");
+  // At the initial state, at rest; a flexible body's node frames
+  // undeformed (the body's own axes).
   std::vector<Pose> poses;
   body_poses(scene.model, scene.q0.data(), poses);
-  const std::vector<Vec6> v(scene.model.size(), Vec6::Zero());
-  const double tilt = deflection(poses, v, Vec6::Zero()).x[4];
+  const auto at_rest = [&](const BushingFrame& f) {
+    PointFrame at;
+    at.body = f.body;
+    if (f.body != kBase) at.pose = poses[f.body];
+    at.r = f.point;
+    return at;
+  };
+  const double tilt = deflection(at_rest(a), at_rest(b)).x[4];
   if (std::abs(tilt) > kLargestTilt) {
     char degrees[32];
     std::snprintf(degrees, sizeof degrees, "%.1f", tilt * 180 / M_PI);

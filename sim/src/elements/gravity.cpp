@@ -7,10 +7,24 @@
 
 namespace unfurl::sim {
 
+// A flexible body (docs/FLEXIBLE.md) feels gravity through its first
+// moment of mass S(eta) (inertia_invariants.hpp): the potential -m g . x -
+// (G g) . S(eta), whose gradients are the force m g at the frame, the
+// moment S(eta) x (G g) about it, and B(eta)^T (G g) on the elastic
+// coordinates, so the energy balance holds with the deformation.
 void Gravity::add_forces(const ElementState& s, ElementForces& out) const {
   for (int i = 0; i < s.model.size(); ++i) {
     const Body& b = s.model.bodies[i];
-    out.F[i] += wrench_at_origin(s.poses[i].rotation * (b.mass * g), Vec3::Zero(), b.com);
+    if (!b.flexible) {
+      out.F[i] += wrench_at_origin(s.poses[i].rotation * (b.mass * g), Vec3::Zero(), b.com);
+      continue;
+    }
+    const flexible::InertiaInvariants& invariants = b.flexible->inertia;
+    const Vec3 g_i = s.poses[i].rotation * g;
+    const double* eta = s.q.at(PositionIndex{s.model.first_elastic_position[i]});
+    out.F[i].head<3>() += invariants.mass() * g_i;
+    out.F[i].tail<3>() += invariants.first_moment(eta).cross(g_i);
+    invariants.add_field_force(eta, g_i, out.Q.at(VelocityIndex{s.model.first_elastic_velocity[i]}));
   }
 }
 
@@ -18,7 +32,13 @@ double Gravity::potential_energy(const ElementState& s) const {
   double V = 0;
   for (int i = 0; i < s.model.size(); ++i) {
     const Body& b = s.model.bodies[i];
-    V -= b.mass * g.dot(s.poses[i].to_base(b.com));
+    if (!b.flexible) {
+      V -= b.mass * g.dot(s.poses[i].to_base(b.com));
+      continue;
+    }
+    const flexible::InertiaInvariants& invariants = b.flexible->inertia;
+    const double* eta = s.q.at(PositionIndex{s.model.first_elastic_position[i]});
+    V -= invariants.mass() * g.dot(s.poses[i].position) + (s.poses[i].rotation * g).dot(invariants.first_moment(eta));
   }
   return V;
 }

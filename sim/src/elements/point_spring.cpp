@@ -1,67 +1,49 @@
 #include "unfurl/sim/elements/point_spring.hpp"
 
+#include "unfurl/sim/elements/point_frame.hpp"
+
 #include "unfurl/sim/scene.hpp"
 #include "unfurl/sim/scene_validation.hpp"
 
 namespace unfurl::sim {
 
-namespace {
 
-struct PointMotion {
-  Vec3 x, x_dot;  // base frame
-};
-
-PointMotion point_motion(int body, const Vec3& r, const std::vector<Pose>& poses, const std::vector<Vec6>& v,
-                         const Vec6& v_base) {
-  if (body == kBase) return {r, v_base.head<3>() + v_base.tail<3>().cross(r)};
-  const Pose& P = poses[body];
-  const Vec6& vi = v[body];
-  return {P.to_base(r), P.rotation.transpose() * (vi.head<3>() + vi.tail<3>().cross(r))};
-}
-
-void add_pull(int body, const Vec3& r, const Vec3& f_base, const std::vector<Pose>& poses, std::vector<Vec6>& F) {
-  if (body == kBase) return;
-  const Vec3 f = poses[body].rotation * f_base;
-  F[body].head<3>() += f;
-  F[body].tail<3>() += r.cross(f);
-}
-
-}  // namespace
-
-PointSpringGeometry PointSpring::geometry(const std::vector<Pose>& poses, const std::vector<Vec6>& v,
-                                          const Vec6& v_base) const {
-  const PointMotion a = point_motion(body_a, point_a, poses, v, v_base);
-  const PointMotion b = point_motion(body_b, point_b, poses, v, v_base);
+PointSpringGeometry PointSpring::geometry(const PointFrame& a, const PointFrame& b) const {
   PointSpringGeometry g;
-  g.a = a.x;
-  g.b = b.x;
-  const Vec3 d = b.x - a.x;
+  g.a = a.position();
+  g.b = b.position();
+  const Vec3 d = g.b - g.a;
   g.length = d.norm();
   if (g.length > 1e-12) g.direction = d / g.length;
-  g.rate = g.direction.dot(b.x_dot - a.x_dot);
+  g.rate = g.direction.dot(b.velocity() - a.velocity());
   return g;
 }
 
+PointSpringGeometry PointSpring::geometry(const ElementState& s) const {
+  return geometry(point_frame(s, body_a, point_a), point_frame(s, body_b, point_b));
+}
+
 void PointSpring::add_forces(const ElementState& s, ElementForces& out) const {
-  const PointSpringGeometry g = geometry(s.poses, s.v, s.base_velocity);
+  const PointFrame a = point_frame(s, body_a, point_a), b = point_frame(s, body_b, point_b);
+  const PointSpringGeometry g = geometry(a, b);
   const double T = tension(g.length, g.rate);
-  add_pull(body_a, point_a, T * g.direction, s.poses, out.F);
-  add_pull(body_b, point_b, -T * g.direction, s.poses, out.F);
+  add_point_force(s, a, T * g.direction, out);
+  add_point_force(s, b, -T * g.direction, out);
 }
 
 double PointSpring::potential_energy(const ElementState& s) const {
-  return energy(geometry(s.poses, s.v, s.base_velocity).length);
+  return energy(geometry(s).length);
 }
 
 double PointSpring::dissipated_power(const ElementState& s) const {
-  const PointSpringGeometry g = geometry(s.poses, s.v, s.base_velocity);
+  const PointSpringGeometry g = geometry(s);
   return (tension(g.length, g.rate) - elastic(g.length)) * g.rate;
 }
 
 std::vector<LoadColumn> PointSpring::load_columns(const Model&) const { return {{"tension." + name, "N", "", -1}}; }
 
 void PointSpring::load_values(const ElementState& s, double* values) const {
-  const PointSpringGeometry g = geometry(s.poses, s.v, s.base_velocity);
+  const PointSpringGeometry g = geometry(s);
   values[0] = tension(g.length, g.rate);
 }
 
@@ -88,6 +70,8 @@ void PointSpring::validate(const Scene& scene, const std::string& field) const {
   check_non_negative(stiffness, field + ".stiffness");
   check_non_negative(rest_length, field + ".rest_length");
   check_non_negative(damping, field + ".damping");
+  node_of_point(scene, body_a, point_a, field + ".point_a");
+  node_of_point(scene, body_b, point_b, field + ".point_b");
   std::vector<Pose> poses;
   body_poses(scene.model, scene.q0.data(), poses);
   const auto at = [&](int body, const Vec3& r) { return body == kBase ? r : poses[body].to_base(r); };

@@ -70,6 +70,20 @@ Eigen::VectorXd InertiaInvariants::kinetic_gradient(const Eigen::VectorXd& eta, 
   return g;
 }
 
+Vec3 InertiaInvariants::first_moment(const double* eta_data) const {
+  const Eigen::Map<const Eigen::VectorXd> eta(eta_data, m_);
+  Vec3 S = S0_ + S1_ * eta;
+  for (int k = 0; k < m_; ++k)
+    for (int l = 0; l < m_; ++l) S -= 0.5 * eta[k] * eta[l] * S2_[k * m_ + l];
+  return S;
+}
+
+void InertiaInvariants::add_field_force(const double* eta, const Vec3& f, double* Q_data) const {
+  Eigen::Map<Eigen::VectorXd> Q(Q_data, m_);
+  Q.noalias() += S1_.transpose() * f;
+  for (int k = 0; k < m_; ++k) Q.noalias() -= eta[k] * (E_[k].transpose() * f);
+}
+
 // B and C are built in M's blocks, so nothing is allocated.
 void InertiaInvariants::mass_matrix(const double* eta_data, Eigen::Ref<Eigen::MatrixXd> M) const {
   const Eigen::Map<const Eigen::VectorXd> eta(eta_data, m_);

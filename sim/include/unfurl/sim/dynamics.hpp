@@ -175,9 +175,10 @@ class Dynamics {
   double drive_power(double t, const double* y);
 
   // The element state at positions q and rates w, for element k (its
-  // discrete state). poses and v must be current where elements need them.
+  // discrete state). poses, v and the sweep's configuration must be
+  // current where elements need them.
   ElementState element_state(std::size_t k, const double* q, const double* w, const std::vector<Pose>& poses,
-                             const std::vector<Vec6>& v, const Vec6& v_base) const;
+                             const std::vector<Vec6>& v, const Vec6& v_base, const Sweep* sweep) const;
 
  private:
   // Computes the configuration at q unless it holds q's already; its key

@@ -22,13 +22,16 @@
 namespace unfurl::sim {
 
 struct Scene;
+class Sweep;
 
 // Where an element's stored energy is counted (EnergyParts).
 enum class EnergyStore { springs, latches, gravity };
 
 // What an element reads at one state. poses and v are filled only when some
 // element needs_poses(); v is then each body's velocity in its own frame,
-// and base_velocity the base's.
+// and base_velocity the base's. sweep, configured at q, carries the node
+// frames of flexible bodies (elements/point_frame.hpp); null where no
+// element reads them (the Newton preconditioner's stiffness estimate).
 struct ElementState {
   const Model& model;
   Positions q;  // positions
@@ -38,6 +41,7 @@ struct ElementState {
   Vec6 base_velocity = Vec6::Zero();
   // An event-driven element's discrete state: whether a latch has engaged.
   bool engaged = false;
+  const Sweep* sweep = nullptr;
 };
 
 // Where an element's forces go: generalized forces on the velocity

@@ -137,6 +137,12 @@ class Sweep {
   const Placement& node_placement(int i, int a) const { return flexible_[flex_[i]].nodes[a].placement(); }
   Vec6 node_frame_velocity(int i, int a, const std::vector<Vec6>& v, const double* w) const;
   Vec6 node_frame_acceleration(int i, int a, const std::vector<Vec6>& v, const double* w) const;
+  // A wrench at node a's frame (its axes, about its origin) as body i's
+  // extended force N_a^T f: the frame's wrench, then the elastic
+  // coordinates' forces (6 + m entries).
+  flexible::ExtendedVector node_force(int i, int a, const Vec6& f) const {
+    return flexible_[flex_[i]].N[a].transpose() * f;
+  }
   // The articulated inertia of joint i's coordinate r, (D_i^-1)_rr: the
   // inertia it moves against with every other joint free but the driven
   // ones (kg m^2 for a turn, kg for a slide); a driven joint's is A_i^T M*_i

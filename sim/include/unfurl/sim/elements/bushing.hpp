@@ -33,6 +33,8 @@
 
 namespace unfurl::sim {
 
+struct PointFrame;
+
 // A bushing's deflection and its rate at one state, and the frames it is
 // measured in.
 struct BushingDeflection {
@@ -62,7 +64,9 @@ class Bushing : public ForceElement {
   Mat6 damping = Mat6::Zero();
   Vec6 preload = Vec6::Zero();  // force (N) and moment (N m) on b at zero deflection, frame a
 
-  BushingDeflection deflection(const std::vector<Pose>& poses, const std::vector<Vec6>& v, const Vec6& v_base) const;
+  // Between its two frames at a state, or between two given point frames.
+  BushingDeflection deflection(const ElementState& s) const;
+  BushingDeflection deflection(const PointFrame& A, const PointFrame& B) const;
   // The wrench on b: force (frame a) and moment (frame a, about b's origin).
   Vec6 wrench_on_b(const BushingDeflection& d) const;
 

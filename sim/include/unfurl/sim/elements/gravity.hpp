@@ -1,5 +1,6 @@
 // Uniform gravity: m g on every body at its centre of mass, g given in the
-// base (inertial) frame, which must not rotate.
+// base (inertial) frame, which must not rotate; on a flexible body, on
+// every mass point of its deformed shape.
 #pragma once
 
 #include "unfurl/sim/force_element.hpp"
@@ -18,7 +19,7 @@ class Gravity : public ForceElement {
   void add_forces(const ElementState& s, ElementForces& out) const override;
   std::shared_ptr<ForceElement> scaled(double L, double M, const Model& model) const override;
   bool needs_poses() const override { return true; }
-  // -sum m_i g . r_c,i
+  // -sum m_i g . r_c,i (a flexible body's centre of mass deformed)
   double potential_energy(const ElementState& s) const override;
   EnergyStore energy_store() const override { return EnergyStore::gravity; }
   // A base that does not rotate (g is given in its frame).

@@ -9,6 +9,8 @@
 
 namespace unfurl::sim {
 
+struct PointFrame;
+
 // Where a point spring is: its length, its rate, and the unit vector from
 // a to b (zero at zero length, where the line has no direction), base frame.
 struct PointSpringGeometry {
@@ -39,9 +41,9 @@ class PointSpring : public ForceElement {
     const double T = elastic(L) + damping * L_dot;
     return tension_only && T < 0 ? 0.0 : T;
   }
-  // From body poses and body velocities (v = (v, w), body frames; v_base
-  // for the base).
-  PointSpringGeometry geometry(const std::vector<Pose>& poses, const std::vector<Vec6>& v, const Vec6& v_base) const;
+  // Between its two points at a state, or between two given frames.
+  PointSpringGeometry geometry(const ElementState& s) const;
+  PointSpringGeometry geometry(const PointFrame& a, const PointFrame& b) const;
 
   std::string kind() const override { return tension_only ? "cable" : "point spring"; }
   std::string list() const override { return "point_springs"; }

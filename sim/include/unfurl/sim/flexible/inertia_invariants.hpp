@@ -51,6 +51,13 @@ class InertiaInvariants {
   void mass_matrix(const double* eta, Eigen::Ref<Eigen::MatrixXd> M) const;
   void mass_matrix_rate(const double* eta, const double* eta_dot, Eigen::Ref<Eigen::MatrixXd> M) const;
   void kinetic_gradient(const double* eta, const double* V, Eigen::Ref<Eigen::VectorXd> g) const;
+  // S(eta): the first moment of mass about the frame's origin (frame
+  // axes), the deformed centre of mass times the mass.
+  Eigen::Vector3d first_moment(const double* eta) const;
+  // Adds B(eta)^T f to Q (m entries): what a uniform field of f per unit
+  // mass (gravity, frame axes) does on the elastic coordinates, d(f .
+  // S(eta))/d eta. Allocates nothing.
+  void add_field_force(const double* eta, const Eigen::Vector3d& f, double* Q) const;
 
  private:
   int m_ = 0;
