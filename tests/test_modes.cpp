@@ -190,6 +190,23 @@ TEST(Modes, FourBarsUnstableEquilibriumGrowsAtItsLinearizedRate) {
   EXPECT_NEAR(run.trajectory.samples.back().y[0] - r.q[0], predicted, 1e-2 * std::abs(predicted));
 }
 
+// The pendulum released at 2.5 rad is mid-swing when its run ends: Newton's
+// full step from there climbed to the inverted equilibrium; the settle goes
+// down to where it hangs, whose mode is the small swing's, omega^2 = m g d
+// / (I + m d^2).
+TEST(Modes, APendulumMidSwingSettlesWhereItHangs) {
+  const sim::Scene pendulum = sim::load_builtin_scene("pendulum");
+  const sim::RunResult run = sim::simulate(pendulum, pendulum.run);
+  ASSERT_EQ(run.status, sim::RunStatus::finished);
+  const sim::LinearizationState at = sim::state_of_run(pendulum, run.trajectory, pendulum.run.t_end);
+  const sim::ModesResult r = sim::linear_modes(pendulum, at.q, at.engaged);
+  ASSERT_EQ(r.modes.size(), 1u);
+  EXPECT_EQ(r.modes[0].kind, sim::ModeKind::elastic);
+  EXPECT_NEAR(std::remainder(r.q[0], 2 * M_PI), 0.0, 1e-9);
+  const double f = std::sqrt(9.81 * 1.0 / (0.004 + 1.0)) / (2 * M_PI);
+  EXPECT_NEAR(r.modes[0].frequency_hz, f, 1e-6 * f);
+}
+
 TEST(Modes, FreeFloatingBusHasSixRigidBodyModes) {
   const sim::Scene scene = sim::load_builtin_scene("zfold_free", {{"run.t_end", "12"}});
   const sim::RunResult run = sim::simulate(scene, scene.run);

@@ -23,6 +23,12 @@ constexpr double kStep = 1e-6;
 // Settled when the equilibrium is this near (rad, or over the length).
 constexpr double kSettled = 1e-11;
 constexpr int kMostSettleIterations = 30;
+// The largest settling step, in the state's own scale (a hinge's radians).
+// Within it the settle takes Newton's steps to the equilibrium nearby,
+// whatever its kind; from farther (a pendulum mid-swing) it goes downhill
+// by this much at a time, so that it neither jumps past the equilibrium
+// sought nor climbs to a potential's maximum.
+constexpr double kLargestSettleStep = 0.3;
 // A displaced state is put back on its loops to this gap (closure metric).
 constexpr double kClosed = 1e-13;
 constexpr int kMostClosingIterations = 20;
@@ -192,14 +198,17 @@ std::vector<ModeKind> mode_kinds(const Eigen::VectorXd& mu, bool free_floating) 
 }
 
 // The step to the static equilibrium, K dz = f0, along the modes with
-// stiffness (rigid-body and mechanism modes stay).
+// stiffness (rigid-body and mechanism modes stay). Along an unstable mode
+// Newton's step climbs towards the potential's maximum (an inverted
+// pendulum); `downhill`, it goes the other way by as much.
 Eigen::VectorXd equilibrium_step(const Linear& lin, const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>& eig,
-                                 const std::vector<ModeKind>& kind) {
+                                 const std::vector<ModeKind>& kind, bool downhill) {
   Eigen::VectorXd dz = Eigen::VectorXd::Zero(lin.T.cols());
   for (int i = 0; i < static_cast<int>(kind.size()); ++i) {
     if (kind[i] == ModeKind::rigid_body || kind[i] == ModeKind::mechanism) continue;
     const Eigen::VectorXd phi = eig.eigenvectors().col(i);
-    dz += phi * (phi.dot(lin.f0) / eig.eigenvalues()[i]);
+    const double mu = eig.eigenvalues()[i];
+    dz += phi * (phi.dot(lin.f0) / (downhill ? std::abs(mu) : mu));
   }
   return dz;
 }
@@ -296,10 +305,15 @@ ModesResult linear_modes(const Scene& scene, const std::vector<double>& q0, cons
   for (int iteration = 0;; ++iteration) {
     const Linear at = lin.linearize(q, false);
     const auto eig = stiffness_modes(at);
-    const Eigen::VectorXd dz = equilibrium_step(at, eig, mode_kinds(eig.eigenvalues(), model.free_floating()));
+    const std::vector<ModeKind> kinds = mode_kinds(eig.eigenvalues(), model.free_floating());
+    Eigen::VectorXd dz = equilibrium_step(at, eig, kinds, false);
     result.equilibrium_offset = lin.scaled_norm(at.T * dz);
     result.settle_iterations = iteration;
     if (!settings.settle || result.equilibrium_offset < kSettled || iteration == kMostSettleIterations) break;
+    if (result.equilibrium_offset > kLargestSettleStep) {
+      dz = equilibrium_step(at, eig, kinds, true);
+      dz *= kLargestSettleStep / lin.scaled_norm(at.T * dz);
+    }
     q = lin.closed(displaced_positions(model, q, at.T * dz));
   }
   const Linear at = lin.linearize(q, true);
