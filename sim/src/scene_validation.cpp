@@ -305,8 +305,8 @@ void place_sensors_on_nodes(Scene& scene) {
 }
 
 // What flexible bodies (docs/FLEXIBLE.md) do not carry yet is refused
-// rather than computed wrong: their joints are hinges, slides or fixed,
-// not driven or compliant; and loops. Elements that push at a flexible
+// rather than computed wrong: their joints are hinges, slides (driven or
+// not) or fixed, not compliant; and loops. Elements that push at a flexible
 // body's points check that each point is one of its nodes.
 void check_flexible(const Scene& scene) {
   const Model& m = scene.model;
@@ -315,9 +315,9 @@ void check_flexible(const Scene& scene) {
     if (!m.flexible(i)) continue;
     const Joint& j = m.joints[i];
     const std::string field = "bodies[" + std::to_string(i) + "] (" + m.bodies[i].name + ")";
-    if (!(j.has_free_coordinate() || j.type == JointType::fixed) || j.compliant || j.driven)
-      throw SceneInvalid(field + ".joint", "a flexible body's joint is a revolute, prismatic or fixed joint, neither "
-                                           "compliant nor driven (the others are not carried yet)");
+    if (!(j.has_free_coordinate() || j.type == JointType::fixed) || j.compliant)
+      throw SceneInvalid(field + ".joint", "a flexible body's joint is a revolute, prismatic or fixed joint, not "
+                                           "compliant (the others are not carried yet)");
   }
   if (!scene.loops.empty()) throw SceneInvalid("loops", "loops in a scene with flexible bodies are not carried yet");
 }
