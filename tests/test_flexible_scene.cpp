@@ -99,12 +99,15 @@ TEST(FlexibleScene, AChildOnTheTipRingsAtTheBoomsFrequency) {
 // A sensor at the boom's tip node reads what the tip body fixed there
 // reads, and its acceleration is its position's second derivative (by
 // central differences of 0.1 ms samples: the boom's stretch rings at
-// 800 Hz).
+// 800 Hz). One on a rigid bracket beside the tip node reads what the tip
+// body reads at the same point.
 TEST(FlexibleScene, ASensorOnTheBoomMovesWithItsBending) {
   const sim::SceneFile file = sim::read_scene_text(
       kTipMass + "sensors:\n"
                  "  - {name: boom_tip, body: boom, point: [2, 0, 0], frame: inertial, measure: [position, acceleration]}\n"
-                 "  - {name: mass, body: tip, point: [0, 0, 0], frame: inertial, measure: [position, acceleration]}\n",
+                 "  - {name: mass, body: tip, point: [0, 0, 0], frame: inertial, measure: [position, acceleration]}\n"
+                 "  - {name: bracket, body: boom, point: [2, 0.1, 0.05], frame: body, measure: [acceleration]}\n"
+                 "  - {name: mass_side, body: tip, point: [0, 0.1, 0.05], frame: body, measure: [acceleration]}\n",
       "tip mass with sensors", {{"run.sample", "1.0e-4"}, {"run.t_end", "0.5"}});
   const sim::RunResult run = sim::simulate(file.scene, file.scene.run);
   ASSERT_EQ(run.status, sim::RunStatus::finished) << sim::describe(run.failure);
@@ -115,6 +118,7 @@ TEST(FlexibleScene, ASensorOnTheBoomMovesWithItsBending) {
   ASSERT_GT(largest, 1.0);  // the boom swings the mass by metres per second squared
   for (std::size_t k = 1; k + 1 < s.size(); ++k) {
     for (int c = 0; c < 6; ++c) EXPECT_NEAR(s[k].loads.sensor[c], s[k].loads.sensor[6 + c], 1e-9 * largest);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(s[k].loads.sensor[12 + c], s[k].loads.sensor[15 + c], 1e-9 * largest);
     const double dt = s[k + 1].t - s[k].t;
     for (int c = 0; c < 3; ++c) {
       const double difference =

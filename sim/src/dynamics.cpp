@@ -377,9 +377,12 @@ bool Dynamics::loads(double t, const double* y, Loads& out, std::vector<ClosureE
     double* reading = out.sensor.data();
     for (const Sensor& s : scene_.sensors) {
       if (s.node >= 0) {
+        // On a flexible body: carried by its node's frame, a bracket's
+        // offset r turning with it.
         const Placement& X = sweep_.node_placement(s.body, s.node);
+        const Vec3 r = s.point - model.bodies[s.body].flexible->nodes[s.node].point;
         s.read_at(poses_[s.body].child(X), sweep_.node_frame_velocity(s.body, s.node, v_, w),
-                  sweep_.node_frame_acceleration(s.body, s.node, v_, w), Vec3::Zero(), X.rho, reading);
+                  sweep_.node_frame_acceleration(s.body, s.node, v_, w), r, X.rho + X.G.transpose() * r, reading);
       } else {
         s.read(poses_[s.body], v_[s.body], a_[s.body], reading);
       }

@@ -390,7 +390,7 @@ std::shared_ptr<const flexible::FlexibleBody> SceneReader::read_flexible(const Y
       const YAML::Node s = root_["sensors"][k];
       if (s.IsMap() && s["body"] && s["body"].IsScalar() && s["body"].Scalar() == name && s["point"])
         attach(vec3(s["point"], input::index_field("sensors", k) + ".point"), s["point"],
-               input::index_field("sensors", k) + ".point", "sensor", false);
+               input::index_field("sensors", k) + ".point", "sensor", true);
     }
   attach_entries("point_springs", "body_a", "point_a", "point spring's end", true);
   attach_entries("point_springs", "body_b", "point_b", "point spring's end", true);

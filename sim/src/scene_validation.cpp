@@ -287,20 +287,19 @@ std::vector<std::string> scene_warnings(const Scene& scene) {
   return out;
 }
 
-// A sensor on a flexible body sits at one of its nodes (the reader makes
-// each such point one): found here by its point.
+// A sensor on a flexible body rides on one of its nodes (the reader makes
+// each such point one), at it or on a rigid bracket beside it: found here
+// by its point.
 void place_sensors_on_nodes(Scene& scene) {
   for (std::size_t k = 0; k < scene.sensors.size(); ++k) {
     Sensor& s = scene.sensors[k];
     s.node = -1;
     if (s.body < 0 || s.body >= scene.model.size() || !scene.model.flexible(s.body)) continue;
-    const auto& nodes = scene.model.bodies[s.body].flexible->nodes;
-    const double length = scene.model.bodies[s.body].flexible->beam.section.length;
-    for (std::size_t a = 0; a < nodes.size() && s.node < 0; ++a)
-      if ((nodes[a].point - s.point).norm() <= 1e-9 * length) s.node = static_cast<int>(a);
+    s.node = scene.model.bodies[s.body].flexible->node_of(s.point);
     if (s.node < 0)
       throw SceneInvalid("sensors[" + std::to_string(k) + "].point",
-                         "a sensor on a flexible body sits at one of its nodes (a mesh node on the beam's axis)");
+                         "a sensor on a flexible body sits at one of its attachment points (a mesh node, or a rigid "
+                         "bracket beside one)");
   }
 }
 
