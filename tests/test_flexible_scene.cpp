@@ -228,7 +228,7 @@ bodies:
 drivers:
   - {joint: spin, profile: spin_up, amount: 6, duration: 15}
 )";
-  const std::vector<sim::Override> rk4 = {{"run.integrator", "rk4"}, {"run.dt", "0.001"}, {"run.t_end", "20"},
+  const std::vector<sim::Override> rk4 = {{"run.integrator", "rk4"}, {"run.dt", "0.001"}, {"run.t_end", "10"},
                                           {"run.sample", "0.01"}};
   const sim::Scene hub = sim::load_builtin_scene("spinup_beam", rk4);
   const sim::Scene own = sim::read_scene_text(direct, "spinup direct", rk4).scene;

@@ -333,8 +333,10 @@ int elastic_coordinates(flexible::BeamBodySpec spec) {
 }
 
 // A flexible body (docs/FLEXIBLE.md): its structure, the modes kept and
-// their damping. The points its children's joints hang on become the
-// reduction's interface nodes, so they must lie on mesh nodes.
+// their damping. The points its children's joints hang on, its sensors'
+// and the points where elements push on it become the reduction's
+// interface nodes, so they must lie at mesh nodes (or on brackets beside
+// them).
 std::shared_ptr<const flexible::FlexibleBody> SceneReader::read_flexible(const YAML::Node& node,
                                                                          const std::string& name,
                                                                          const YAML::Node& all,
@@ -356,54 +358,43 @@ std::shared_ptr<const flexible::FlexibleBody> SceneReader::read_flexible(const Y
   const double L = spec.section.length, h = L / spec.section.elements;
   const Vec3 along = Vec3::Unit(spec.axis);
   // A point where something attaches: its projection on the axis at a mesh
-  // node; a child's joint may stand off the axis (a rigid bracket), a
-  // sensor sits on it.
-  const auto attach = [&](const Vec3& p, const YAML::Node& at_node, const std::string& at, const char* what,
-                          bool bracket) {
+  // node, the point on the axis or on a rigid bracket beside it.
+  const auto attach = [&](const Vec3& p, const YAML::Node& at_node, const std::string& at, const char* what) {
     const double x = along.dot(p - spec.root), node_x = h * std::round(x / h);
-    const double off_axis = (p - spec.root - x * along).norm();
-    if ((!bracket && off_axis > 1e-9 * L) || std::abs(x - node_x) > 1e-9 * L || x < -1e-9 * L || x > L * (1 + 1e-9))
+    if (std::abs(x - node_x) > 1e-9 * L || x < -1e-9 * L || x > L * (1 + 1e-9))
       fail(at_node, at,
-           std::string("a ") + what + " of the flexible beam '" + name + "' sits at a mesh node" +
-               (bracket ? " (or on a rigid bracket beside one)" : "") +
-               ": its distance along the axis from the root a multiple of " +
-               format_number(h) + " m (length / elements) in [0, " + format_number(L) + "]" +
-               (bracket ? "" : ", on the axis"));
+           std::string("a ") + what + " of the flexible beam '" + name +
+               "' sits at a mesh node (or on a rigid bracket beside one): its distance along the axis from the root "
+               "a multiple of " +
+               format_number(h) + " m (length / elements) in [0, " + format_number(L) + "]");
     spec.attachments.push_back(p);
   };
-  // An entry's point where its `body` key names this body; a missing point
-  // is the body's origin, the beam's root unless it was moved.
-  const auto attach_entries = [&](const char* list, const char* body, const char* point, const char* what,
-                                  bool bracket) {
+  // Each entry of a list whose `body` key names this body, at its point; a
+  // missing point is the body's origin.
+  const auto attach_entries = [&](const char* list, const char* body, const char* point, const char* what) {
     const YAML::Node entries = root_[list];
     if (!entries || !entries.IsSequence()) return;
     for (std::size_t k = 0; k < entries.size(); ++k) {
       const YAML::Node e = entries[k];
       if (!e.IsMap() || !e[body] || !e[body].IsScalar() || e[body].Scalar() != name) continue;
       const std::string at = input::index_field(list, k) + "." + point;
-      if (e[point]) attach(vec3(e[point], at), e[point], at, what, bracket);
-      else attach(Vec3::Zero(), e, at, what, bracket);
+      if (e[point]) attach(vec3(e[point], at), e[point], at, what);
+      else attach(Vec3::Zero(), e, at, what);
     }
   };
-  if (root_["sensors"] && root_["sensors"].IsSequence())
-    for (std::size_t k = 0; k < root_["sensors"].size(); ++k) {
-      const YAML::Node s = root_["sensors"][k];
-      if (s.IsMap() && s["body"] && s["body"].IsScalar() && s["body"].Scalar() == name && s["point"])
-        attach(vec3(s["point"], input::index_field("sensors", k) + ".point"), s["point"],
-               input::index_field("sensors", k) + ".point", "sensor", true);
-    }
-  attach_entries("point_springs", "body_a", "point_a", "point spring's end", true);
-  attach_entries("point_springs", "body_b", "point_b", "point spring's end", true);
-  attach_entries("bushings", "body_a", "point_a", "bushing's end", true);
-  attach_entries("bushings", "body_b", "point_b", "bushing's end", true);
-  attach_entries("applied_forces", "body", "point", "applied force's point", true);
+  attach_entries("sensors", "body", "point", "sensor");
+  attach_entries("point_springs", "body_a", "point_a", "point spring's end");
+  attach_entries("point_springs", "body_b", "point_b", "point spring's end");
+  attach_entries("bushings", "body_a", "point_a", "bushing's end");
+  attach_entries("bushings", "body_b", "point_b", "bushing's end");
+  attach_entries("applied_forces", "body", "point", "applied force's point");
   for (std::size_t c = 0; c < all.size(); ++c) {
     const YAML::Node child = all[c];
     if (!child.IsMap() || !child["parent"] || !child["parent"].IsScalar() || child["parent"].Scalar() != name ||
         !child["joint"] || !child["joint"].IsMap() || !child["joint"]["parent_point"])
       continue;
     const std::string at = input::index_field("bodies", c) + ".joint.parent_point";
-    attach(vec3(child["joint"]["parent_point"], at), child["joint"]["parent_point"], at, "child", true);
+    attach(vec3(child["joint"]["parent_point"], at), child["joint"]["parent_point"], at, "child");
   }
   try {
     return std::make_shared<const flexible::FlexibleBody>(flexible::beam_body(spec));

@@ -116,7 +116,8 @@ std::string damping_text(const flexible::ModalDamping& d) {
 }
 
 // A flexible body's structure and modes, as the reader takes them (its
-// attachments follow from its children's joints).
+// attachments follow from its children's joints, its sensors and the
+// elements' points on it).
 void flexible_body(std::ostream& out, const flexible::BeamBodySpec& spec, const std::string& pad) {
   const flexible::BeamSection& s = spec.section;
   out << pad << "flexible:\n" << pad << "  beam: {length: " << format_number(s.length)

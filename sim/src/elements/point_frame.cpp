@@ -14,14 +14,16 @@ PointFrame point_frame(const ElementState& s, int body, const Vec3& point) {
     at.r = point;
     return at;
   }
-  if (!s.model.flexible(body)) {
+  // A flexible body's root is held to its frame: a point there rides on
+  // the frame, as on a rigid body.
+  at.node = s.model.flexible(body) ? s.model.bodies[body].flexible->node_of(point) : -1;
+  if (at.node < 0) {
     at.pose = s.poses[body];
     at.v = s.v[body];
     at.r = point;
     return at;
   }
   const flexible::FlexibleBody& f = *s.model.bodies[body].flexible;
-  at.node = f.node_of(point);
   at.pose = s.poses[body].child(s.sweep->node_placement(body, at.node));
   at.v = s.sweep->node_frame_velocity(body, at.node, s.v, s.w.data());
   at.r = point - f.nodes[at.node].point;
@@ -60,11 +62,13 @@ void add_point_wrench(const ElementState& s, const PointFrame& at, const Vec3& f
 
 int node_of_point(const Scene& scene, int body, const Vec3& point, const std::string& field) {
   if (body < 0 || body >= scene.model.size() || !scene.model.flexible(body)) return -1;
-  const int a = scene.model.bodies[body].flexible->node_of(point);
-  if (a < 0)
+  const flexible::FlexibleBody& f = *scene.model.bodies[body].flexible;
+  const int a = f.node_of(point);
+  if (a < 0 && (point - f.beam.root).norm() > 1e-9 * f.beam.section.length)
     throw SceneInvalid(field, "no node of the flexible body '" + scene.model.bodies[body].name +
-                                  "' is at this point (an element's point on a flexible body is one of its "
-                                  "attachment points: a mesh node, or a rigid bracket beside one)");
+                                  "' is at this point: an element's point on a flexible body is its root or one of "
+                                  "its attachment points (BeamBodySpec::attachments; a scene file's reader makes "
+                                  "every such point one)");
   return a;
 }
 

@@ -68,7 +68,9 @@ FlexibleBody beam_body(const BeamBodySpec& spec) {
   const ModalBody reduced = reduce(beam, {node_dofs(beam, 0), interface, spec.normal_modes});
   if (reduced.coordinates() > kMaxModes)
     throw std::invalid_argument("flexible beam: " + std::to_string(reduced.coordinates()) +
-                                " elastic coordinates, more than " + std::to_string(kMaxModes));
+                                " elastic coordinates, more than " + std::to_string(kMaxModes) +
+                                " (the normal modes, and six for each mesh node where a child's joint, a sensor or "
+                                "an element's point attaches)");
   FlexibleBody body{
       InertiaInvariants(placed(beam_mass_points(section), R, spec.root), reduced.shape,
                         spec.geometric_stiffening ? placed(beam_shortening(section, reduced.shape), R)

@@ -44,9 +44,10 @@ void add_point_force(const ElementState& s, const PointFrame& at, const Vec3& f_
 void add_point_wrench(const ElementState& s, const PointFrame& at, const Vec3& f_base, const Vec3& m_base,
                       ElementForces& out);
 
-// On a flexible body, the node `point` rides on (-1 on a rigid body or the
-// base). Throws SceneInvalid at `field` when a flexible body has no node
-// there (the scene reader makes one at every point an element names).
+// On a flexible body, the node `point` rides on (-1 on a rigid body, the
+// base, or a flexible body's root, which is held to its frame). Throws
+// SceneInvalid at `field` when a flexible body has no node there (the
+// scene reader makes one at every point an element names).
 int node_of_point(const Scene& scene, int body, const Vec3& point, const std::string& field);
 
 }  // namespace unfurl::sim
