@@ -68,7 +68,7 @@ struct Case {
 
 Case beam_case() {
   const Structure beam = beam_structure(yoke());
-  return {beam_mass_points(yoke()), reduce(beam, {node_dofs(beam, 0), node_dofs(beam, yoke().elements), 3})};
+  return {beam_mass_points(yoke()), reduce(beam, {node_dofs(beam, 0), node_dofs(beam, yoke().elements), 3, {}})};
 }
 
 // The points' exact positions with the foreshortening: the sum over them
@@ -168,7 +168,8 @@ TEST(InertiaInvariants, AtRestThePlatesInertiaAndUnitModalMasses) {
   const ModalBody body = reduce(plate, {{plate.dof(node(0, 0), plate_w), plate.dof(node(0, 3), plate_w),
                                          plate.dof(node(0, 0), plate_w_x)},
                                         {},
-                                        6});
+                                        6,
+                                        {}});
   const InertiaInvariants invariants(plate_mass_points(s), body.shape);
   const Eigen::MatrixXd M = invariants.mass_matrix(Eigen::VectorXd::Zero(6));
   const double m = s.mass_per_area * s.length_x * s.length_y, a = s.length_x, b = s.length_y;

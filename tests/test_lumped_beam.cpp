@@ -133,7 +133,7 @@ double modal_spin_up_largest_tip(int modes, bool stiffening) {
   std::vector<int> held = sim::flexible::node_dofs(beam, 0);
   for (int node = 1; node <= s.elements; ++node)
     for (int k : {0, 2, 3, 4}) held.push_back(beam.dof(node, k));
-  const sim::flexible::ModalBody body = sim::flexible::reduce(beam, {held, {}, modes});
+  const sim::flexible::ModalBody body = sim::flexible::reduce(beam, {held, {}, modes, {}});
   const Eigen::VectorXd c = body.coupling.row(5).transpose();
   const Eigen::MatrixXd K = (2 * M_PI * body.frequency_hz).array().square().matrix().asDiagonal();
   const Eigen::MatrixXd KG = body.shape.transpose() *
@@ -181,7 +181,7 @@ double invariant_spin_up_largest_tip(int modes, bool foreshortening) {
   std::vector<int> held = sim::flexible::node_dofs(beam, 0);
   for (int node = 1; node <= s.elements; ++node)
     for (int k : {0, 2, 3, 4}) held.push_back(beam.dof(node, k));
-  const sim::flexible::ModalBody body = sim::flexible::reduce(beam, {held, {}, modes});
+  const sim::flexible::ModalBody body = sim::flexible::reduce(beam, {held, {}, modes, {}});
   const sim::flexible::InertiaInvariants inertia(
       sim::flexible::beam_mass_points(s), body.shape,
       foreshortening ? sim::flexible::beam_shortening(s, body.shape) : std::vector<sim::flexible::Shortening>{});

@@ -102,9 +102,9 @@ TEST(UnitInvariance, ADrivenCrankInAnyUnits) {
 // repeatable (a mass changed by 1e-9 moves its angles by 6e-7 rad and its
 // steps by 12 %, units or not), here by 1.2e-8 rad; the units move them by
 // under 1e-8.
-TEST(UnitInvariance, FlexiblePanelsInAnyUnits) {
-  const sim::SceneFile zfold = sim::read_builtin_scene(
-      "zfold_flexible", {{"run.t_end", "3.2"}, {"run.rtol", "1e-10"}, {"run.atol", "1e-12"}});
+void expect_flexible_zfold_invariant(const std::string& name) {
+  const sim::SceneFile zfold =
+      sim::read_builtin_scene(name, {{"run.t_end", "3.2"}, {"run.rtol", "1e-10"}, {"run.atol", "1e-12"}});
   const sim::RunResult base = sim::simulate(zfold.scene, zfold.scene.run);
   ASSERT_EQ(base.status, sim::RunStatus::finished) << sim::describe(base.failure);
   ASSERT_EQ(base.trajectory.events.size(), 1u);
@@ -128,6 +128,12 @@ TEST(UnitInvariance, FlexiblePanelsInAnyUnits) {
     EXPECT_NEAR(run.stats.steps, base.stats.steps, 0.3 * base.stats.steps) << units;
   }
 }
+
+TEST(UnitInvariance, FlexiblePanelsInAnyUnits) { expect_flexible_zfold_invariant("zfold_flexible"); }
+
+// The same with plate panels (a plate's bending stiffness D scales as M
+// L^2, its mass per area as M / L^2).
+TEST(UnitInvariance, FlexiblePlatesInAnyUnits) { expect_flexible_zfold_invariant("zfold_plates"); }
 
 // Forces at a flexible body's points in other units: a flexible pendulum
 // swinging under gravity, pulled by a damped point spring and a bushing at

@@ -1,5 +1,6 @@
 #include "unfurl/io/mjcf_export.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -147,6 +148,17 @@ class Writer {
     out_ << pad << "</body>\n";
   }
 
+  // A lamina's principal moments meet the triangle inequality with
+  // equality (a flexible plate's, C = A + B), which MuJoCo checks
+  // literally: round-off below it is raised onto it, by the shortfall
+  // added to every moment (the products unchanged).
+  static sim::Mat3 within_triangle_inequality(const sim::Mat3& J) {
+    const Eigen::Vector3d moments = Eigen::SelfAdjointEigenSolver<sim::Mat3>(J, Eigen::EigenvaluesOnly).eigenvalues();
+    const double shortfall = moments[2] - moments[0] - moments[1];
+    if (shortfall <= 0) return J;
+    return J + 2 * shortfall * sim::Mat3::Identity();
+  }
+
   void inertial(int i, const std::string& pad) {
     const sim::Body& b = model_.bodies[i];
     MassProperties mp{b.mass, b.com, b.inertia_com};
@@ -157,7 +169,7 @@ class Writer {
                   P.rotation * (Q.position - P.position));
       out_ << pad << "<!-- with its image '" << model_.bodies[loop->second->image].name << "' merged back -->\n";
     }
-    const sim::Mat3& J = mp.inertia;
+    const sim::Mat3 J = within_triangle_inequality(mp.inertia);
     out_ << pad << "<inertial pos=\"" << vec(mp.com) << "\" mass=\"" << num(mp.mass) << "\" fullinertia=\""
          << num(J(0, 0)) << " " << num(J(1, 1)) << " " << num(J(2, 2)) << " " << num(J(0, 1)) << " " << num(J(0, 2))
          << " " << num(J(1, 2)) << "\"/>\n";

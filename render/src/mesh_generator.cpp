@@ -159,34 +159,44 @@ void panel(std::map<std::string, std::string>& files) {
                                      {"solar_cell", V3(0.06, 0.12, 0.38)}});
 }
 
-// A flexible panel's drawing: the panel in 48 rows along y, so that it
-// bends smoothly between its hinge lines (a rigid panel needs none).
+// A flexible panel's drawing: the panel in 48 rows along y and 12 columns
+// along x, so that it bends smoothly between its hinge lines and, as a
+// plate, across them (a rigid panel needs none).
 void flexible_panel(std::map<std::string, std::string>& files) {
   const double hx = 0.45, hy = 0.60, hz = 0.0125, margin = 0.02, gap = 0.006, lift = 0.0006;
-  const int nx = 6, ny = 8, rows_per_cell = 6, rows = ny * rows_per_cell;
+  const int nx = 6, ny = 8, rows_per_cell = 6, columns_per_cell = 2, rows = ny * rows_per_cell,
+            columns = nx * columns_per_cell;
   ObjBuilder b("flexible_panel");
   const auto row_y = [&](int r) { return -hy + 2 * hy * r / rows; };
+  const auto column_x = [&](int c) { return -hx + 2 * hx * c / columns; };
   b.material("panel_back");
   for (int r = 0; r < rows; ++r) {
     const double y0 = row_y(r), y1 = row_y(r + 1), top = hz - 1e-9;
-    b.polygon({{-hx, y0, -hz}, {-hx, y1, -hz}, {hx, y1, -hz}, {hx, y0, -hz}});       // -z
+    for (int c = 0; c < columns; ++c)
+      b.polygon({{column_x(c), y0, -hz}, {column_x(c), y1, -hz}, {column_x(c + 1), y1, -hz}, {column_x(c + 1), y0, -hz}});  // -z
     b.polygon({{hx, y0, -hz}, {hx, y1, -hz}, {hx, y1, top}, {hx, y0, top}});         // +x
     b.polygon({{-hx, y0, -hz}, {-hx, y0, top}, {-hx, y1, top}, {-hx, y1, -hz}});     // -x
   }
-  b.polygon({{-hx, hy, -hz}, {-hx, hy, hz}, {hx, hy, hz}, {hx, hy, -hz}});    // +y
-  b.polygon({{-hx, -hy, -hz}, {hx, -hy, -hz}, {hx, -hy, hz}, {-hx, -hy, hz}});  // -y
+  for (int c = 0; c < columns; ++c) {
+    const double x0 = column_x(c), x1 = column_x(c + 1);
+    b.polygon({{x0, hy, -hz}, {x0, hy, hz}, {x1, hy, hz}, {x1, hy, -hz}});    // +y
+    b.polygon({{x0, -hy, -hz}, {x1, -hy, -hz}, {x1, -hy, hz}, {x0, -hy, hz}});  // -y
+  }
   b.material("panel_substrate");
   for (int r = 0; r < rows; ++r)
-    b.polygon({{-hx, row_y(r), hz}, {hx, row_y(r), hz}, {hx, row_y(r + 1), hz}, {-hx, row_y(r + 1), hz}});
+    for (int c = 0; c < columns; ++c)
+      b.polygon({{column_x(c), row_y(r), hz}, {column_x(c + 1), row_y(r), hz}, {column_x(c + 1), row_y(r + 1), hz},
+                 {column_x(c), row_y(r + 1), hz}});
   b.material("solar_cell");
   const double cw = (2 * (hx - margin) - (nx - 1) * gap) / nx, ch = (2 * (hy - margin) - (ny - 1) * gap) / ny;
   for (int i = 0; i < nx; ++i)
     for (int j = 0; j < ny; ++j)
-      for (int r = 0; r < rows_per_cell; ++r) {
-        const double x0 = -hx + margin + i * (cw + gap), y0 = -hy + margin + j * (ch + gap) + r * ch / rows_per_cell;
-        const double y1 = y0 + ch / rows_per_cell;
-        b.polygon({{x0, y0, hz + lift}, {x0 + cw, y0, hz + lift}, {x0 + cw, y1, hz + lift}, {x0, y1, hz + lift}});
-      }
+      for (int r = 0; r < rows_per_cell; ++r)
+        for (int c = 0; c < columns_per_cell; ++c) {
+          const double x0 = -hx + margin + i * (cw + gap) + c * cw / columns_per_cell, x1 = x0 + cw / columns_per_cell;
+          const double y0 = -hy + margin + j * (ch + gap) + r * ch / rows_per_cell, y1 = y0 + ch / rows_per_cell;
+          b.polygon({{x0, y0, hz + lift}, {x1, y0, hz + lift}, {x1, y1, hz + lift}, {x0, y1, hz + lift}});
+        }
   files["flexible_panel.obj"] = b.obj();
   files["flexible_panel.mtl"] = mtl("flexible_panel", {{"panel_back", V3(0.86, 0.80, 0.62)},
                                                        {"panel_substrate", V3(0.78, 0.79, 0.82)},

@@ -19,14 +19,18 @@ layout(location = 1) in vec3 normal;
 uniform mat4 model;
 uniform mat4 view_projection;
 uniform mat3 normal_matrix;
-// A flexible beam's mesh bends: each vertex moves with the beam's section
-// at its station along the axis (bend_axis from bend_root, body frame): by
-// the section's displacement and its small rotation, interpolated between
-// stations bend_spacing apart.
+// A flexible body's mesh bends: each vertex moves with the section at its
+// station along the axis (bend_axis from bend_root, body frame), by its
+// displacement and small rotation interpolated between stations
+// bend_spacing apart; a plate's stations are a grid, bend_rows rows
+// bend_row_spacing apart along bend_across, interpolated in both.
 uniform int bend_count;
+uniform int bend_rows;
 uniform float bend_spacing;
+uniform float bend_row_spacing;
 uniform vec3 bend_root;
 uniform vec3 bend_axis;
+uniform vec3 bend_across;
 uniform mat4 body_from_mesh;
 uniform mat4 world_from_body;
 uniform vec3 bend[BEND_STATIONS];
@@ -41,9 +45,19 @@ void main() {
     float along = dot(b.xyz - bend_root, bend_axis);
     float s = clamp(along / bend_spacing, 0.0, float(bend_count - 1));
     int k = min(int(s), bend_count - 2);
-    vec3 turn = mix(bend_turn[k], bend_turn[k + 1], s - float(k));
-    vec3 arm = b.xyz - (bend_root + along * bend_axis);
-    b.xyz += mix(bend[k], bend[k + 1], s - float(k)) + cross(turn, arm);
+    float across = 0.0, t = 0.0;
+    int r = 0, r1 = 0;
+    if (bend_rows > 1) {
+      across = dot(b.xyz - bend_root, bend_across);
+      t = clamp(across / bend_row_spacing, 0.0, float(bend_rows - 1));
+      r = min(int(t), bend_rows - 2);
+      r1 = r + 1;
+    }
+    int a0 = r * bend_count + k, a1 = r1 * bend_count + k;
+    float f = s - float(k), g = t - float(r);
+    vec3 turn = mix(mix(bend_turn[a0], bend_turn[a0 + 1], f), mix(bend_turn[a1], bend_turn[a1 + 1], f), g);
+    vec3 arm = b.xyz - (bend_root + along * bend_axis + across * bend_across);
+    b.xyz += mix(mix(bend[a0], bend[a0 + 1], f), mix(bend[a1], bend[a1 + 1], f), g) + cross(turn, arm);
     p = world_from_body * b;
     mat3 turn_world = mat3(world_from_body);
     world_normal += turn_world * cross(turn, transpose(turn_world) * world_normal);
@@ -153,28 +167,73 @@ void SceneView::deform(const sim::Model& model, const double* q, double exaggera
   for (int i = 0; i < model.size(); ++i) {
     const auto& flexible = model.bodies[i].flexible;
     if (!flexible) continue;
-    const std::vector<sim::flexible::FlexibleNode>& nodes = flexible->mesh_nodes;
-    const Eigen::Map<const Eigen::VectorXd> eta(q + model.first_elastic_position[i], flexible->modes());
-    Bend& bend = bends_[i];
-    const double length = flexible->station(nodes.back().point);
-    bend.spacing = static_cast<float>(length / (kBendStations - 1));
-    bend.root = flexible->beam.root.cast<float>();
-    bend.axis = flexible->axis().cast<float>();
-    bend.displacement.resize(kBendStations);
-    bend.turn.resize(kBendStations);
-    // The mesh nodes' displacements and rotations, resampled at equal
-    // stations (linear between nodes).
-    std::size_t a = 0;
-    for (int k = 0; k < kBendStations; ++k) {
-      const double x = length * k / (kBendStations - 1);
-      while (a + 2 < nodes.size() && flexible->station(nodes[a + 1].point) < x) ++a;
-      const double x0 = flexible->station(nodes[a].point), x1 = flexible->station(nodes[a + 1].point);
-      const double f = std::clamp((x - x0) / (x1 - x0), 0.0, 1.0);
-      const Eigen::Matrix<double, 6, 1> u = (1 - f) * (nodes[a].shape * eta) + f * (nodes[a + 1].shape * eta);
-      bend.displacement[k] = (exaggeration * u.head<3>()).cast<float>();
-      bend.turn[k] = (exaggeration * u.tail<3>()).cast<float>();
-    }
+    const Eigen::VectorXd eta = Eigen::Map<const Eigen::VectorXd>(q + model.first_elastic_position[i], flexible->modes());
+    if (flexible->plate)
+      bend_plate(*flexible, eta, exaggeration, bends_[i]);
+    else
+      bend_beam(*flexible, eta, exaggeration, bends_[i]);
   }
+}
+
+void SceneView::bend_beam(const sim::flexible::FlexibleBody& flexible, const Eigen::VectorXd& eta, double exaggeration,
+                          Bend& bend) {
+  const std::vector<sim::flexible::FlexibleNode>& nodes = flexible.mesh_nodes;
+  const double length = flexible.station(nodes.back().point);
+  bend.count = kBendStations;
+  bend.rows = 1;
+  bend.spacing = static_cast<float>(length / (kBendStations - 1));
+  bend.root = flexible.beam.root.cast<float>();
+  bend.axis = flexible.axis().cast<float>();
+  bend.displacement.resize(kBendStations);
+  bend.turn.resize(kBendStations);
+  // The mesh nodes' displacements and rotations, resampled at equal
+  // stations (linear between nodes).
+  std::size_t a = 0;
+  for (int k = 0; k < kBendStations; ++k) {
+    const double x = length * k / (kBendStations - 1);
+    while (a + 2 < nodes.size() && flexible.station(nodes[a + 1].point) < x) ++a;
+    const double x0 = flexible.station(nodes[a].point), x1 = flexible.station(nodes[a + 1].point);
+    const double f = std::clamp((x - x0) / (x1 - x0), 0.0, 1.0);
+    const Eigen::Matrix<double, 6, 1> u = (1 - f) * (nodes[a].shape * eta) + f * (nodes[a + 1].shape * eta);
+    bend.displacement[k] = (exaggeration * u.head<3>()).cast<float>();
+    bend.turn[k] = (exaggeration * u.tail<3>()).cast<float>();
+  }
+}
+
+void SceneView::bend_plate(const sim::flexible::FlexibleBody& flexible, const Eigen::VectorXd& eta,
+                           double exaggeration, Bend& bend) {
+  static_assert(kPlateStations * kPlateStations <= kBendStations, "the plate's grid fits the shader's stations");
+  const sim::flexible::PlateBodySpec& spec = *flexible.plate;
+  const sim::flexible::PlateSpec& p = spec.plate;
+  const std::vector<sim::flexible::FlexibleNode>& nodes = flexible.mesh_nodes;
+  const int n = kPlateStations;
+  bend.count = bend.rows = n;
+  bend.spacing = static_cast<float>(p.length_x / (n - 1));
+  bend.row_spacing = static_cast<float>(p.length_y / (n - 1));
+  bend.root = spec.corner.cast<float>();
+  bend.axis = Eigen::Vector3f::Unit((spec.normal + 1) % 3);
+  bend.across = Eigen::Vector3f::Unit((spec.normal + 2) % 3);
+  bend.displacement.resize(n * n);
+  bend.turn.resize(n * n);
+  // The mesh nodes' motions, resampled on the grid (bilinear in each
+  // element).
+  const auto cell = [](double x, int elements, int& e) {
+    e = std::min(static_cast<int>(x * elements), elements - 1);
+    return x * elements - e;
+  };
+  for (int r = 0; r < n; ++r)
+    for (int k = 0; k < n; ++k) {
+      int ex = 0, ey = 0;
+      const double f = cell(static_cast<double>(k) / (n - 1), p.elements_x, ex);
+      const double g = cell(static_cast<double>(r) / (n - 1), p.elements_y, ey);
+      const auto u = [&](int i, int j) -> Eigen::Matrix<double, 6, 1> {
+        return nodes[(ex + i) + (ey + j) * (p.elements_x + 1)].shape * eta;
+      };
+      const Eigen::Matrix<double, 6, 1> w =
+          (1 - g) * ((1 - f) * u(0, 0) + f * u(1, 0)) + g * ((1 - f) * u(0, 1) + f * u(1, 1));
+      bend.displacement[r * n + k] = (exaggeration * w.head<3>()).cast<float>();
+      bend.turn[r * n + k] = (exaggeration * w.tail<3>()).cast<float>();
+    }
 }
 
 void SceneView::add_pins(const sim::Scene& scene, const sim::SceneVisuals& visuals, MeshLibrary& meshes) {
@@ -245,12 +304,16 @@ void SceneView::draw(const std::vector<sim::Pose>& poses, const Camera& camera, 
       glUniformMatrix4fv(shader_->uniform("body_from_mesh"), 1, GL_FALSE, item.local.matrix().data());
       glUniformMatrix4fv(shader_->uniform("world_from_body"), 1, GL_FALSE, body.matrix().data());
       glUniform1f(shader_->uniform("bend_spacing"), bend->spacing);
+      glUniform1f(shader_->uniform("bend_row_spacing"), bend->row_spacing);
+      glUniform1i(shader_->uniform("bend_rows"), bend->rows);
       glUniform3fv(shader_->uniform("bend_root"), 1, bend->root.data());
       glUniform3fv(shader_->uniform("bend_axis"), 1, bend->axis.data());
-      glUniform3fv(shader_->uniform("bend"), kBendStations, bend->displacement.front().data());
-      glUniform3fv(shader_->uniform("bend_turn"), kBendStations, bend->turn.front().data());
+      glUniform3fv(shader_->uniform("bend_across"), 1, bend->across.data());
+      const int stations = static_cast<int>(bend->displacement.size());
+      glUniform3fv(shader_->uniform("bend"), stations, bend->displacement.front().data());
+      glUniform3fv(shader_->uniform("bend_turn"), stations, bend->turn.front().data());
     }
-    glUniform1i(shader_->uniform("bend_count"), bend ? kBendStations : 0);
+    glUniform1i(shader_->uniform("bend_count"), bend ? bend->count : 0);
     draw_mesh(*item.mesh, placement(item, poses), nullptr);
   }
   glUniform1i(shader_->uniform("bend_count"), 0);

@@ -98,13 +98,13 @@ Body SceneBuilder::undeformed(Body body) {
 }
 
 // A child of a flexible body hangs on the node at its joint's point (the
-// frame itself where no node is there and the point is the frame's
-// origin).
+// frame itself where no node is there and the point rides on the frame:
+// the beam's root, the plate's held edge).
 int SceneBuilder::node_at(int k, const Vec3& point, const std::string& field) const {
   const auto& flexible = scene_.model.bodies[k].flexible;
   if (!flexible) return -1;
   if (const int a = flexible->node_of(point); a >= 0) return a;
-  if (point == flexible->beam.root) return -1;
+  if (flexible->on_frame(point)) return -1;
   throw SceneInvalid(field, "no node of the flexible body '" + scene_.model.bodies[k].name + "' is at this point");
 }
 

@@ -57,6 +57,7 @@ class SceneReader : private input::YamlFields {
   std::shared_ptr<const flexible::FlexibleBody> read_flexible(const YAML::Node& node, const std::string& name,
                                                               const YAML::Node& all, const std::string& field) const;
   flexible::BeamSection read_beam_section(const YAML::Node& node, const std::string& field) const;
+  flexible::PlateBodySpec read_plate(const YAML::Node& node, const std::string& field) const;
   flexible::ModalDamping read_modal_damping(const YAML::Node& node, const std::string& field) const;
   Joint read_joint(const YAML::Node& node, const std::string& field) const;
   std::shared_ptr<JointCompliance> read_compliance(const YAML::Node& node, int joint, const std::string& field) const;
@@ -320,54 +321,97 @@ void SceneReader::read_body(const YAML::Node& node, int index, const YAML::Node&
                               field + ".joint.compliance"));
 }
 
-// How many elastic coordinates a beam body has (-1 where it cannot be
-// made), its damping aside: a ratio list of the wrong length is the
-// damping field's fault, not the body's.
-int elastic_coordinates(flexible::BeamBodySpec spec) {
+// Where a point may not attach to a beam, said as the rest of an error
+// ("... sits at a mesh node ..."), or empty where it may.
+std::string beam_attachment_error(const flexible::BeamBodySpec& spec, const Vec3& p) {
+  const double L = spec.section.length, h = L / spec.section.elements;
+  const double x = Vec3::Unit(spec.axis).dot(p - spec.root), node_x = h * std::round(x / h);
+  if (std::abs(x - node_x) <= 1e-9 * L && x >= -1e-9 * L && x <= L * (1 + 1e-9)) return "";
+  return "at a mesh node (or on a rigid bracket beside one): its distance along the axis from the root a multiple of " +
+         format_number(h) + " m (length / elements) in [0, " + format_number(L) + "]";
+}
+
+std::string plate_attachment_error(const flexible::PlateBodySpec& spec, const Vec3& p) {
+  const flexible::PlateSpec& s = spec.plate;
+  const Vec3 u = flexible::plate_coordinates(spec, p);
+  const double tolerance = 1e-9 * std::max(s.length_x, s.length_y);
+  const double hx = s.length_x / s.elements_x, hy = s.length_y / s.elements_y;
+  const bool inside = u.x() >= -tolerance && u.x() <= s.length_x + tolerance && u.y() >= -tolerance &&
+                      u.y() <= s.length_y + tolerance;
+  const auto over = [&](flexible::PlateEdge e) {
+    return (e == flexible::PlateEdge::x0 && std::abs(u.x()) <= tolerance) ||
+           (e == flexible::PlateEdge::x1 && std::abs(u.x() - s.length_x) <= tolerance) ||
+           (e == flexible::PlateEdge::y0 && std::abs(u.y()) <= tolerance) ||
+           (e == flexible::PlateEdge::y1 && std::abs(u.y() - s.length_y) <= tolerance);
+  };
+  bool on_line = over(spec.root_edge);
+  for (flexible::PlateEdge e : spec.hinge_lines) on_line = on_line || over(e);
+  const bool at_node = std::abs(u.x() - hx * std::round(u.x() / hx)) <= tolerance &&
+                       std::abs(u.y() - hy * std::round(u.y() / hy)) <= tolerance;
+  if (inside && (on_line || at_node)) return "";
+  return "on the plate (its own x in [0, " + format_number(s.length_x) + "], y in [0, " + format_number(s.length_y) +
+         "] from its corner), on its root edge or a hinge line, or over a mesh node (x a multiple of " +
+         format_number(hx) + " m, y of " + format_number(hy) + " m), on the plate or on a rigid bracket off it";
+}
+
+// How many elastic coordinates a body has (-1 where it cannot be made),
+// its damping aside: a ratio list of the wrong length is the damping
+// field's fault, not the body's.
+template <class Spec, class Make>
+int elastic_coordinates(Spec spec, Make make) {
   spec.damping = flexible::ModalDamping::uniform(0);
   try {
-    return flexible::beam_body(spec).modes();
+    return make(spec).modes();
   } catch (const std::invalid_argument&) {
     return -1;
   }
 }
 
-// A flexible body (docs/FLEXIBLE.md): its structure, the modes kept and
-// their damping. The points its children's joints hang on, its sensors'
-// and the points where elements push on it become the reduction's
-// interface nodes, so they must lie at mesh nodes (or on brackets beside
-// them).
+// A flexible body (docs/FLEXIBLE.md): its structure (a beam or a plate),
+// the modes kept and their damping. The points its children's joints hang
+// on, its sensors' and the points where elements push on it become the
+// reduction's interface nodes, so they must lie at mesh nodes, on a
+// plate's hinge lines, or on brackets beside them.
 std::shared_ptr<const flexible::FlexibleBody> SceneReader::read_flexible(const YAML::Node& node,
                                                                          const std::string& name,
                                                                          const YAML::Node& all,
                                                                          const std::string& field) const {
-  check_keys(node, {"beam", "modes", "damping", "geometric_stiffening"}, field);
-  flexible::BeamBodySpec spec;
-  spec.section = read_beam_section(require(node, "beam", field), field + ".beam");
-  if (node["modes"]) spec.normal_modes = static_cast<int>(count(node["modes"], field + ".modes", 0, flexible::kMaxModes));
-  if (node["damping"]) spec.damping = read_modal_damping(node["damping"], field + ".damping");
-  if (node["geometric_stiffening"])
-    spec.geometric_stiffening = flag(node["geometric_stiffening"], field + ".geometric_stiffening");
-  const YAML::Node beam = node["beam"];
-  if (const YAML::Node root = beam["root"]) spec.root = vec3(root, field + ".beam.root");
-  if (const YAML::Node axis = beam["axis"]) {
-    const std::string a = text(axis, field + ".beam.axis");
-    if (a != "x" && a != "y" && a != "z") fail(axis, field + ".beam.axis", "expected x, y or z (the body axis the beam runs along)");
-    spec.axis = a[0] - 'x';
+  check_keys(node, {"beam", "plate", "modes", "damping", "geometric_stiffening"}, field);
+  if (node["beam"] && node["plate"]) fail(node["plate"], field + ".plate", "a flexible body is a beam or a plate, not both");
+  if (!node["beam"] && !node["plate"]) fail(node, field, "a flexible body is a `beam` or a `plate`");
+  const bool plate = static_cast<bool>(node["plate"]);
+  flexible::BeamBodySpec beam;
+  flexible::PlateBodySpec panel;
+  if (plate) {
+    panel = read_plate(node["plate"], field + ".plate");
+    if (node["geometric_stiffening"])
+      fail(node["geometric_stiffening"], field + ".geometric_stiffening",
+           "a plate carries no foreshortening (its stiffening by in-plane loads is a membrane effect, left out)");
+  } else {
+    beam.section = read_beam_section(node["beam"], field + ".beam");
+    if (node["geometric_stiffening"])
+      beam.geometric_stiffening = flag(node["geometric_stiffening"], field + ".geometric_stiffening");
+    const YAML::Node b = node["beam"];
+    if (const YAML::Node root = b["root"]) beam.root = vec3(root, field + ".beam.root");
+    if (const YAML::Node axis = b["axis"]) {
+      const std::string a = text(axis, field + ".beam.axis");
+      if (a != "x" && a != "y" && a != "z") fail(axis, field + ".beam.axis", "expected x, y or z (the body axis the beam runs along)");
+      beam.axis = a[0] - 'x';
+    }
   }
-  const double L = spec.section.length, h = L / spec.section.elements;
-  const Vec3 along = Vec3::Unit(spec.axis);
-  // A point where something attaches: its projection on the axis at a mesh
-  // node, the point on the axis or on a rigid bracket beside it.
+  int& normal_modes = plate ? panel.normal_modes : beam.normal_modes;
+  flexible::ModalDamping& damping = plate ? panel.damping : beam.damping;
+  std::vector<Vec3>& attachments = plate ? panel.attachments : beam.attachments;
+  if (node["modes"]) normal_modes = static_cast<int>(count(node["modes"], field + ".modes", 0, flexible::kMaxModes));
+  if (node["damping"]) damping = read_modal_damping(node["damping"], field + ".damping");
+  // A point where something attaches: at a mesh node (a beam's, on its
+  // axis; a plate's, or anywhere on a hinge line), on the body or on a
+  // rigid bracket beside it.
   const auto attach = [&](const Vec3& p, const YAML::Node& at_node, const std::string& at, const char* what) {
-    const double x = along.dot(p - spec.root), node_x = h * std::round(x / h);
-    if (std::abs(x - node_x) > 1e-9 * L || x < -1e-9 * L || x > L * (1 + 1e-9))
-      fail(at_node, at,
-           std::string("a ") + what + " of the flexible beam '" + name +
-               "' sits at a mesh node (or on a rigid bracket beside one): its distance along the axis from the root "
-               "a multiple of " +
-               format_number(h) + " m (length / elements) in [0, " + format_number(L) + "]");
-    spec.attachments.push_back(p);
+    const std::string where = plate ? plate_attachment_error(panel, p) : beam_attachment_error(beam, p);
+    if (!where.empty()) fail(at_node, at, std::string("a ") + what + " of the flexible " + (plate ? "plate" : "beam") +
+                                              " '" + name + "' sits " + where);
+    attachments.push_back(p);
   };
   // Each entry of a list whose `body` key names this body, at its point; a
   // missing point is the body's origin.
@@ -396,14 +440,82 @@ std::shared_ptr<const flexible::FlexibleBody> SceneReader::read_flexible(const Y
     const std::string at = input::index_field("bodies", c) + ".joint.parent_point";
     attach(vec3(child["joint"]["parent_point"], at), child["joint"]["parent_point"], at, "child");
   }
+  const auto make_beam = [](const flexible::BeamBodySpec& s) { return flexible::beam_body(s); };
+  const auto make_plate = [](const flexible::PlateBodySpec& s) { return flexible::plate_body(s); };
   try {
-    return std::make_shared<const flexible::FlexibleBody>(flexible::beam_body(spec));
+    return std::make_shared<const flexible::FlexibleBody>(plate ? make_plate(panel) : make_beam(beam));
   } catch (const std::invalid_argument& e) {
-    const std::size_t ratios = spec.damping.per_coordinate.size();
-    if (ratios > 0 && static_cast<int>(ratios) != elastic_coordinates(spec))
-      fail(node["damping"], field + ".damping", e.what());
+    const std::size_t ratios = damping.per_coordinate.size();
+    const int coordinates = plate ? elastic_coordinates(panel, make_plate) : elastic_coordinates(beam, make_beam);
+    if (ratios > 0 && static_cast<int>(ratios) != coordinates) fail(node["damping"], field + ".damping", e.what());
     fail(node, field, e.what());
   }
+}
+
+// A rectangular plate's properties and placement: its bending stiffness D
+// given, or Young's modulus and the thickness (D = E t^3 / (12 (1 -
+// nu^2))); its mass per area always given (a panel's carries cells, cover
+// glass and adhesive that add mass, not stiffness).
+flexible::PlateBodySpec SceneReader::read_plate(const YAML::Node& node, const std::string& field) const {
+  check_keys(node, {"size", "corner", "normal", "bending_stiffness", "youngs_modulus", "thickness", "poisson",
+                    "mass_per_area", "elements", "root_edge", "hinge_lines"},
+             field);
+  flexible::PlateBodySpec spec;
+  flexible::PlateSpec& p = spec.plate;
+  const YAML::Node size = require(node, "size", field);
+  const std::vector<double> ab = numbers(size, field + ".size");
+  if (ab.size() != 2 || !(ab[0] > 0) || !(ab[1] > 0))
+    fail(size, field + ".size", "expected two positive lengths, [along the plate's x, along its y]");
+  p.length_x = ab[0], p.length_y = ab[1];
+  p.poisson = number(require(node, "poisson", field), field + ".poisson");
+  if (!(p.poisson > -1 && p.poisson < 0.5)) fail(node["poisson"], field + ".poisson", "Poisson's ratio lies in (-1, 0.5)");
+  if (node["bending_stiffness"]) {
+    for (const char* key : {"youngs_modulus", "thickness"})
+      if (node[key])
+        fail(node[key], field + "." + key,
+             "give the bending stiffness or Young's modulus and the thickness, not both");
+    p.bending_stiffness = positive(node["bending_stiffness"], field + ".bending_stiffness");
+  } else {
+    if (!node["youngs_modulus"] || !node["thickness"])
+      fail(node, field, "expected bending_stiffness (D, N m), or youngs_modulus (Pa) and thickness (m)");
+    spec.youngs_modulus = positive(node["youngs_modulus"], field + ".youngs_modulus");
+    spec.thickness = positive(node["thickness"], field + ".thickness");
+    p.bending_stiffness = spec.youngs_modulus * std::pow(spec.thickness, 3) / (12 * (1 - p.poisson * p.poisson));
+  }
+  p.mass_per_area = positive(require(node, "mass_per_area", field), field + ".mass_per_area");
+  if (const YAML::Node elements = node["elements"]) {
+    if (!elements.IsSequence() || elements.size() != 2)
+      fail(elements, field + ".elements", "expected two counts, [along x, along y]");
+    p.elements_x = static_cast<int>(count(elements[0], field + ".elements[0]", 1, 24));
+    p.elements_y = static_cast<int>(count(elements[1], field + ".elements[1]", 1, 24));
+  }
+  spec.corner = vec3_or(node, "corner", Vec3::Zero(), field);
+  if (const YAML::Node normal = node["normal"]) {
+    const std::string a = text(normal, field + ".normal");
+    if (a != "x" && a != "y" && a != "z") fail(normal, field + ".normal", "expected x, y or z (the body axis normal to the plate)");
+    spec.normal = a[0] - 'x';
+  }
+  const auto edge = [&](const YAML::Node& e, const std::string& at) {
+    const std::string t = text(e, at);
+    if (t == "x0") return flexible::PlateEdge::x0;
+    if (t == "x1") return flexible::PlateEdge::x1;
+    if (t == "y0") return flexible::PlateEdge::y0;
+    if (t == "y1") return flexible::PlateEdge::y1;
+    fail(e, at, "expected an edge: x0, x1, y0 or y1 (the plate's own x = 0, x = its length, y = 0, y = its length)");
+  };
+  if (node["root_edge"]) spec.root_edge = edge(node["root_edge"], field + ".root_edge");
+  if (const YAML::Node lines = node["hinge_lines"]) {
+    if (!lines.IsSequence()) fail(lines, field + ".hinge_lines", "expected a list of edges, [x0, x1, y0, y1]");
+    for (std::size_t k = 0; k < lines.size(); ++k) {
+      const std::string at = input::index_field(field + ".hinge_lines", k);
+      const flexible::PlateEdge e = edge(lines[k], at);
+      if (e == spec.root_edge) fail(lines[k], at, "the root edge is held to the frame already");
+      for (flexible::PlateEdge seen : spec.hinge_lines)
+        if (seen == e) fail(lines[k], at, "this edge is listed twice");
+      spec.hinge_lines.push_back(e);
+    }
+  }
+  return spec;
 }
 
 // A flexible body's damping: one ratio for every coordinate, one each

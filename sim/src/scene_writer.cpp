@@ -134,6 +134,38 @@ void flexible_body(std::ostream& out, const flexible::BeamBodySpec& spec, const 
   if (!spec.geometric_stiffening) out << pad << "  geometric_stiffening: false\n";
 }
 
+const char* edge_name(flexible::PlateEdge e) {
+  switch (e) {
+    case flexible::PlateEdge::x0: return "x0";
+    case flexible::PlateEdge::x1: return "x1";
+    case flexible::PlateEdge::y0: return "y0";
+    case flexible::PlateEdge::y1: return "y1";
+  }
+  return "";
+}
+
+void flexible_body(std::ostream& out, const flexible::PlateBodySpec& spec, const std::string& pad) {
+  const flexible::PlateSpec& p = spec.plate;
+  out << pad << "flexible:\n" << pad << "  plate: {size: " << numbers({p.length_x, p.length_y});
+  if (spec.youngs_modulus > 0)
+    out << ", youngs_modulus: " << format_number(spec.youngs_modulus) << ", thickness: " << format_number(spec.thickness);
+  else
+    out << ", bending_stiffness: " << format_number(p.bending_stiffness);
+  out << ", poisson: " << format_number(p.poisson) << ", mass_per_area: " << format_number(p.mass_per_area)
+      << ", elements: [" << p.elements_x << ", " << p.elements_y << "]";
+  if (!spec.corner.isZero(0)) out << ", corner: " << numbers({spec.corner.x(), spec.corner.y(), spec.corner.z()});
+  if (spec.normal != 2) out << ", normal: " << static_cast<char>('x' + spec.normal);
+  out << ", root_edge: " << edge_name(spec.root_edge);
+  if (!spec.hinge_lines.empty()) {
+    out << ", hinge_lines: [";
+    for (std::size_t k = 0; k < spec.hinge_lines.size(); ++k) out << (k ? ", " : "") << edge_name(spec.hinge_lines[k]);
+    out << "]";
+  }
+  out << "}\n"
+      << pad << "  modes: " << spec.normal_modes << "\n"
+      << pad << "  damping: " << damping_text(spec.damping) << "\n";
+}
+
 std::string joint_text(const Joint& j, const JointCompliance* compliance) {
   std::string out = "{name: " + j.name + ", type: " + joint_type_name(j.type);
   const bool axial = j.type == JointType::revolute || j.type == JointType::prismatic || j.type == JointType::planar ||
@@ -303,7 +335,9 @@ std::string write_scene_text(const SceneFile& file, const std::string& comment) 
     const int k = m.parent[i];
     out << "  - name: " << m.bodies[i].name << "\n    parent: " << (k == kBase ? m.base_name : m.bodies[k].name)
         << "\n";
-    if (m.bodies[i].flexible)
+    if (m.bodies[i].flexible && m.bodies[i].flexible->plate)
+      flexible_body(out, *m.bodies[i].flexible->plate, "    ");
+    else if (m.bodies[i].flexible)
       flexible_body(out, m.bodies[i].flexible->beam, "    ");
     else
       mass_properties(out, m.bodies[i], "    ");

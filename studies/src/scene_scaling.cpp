@@ -19,7 +19,8 @@ sim::SceneFile scale_scene(const sim::SceneFile& file, double L, double M) {
     b.inertia_com *= M * L * L;
     if (b.flexible)
       b.flexible = std::make_shared<const sim::flexible::FlexibleBody>(
-          sim::flexible::beam_body(sim::flexible::scaled(b.flexible->beam, L, M)));
+          b.flexible->plate ? sim::flexible::plate_body(sim::flexible::scaled(*b.flexible->plate, L, M))
+                            : sim::flexible::beam_body(sim::flexible::scaled(b.flexible->beam, L, M)));
   }
   for (sim::Joint& j : model.joints) {
     j.parent_point *= L;

@@ -59,9 +59,9 @@ void Elasticity::load_values(const ElementState& s, double* values) const {
 }
 
 std::vector<ElementParameter> Elasticity::parameters() const {
-  const flexible::BeamBodySpec& spec = flexible_->beam;
+  const std::optional<flexible::PlateBodySpec>& plate = flexible_->plate;
   std::vector<ElementParameter> out;
-  const flexible::ModalDamping& d = spec.damping;
+  const flexible::ModalDamping& d = plate ? plate->damping : flexible_->beam.damping;
   if (d.is_uniform()) {
     out.push_back({"damping", "damping ratio", d.bands[0].ratio, 0.001, 0, 0.99,
                    "every elastic coordinate's modal damping ratio zeta"});
@@ -74,7 +74,19 @@ std::vector<ElementParameter> Elasticity::parameters() const {
                      "the modal damping ratio of the elastic coordinates in this band of frequencies"});
     }
   }
-  const flexible::BeamSection& s = spec.section;
+  if (plate) {
+    const flexible::PlateSpec& p = plate->plate;
+    if (plate->youngs_modulus > 0)
+      out.push_back({"plate.youngs_modulus", "E [Pa]", plate->youngs_modulus, 0.01 * plate->youngs_modulus, 0, 1e15,
+                     "the plate's Young's modulus (its thickness held)"});
+    else
+      out.push_back({"plate.bending_stiffness", "D [N m]", p.bending_stiffness, 0.01 * p.bending_stiffness, 0, 1e15,
+                     "the plate's bending stiffness E t^3 / (12 (1 - nu^2))"});
+    out.push_back({"plate.mass_per_area", "mass [kg/m^2]", p.mass_per_area, 0.01 * p.mass_per_area, 0, 1e9,
+                   "the plate's mass per area"});
+    return out;
+  }
+  const flexible::BeamSection& s = flexible_->beam.section;
   if (s.bending_stiffness_y == s.bending_stiffness_z)
     out.push_back({"beam.bending_stiffness", "EI [N m^2]", s.bending_stiffness_z, 0.01 * s.bending_stiffness_z, 0,
                    1e15, "the beam's bending stiffness in both planes"});

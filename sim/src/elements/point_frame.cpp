@@ -64,11 +64,11 @@ int node_of_point(const Scene& scene, int body, const Vec3& point, const std::st
   if (body < 0 || body >= scene.model.size() || !scene.model.flexible(body)) return -1;
   const flexible::FlexibleBody& f = *scene.model.bodies[body].flexible;
   const int a = f.node_of(point);
-  if (a < 0 && (point - f.beam.root).norm() > 1e-9 * f.beam.section.length)
+  if (a < 0 && !f.on_frame(point))
     throw SceneInvalid(field, "no node of the flexible body '" + scene.model.bodies[body].name +
-                                  "' is at this point: an element's point on a flexible body is its root or one of "
-                                  "its attachment points (BeamBodySpec::attachments; a scene file's reader makes "
-                                  "every such point one)");
+                                  "' is at this point: an element's point on a flexible body rides on its frame or "
+                                  "is one of its attachment points (BeamBodySpec::attachments, "
+                                  "PlateBodySpec::attachments; a scene file's reader makes every such point one)");
   return a;
 }
 

@@ -44,6 +44,62 @@ FlexibleNode placed(const Eigen::Vector3d& point, Eigen::MatrixXd shape, const E
   return {root + R * point, shape};
 }
 
+// Refuses more elastic coordinates than the sweep's fixed-size blocks hold.
+void check_coordinates(const ModalBody& reduced, const std::string& what, const std::string& per_attachment) {
+  if (reduced.coordinates() > kMaxModes)
+    throw std::invalid_argument(what + ": " + std::to_string(reduced.coordinates()) + " elastic coordinates, more than " +
+                                std::to_string(kMaxModes) + " (the normal modes, and " + per_attachment +
+                                " where a child's joint, a sensor or an element's point attaches)");
+}
+
+// Each coordinate's stiffness omega_k^2 and damping 2 zeta_k omega_k (unit
+// modal masses).
+void set_modal_terms(FlexibleBody& body, const ModalDamping& damping, const std::string& what) {
+  const Eigen::VectorXd omega = 2 * M_PI * body.frequency_hz;
+  body.stiffness = omega.array().square();
+  if (!damping.per_coordinate.empty() && static_cast<int>(damping.per_coordinate.size()) != body.modes())
+    throw std::invalid_argument(what + ": " + std::to_string(damping.per_coordinate.size()) +
+                                " damping ratios given, one for each of its " + std::to_string(body.modes()) +
+                                " elastic coordinates expected");
+  body.damping.resize(body.modes());
+  for (int k = 0; k < body.modes(); ++k) body.damping[k] = 2 * damping.ratio(k, body.frequency_hz[k]) * omega[k];
+}
+
+// The body frame's axes of the plate's own (x and y in its plane, z its
+// normal): the normal's next axes in cyclic order, then the normal.
+Eigen::Matrix3d body_from_plate(int normal) {
+  Eigen::Matrix3d R;
+  R << Eigen::Vector3d::Unit((normal + 1) % 3), Eigen::Vector3d::Unit((normal + 2) % 3), Eigen::Vector3d::Unit(normal);
+  return R;
+}
+
+// The mesh nodes along a plate's edge.
+std::vector<int> edge_nodes(const PlateSpec& p, PlateEdge edge) {
+  std::vector<int> nodes;
+  const bool along_x = edge == PlateEdge::y0 || edge == PlateEdge::y1;
+  const int n = along_x ? p.elements_x : p.elements_y;
+  for (int k = 0; k <= n; ++k) {
+    if (edge == PlateEdge::y0) nodes.push_back(k);
+    if (edge == PlateEdge::y1) nodes.push_back(k + p.elements_y * (p.elements_x + 1));
+    if (edge == PlateEdge::x0) nodes.push_back(k * (p.elements_x + 1));
+    if (edge == PlateEdge::x1) nodes.push_back(p.elements_x + k * (p.elements_x + 1));
+  }
+  return nodes;
+}
+
+// Whether plate coordinates u lie over the edge's line.
+bool over_edge(const PlateSpec& p, PlateEdge edge, const Eigen::Vector3d& u, double tolerance) {
+  switch (edge) {
+    case PlateEdge::x0: return std::abs(u.x()) <= tolerance;
+    case PlateEdge::x1: return std::abs(u.x() - p.length_x) <= tolerance;
+    case PlateEdge::y0: return std::abs(u.y()) <= tolerance;
+    case PlateEdge::y1: return std::abs(u.y() - p.length_y) <= tolerance;
+  }
+  return false;
+}
+
+double plate_size(const PlateSpec& p) { return std::max(p.length_x, p.length_y); }
+
 }  // namespace
 
 FlexibleBody beam_body(const BeamBodySpec& spec) {
@@ -65,29 +121,109 @@ FlexibleBody beam_body(const BeamBodySpec& spec) {
     if (!seen)
       for (int d : node_dofs(beam, node)) interface.push_back(d);
   }
-  const ModalBody reduced = reduce(beam, {node_dofs(beam, 0), interface, spec.normal_modes});
-  if (reduced.coordinates() > kMaxModes)
-    throw std::invalid_argument("flexible beam: " + std::to_string(reduced.coordinates()) +
-                                " elastic coordinates, more than " + std::to_string(kMaxModes) +
-                                " (the normal modes, and six for each mesh node where a child's joint, a sensor or "
-                                "an element's point attaches)");
+  ModalReduction reduction;
+  reduction.frame_dofs = node_dofs(beam, 0);
+  reduction.interface_dofs = interface;
+  reduction.normal_modes = spec.normal_modes;
+  const ModalBody reduced = reduce(beam, reduction);
+  check_coordinates(reduced, "flexible beam", "six for each mesh node");
   FlexibleBody body{
       InertiaInvariants(placed(beam_mass_points(section), R, spec.root), reduced.shape,
                         spec.geometric_stiffening ? placed(beam_shortening(section, reduced.shape), R)
                                                   : std::vector<Shortening>{}),
-      reduced.frequency_hz, {}, {}, {}, {}, spec};
-  const Eigen::VectorXd omega = 2 * M_PI * reduced.frequency_hz;
-  body.stiffness = omega.array().square();
-  if (!spec.damping.per_coordinate.empty() && static_cast<int>(spec.damping.per_coordinate.size()) != body.modes())
-    throw std::invalid_argument("flexible beam: " + std::to_string(spec.damping.per_coordinate.size()) +
-                                " damping ratios given, one for each of its " + std::to_string(body.modes()) +
-                                " elastic coordinates expected");
-  body.damping.resize(body.modes());
-  for (int k = 0; k < body.modes(); ++k) body.damping[k] = 2 * spec.damping.ratio(k, reduced.frequency_hz[k]) * omega[k];
+      reduced.frequency_hz, {}, {}, {}, {}, spec, {}};
+  set_modal_terms(body, spec.damping, "flexible beam");
   for (int node : nodes) body.nodes.push_back(placed(beam.nodes[node], reduced.node_shape(beam, node), R, spec.root));
   for (int node = 0; node < static_cast<int>(beam.nodes.size()); ++node)
     body.mesh_nodes.push_back(placed(beam.nodes[node], reduced.node_shape(beam, node), R, spec.root));
   return body;
+}
+
+Eigen::Vector3d plate_coordinates(const PlateBodySpec& spec, const Eigen::Vector3d& point) {
+  return body_from_plate(spec.normal).transpose() * (point - spec.corner);
+}
+
+FlexibleBody plate_body(const PlateBodySpec& spec) {
+  if (spec.normal < 0 || spec.normal > 2) throw std::invalid_argument("flexible plate: the normal is x, y or z");
+  const PlateSpec& p = spec.plate;
+  const Eigen::Matrix3d R = body_from_plate(spec.normal);
+  const Structure plate = plate_structure(p);
+  const double tolerance = 1e-9 * plate_size(p), hx = p.length_x / p.elements_x, hy = p.length_y / p.elements_y;
+  PlateEdges held_edges;
+  (spec.root_edge == PlateEdge::x0   ? held_edges.x0
+   : spec.root_edge == PlateEdge::x1 ? held_edges.x1
+   : spec.root_edge == PlateEdge::y0 ? held_edges.y0
+                                     : held_edges.y1) = EdgeSupport::clamped;
+  ModalReduction reduction;
+  reduction.frame_dofs = held_dofs(p, held_edges);
+  reduction.normal_modes = spec.normal_modes;
+  std::vector<PlateEdge> ties;
+  for (PlateEdge edge : spec.hinge_lines)
+    if (edge != spec.root_edge && std::find(ties.begin(), ties.end(), edge) == ties.end()) {
+      ties.push_back(edge);
+      reduction.tied_nodes.push_back(edge_nodes(p, edge));
+    }
+  // Each attachment: on the held edge (-1), on a tie (its index), or at a
+  // mesh node (ties.size() + the node).
+  struct Attachment {
+    int on;
+    Eigen::Vector3d at;  // plate coordinates, in its plane
+  };
+  std::vector<Attachment> attachments;
+  for (const Eigen::Vector3d& point : spec.attachments) {
+    const Eigen::Vector3d u = R.transpose() * (point - spec.corner);
+    if (u.x() < -tolerance || u.x() > p.length_x + tolerance || u.y() < -tolerance || u.y() > p.length_y + tolerance)
+      throw std::invalid_argument("flexible plate: an attachment point lies beyond the plate's edges");
+    const Eigen::Vector3d at(u.x(), u.y(), 0);
+    if (over_edge(p, spec.root_edge, u, tolerance)) {
+      attachments.push_back({-1, at});
+      continue;
+    }
+    const auto tie = std::find_if(ties.begin(), ties.end(), [&](PlateEdge e) { return over_edge(p, e, u, tolerance); });
+    if (tie != ties.end()) {
+      attachments.push_back({static_cast<int>(tie - ties.begin()), at});
+      continue;
+    }
+    const int i = static_cast<int>(std::lround(u.x() / hx)), j = static_cast<int>(std::lround(u.y() / hy));
+    if (std::abs(u.x() - i * hx) > tolerance || std::abs(u.y() - j * hy) > tolerance)
+      throw std::invalid_argument("flexible plate: an attachment point is neither on a hinge line nor over a mesh node");
+    const int node = i + j * (p.elements_x + 1);
+    attachments.push_back({static_cast<int>(ties.size()) + node, plate.nodes[node]});
+    if (std::find(reduction.interface_dofs.begin(), reduction.interface_dofs.end(), plate.dof(node, 0)) ==
+        reduction.interface_dofs.end())
+      for (int k = 0; k < plate.dofs_per_node; ++k) reduction.interface_dofs.push_back(plate.dof(node, k));
+  }
+  const ModalBody reduced = reduce(plate, reduction);
+  check_coordinates(reduced, "flexible plate", "three for each hinge line and four for each mesh node");
+  FlexibleBody body{InertiaInvariants(placed(plate_mass_points(p), R, spec.corner), reduced.shape),
+                    reduced.frequency_hz, {}, {}, {}, {}, {}, spec};
+  set_modal_terms(body, spec.damping, "flexible plate");
+  const int m = reduced.coordinates();
+  for (const Attachment& a : attachments) {
+    Eigen::MatrixXd shape = Eigen::MatrixXd::Zero(6, m);
+    if (a.on >= static_cast<int>(ties.size()))
+      shape = reduced.node_shape(plate, a.on - static_cast<int>(ties.size()));
+    else if (a.on >= 0)
+      shape = reduced.tie_shape(plate, reduction.tied_nodes[a.on], a.at);
+    body.nodes.push_back(placed(a.at, shape, R, spec.corner));
+  }
+  for (int node = 0; node < static_cast<int>(plate.nodes.size()); ++node)
+    body.mesh_nodes.push_back(placed(plate.nodes[node], reduced.node_shape(plate, node), R, spec.corner));
+  return body;
+}
+
+PlateBodySpec scaled(const PlateBodySpec& spec, double L, double M) {
+  PlateBodySpec out = spec;
+  PlateSpec& p = out.plate;
+  p.length_x *= L;
+  p.length_y *= L;
+  p.bending_stiffness *= M * L * L;  // a moment: a force by a length
+  p.mass_per_area *= M / (L * L);
+  out.youngs_modulus *= M / L;  // a force per area
+  out.thickness *= L;
+  out.corner *= L;
+  for (Eigen::Vector3d& a : out.attachments) a *= L;
+  return out;
 }
 
 BeamBodySpec scaled(const BeamBodySpec& spec, double L, double M) {
@@ -113,11 +249,19 @@ double ModalDamping::ratio(int k, double f_hz) const {
 }
 
 int FlexibleBody::node_of(const Eigen::Vector3d& point) const {
-  const double tolerance = 1e-9 * std::max(beam.section.length, point.norm());
-  for (std::size_t a = 0; a < beam.attachments.size(); ++a)
-    if ((beam.attachments[a] - point).norm() <= tolerance) return static_cast<int>(a);
+  const double tolerance = 1e-9 * std::max(size(), point.norm());
+  const std::vector<Eigen::Vector3d>& attachments = plate ? plate->attachments : beam.attachments;
+  for (std::size_t a = 0; a < attachments.size(); ++a)
+    if ((attachments[a] - point).norm() <= tolerance) return static_cast<int>(a);
   return -1;
 }
+
+bool FlexibleBody::on_frame(const Eigen::Vector3d& point) const {
+  if (plate) return over_edge(plate->plate, plate->root_edge, plate_coordinates(*plate, point), 1e-9 * size());
+  return (point - beam.root).norm() <= 1e-9 * size();
+}
+
+double FlexibleBody::size() const { return plate ? plate_size(plate->plate) : beam.section.length; }
 
 double FlexibleBody::largest_deflection(const double* eta) const {
   const Eigen::Map<const Eigen::VectorXd> e(eta, modes());

@@ -2,6 +2,7 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
+#include <Eigen/QR>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -35,12 +36,46 @@ Eigen::MatrixXd constraint_modes(const Structure& s, const std::vector<int>& int
   return psi;
 }
 
+// Every degree of freedom of the listed nodes.
+std::vector<int> dofs_of(const Structure& s, const std::vector<int>& nodes) {
+  std::vector<int> dofs;
+  for (int node : nodes)
+    for (int k = 0; k < s.dofs_per_node; ++k) dofs.push_back(s.dof(node, k));
+  return dofs;
+}
+
+// The rigid motions (columns of s.rigid) the structure models.
+std::vector<int> modelled_motions(const Structure& s) {
+  std::vector<int> motions;
+  for (int j = 0; j < 6; ++j)
+    if (s.rigid.col(j).squaredNorm() > 0) motions.push_back(j);
+  return motions;
+}
+
+// A tied set's constraint modes: for each rigid motion the structure
+// models, the static shape with the set moving by it, every other held
+// degree of freedom at 0 and the interior free of load.
+Eigen::MatrixXd tied_modes(const Structure& s, const std::vector<int>& tied, const std::vector<int>& interior) {
+  const std::vector<int> set = dofs_of(s, tied), motions = modelled_motions(s);
+  const Eigen::MatrixXd u_S = block(s.rigid, set, motions);
+  const Eigen::LDLT<Eigen::MatrixXd> K_II(block(s.K, interior, interior));
+  const Eigen::MatrixXd psi_I = K_II.solve(-block(s.K, interior, set) * u_S);
+  if (K_II.info() != Eigen::Success || !K_II.isPositive() || !psi_I.allFinite())
+    throw std::invalid_argument("flexible body: the frame's attachment leaves a rigid motion of the body free");
+  Eigen::MatrixXd psi = Eigen::MatrixXd::Zero(s.size(), motions.size());
+  for (size_t a = 0; a < set.size(); ++a) psi.row(set[a]) = u_S.row(a);
+  for (size_t a = 0; a < interior.size(); ++a) psi.row(interior[a]) = psi_I.row(a);
+  return psi;
+}
+
 }  // namespace
 
 ModalBody reduce(const Structure& s, const ModalReduction& reduction) {
   std::vector<char> role(s.size(), 0);  // 1 frame, 2 interface
   for (int d : reduction.frame_dofs) role.at(d) = 1;
   for (int d : reduction.interface_dofs) role.at(d) = 2;
+  for (const std::vector<int>& tied : reduction.tied_nodes)
+    for (int d : dofs_of(s, tied)) role.at(d) = 3;
   std::vector<int> held, interior;
   for (int d = 0; d < s.size(); ++d) (role[d] ? held : interior).push_back(d);
 
@@ -50,8 +85,17 @@ ModalBody reduce(const Structure& s, const ModalReduction& reduction) {
   if (fixed.frequency_hz.size() < reduction.normal_modes)
     throw std::invalid_argument("flexible body: " + std::to_string(reduction.normal_modes) + " modes asked, the mesh has " +
                                 std::to_string(fixed.frequency_hz.size()));
-  Eigen::MatrixXd T(s.size(), reduction.normal_modes + reduction.interface_dofs.size());
-  T << fixed.shape.leftCols(reduction.normal_modes), constraint_modes(s, reduction.interface_dofs, interior);
+  const int tied_columns = static_cast<int>(reduction.tied_nodes.size() * modelled_motions(s).size());
+  Eigen::MatrixXd T(s.size(), reduction.normal_modes + reduction.interface_dofs.size() + tied_columns);
+  T.leftCols(reduction.normal_modes) = fixed.shape.leftCols(reduction.normal_modes);
+  T.middleCols(reduction.normal_modes, reduction.interface_dofs.size()) =
+      constraint_modes(s, reduction.interface_dofs, interior);
+  int c = static_cast<int>(T.cols()) - tied_columns;
+  for (const std::vector<int>& tied : reduction.tied_nodes) {
+    const Eigen::MatrixXd psi = tied_modes(s, tied, interior);
+    T.middleCols(c, psi.cols()) = psi;
+    c += static_cast<int>(psi.cols());
+  }
 
   // Orthonormalized: the eigenvectors of the reduced pair, the frame held.
   const Eigen::MatrixXd M_T = s.M * T;
@@ -67,6 +111,25 @@ ModalBody reduce(const Structure& s, const ModalReduction& reduction) {
 
 Eigen::MatrixXd ModalBody::node_shape(const Structure& structure, int node) const {
   return structure.node_motion * shape.middleRows(structure.dof(node, 0), structure.dofs_per_node);
+}
+
+Eigen::MatrixXd ModalBody::tie_shape(const Structure& structure, const std::vector<int>& tied,
+                                     const Eigen::Vector3d& point) const {
+  const std::vector<int> set = dofs_of(structure, tied), motions = modelled_motions(structure);
+  std::vector<int> all(shape.cols());
+  for (int k = 0; k < coordinates(); ++k) all[k] = k;
+  // The set moves rigidly: its degrees of freedom are the rigid fields'
+  // combination c (exactly, so the least-squares fit is exact).
+  const Eigen::MatrixXd c_modelled =
+      block(structure.rigid, set, motions).colPivHouseholderQr().solve(block(shape, set, all));
+  Eigen::MatrixXd c = Eigen::MatrixXd::Zero(6, coordinates());
+  for (size_t j = 0; j < motions.size(); ++j) c.row(motions[j]) = c_modelled.row(j);
+  Eigen::MatrixXd out(6, coordinates());
+  for (int k = 0; k < coordinates(); ++k) {
+    const Eigen::Vector3d v = c.col(k).head<3>(), w = c.col(k).tail<3>();
+    out.col(k) << v + w.cross(point), w;
+  }
+  return out;
 }
 
 }  // namespace unfurl::sim::flexible

@@ -61,12 +61,22 @@ class SceneView {
   // taken from the shaft when the arrow is short.
   void draw_arrow(const LoadArrow& arrow) const;
 
+  // Stations `spacing` apart along `axis` from `root` (a beam's), in
+  // `rows` rows `row_spacing` apart along `across` (a plate's grid; one row
+  // for a beam), the first row first.
   struct Bend {
-    float spacing = 0;
-    Eigen::Vector3f root = Eigen::Vector3f::Zero(), axis = Eigen::Vector3f::UnitX();
+    int count = kBendStations, rows = 1;
+    float spacing = 0, row_spacing = 0;
+    Eigen::Vector3f root = Eigen::Vector3f::Zero(), axis = Eigen::Vector3f::UnitX(), across = Eigen::Vector3f::UnitY();
     std::vector<Eigen::Vector3f> displacement;  // body frame, per station; empty: rigid
     std::vector<Eigen::Vector3f> turn;          // small rotations, likewise
   };
+  // The plate's grid of stations: kPlateStations square.
+  static constexpr int kPlateStations = 8;
+  static void bend_beam(const sim::flexible::FlexibleBody& flexible, const Eigen::VectorXd& eta, double exaggeration,
+                        Bend& bend);
+  static void bend_plate(const sim::flexible::FlexibleBody& flexible, const Eigen::VectorXd& eta, double exaggeration,
+                         Bend& bend);
 
   std::vector<Item> items_;
   std::vector<Bend> bends_;  // per body

@@ -8,11 +8,13 @@
 
 #include <Eigen/Core>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "unfurl/sim/flexible/beam_structure.hpp"
 #include "unfurl/sim/flexible/inertia_invariants.hpp"
+#include "unfurl/sim/flexible/plate_structure.hpp"
 
 namespace unfurl::sim::flexible {
 
@@ -45,7 +47,10 @@ struct DampingBand {
 };
 
 struct ModalDamping {
-  std::vector<DampingBand> bands{{std::numeric_limits<double>::infinity(), kDefaultDampingRatio}};  // ascending
+  // Ascending. (Filled, not listed: GCC 12 misreads a copied initializer
+  // list here as maybe uninitialized.)
+  std::vector<DampingBand> bands =
+      std::vector<DampingBand>(1, DampingBand{std::numeric_limits<double>::infinity(), kDefaultDampingRatio});
   std::vector<double> per_coordinate;  // instead of the bands, when given
 
   static ModalDamping uniform(double zeta) { return {{{std::numeric_limits<double>::infinity(), zeta}}, {}}; }
@@ -79,6 +84,40 @@ struct BeamBodySpec {
   int axis = 0;
 };
 
+// A plate's edges: x = 0, x = length_x, y = 0, y = length_y (its own
+// axes, plate_structure.hpp).
+enum class PlateEdge { x0, x1, y0, y1 };
+
+// What a plate body was made from (a scene file's `flexible: {plate:
+// ...}`): a Kirchhoff plate (plate_structure.hpp says why) held along one
+// edge, its inboard hinge line, to its frame, with its other hinge lines
+// tied rigid in themselves.
+struct PlateBodySpec {
+  PlateSpec plate;
+  // Young's modulus and the thickness that gave the bending stiffness (D =
+  // E t^3 / (12 (1 - nu^2))) where the file gave them, else 0: kept so that
+  // the scene writes back as written and edits the parameter it has.
+  double youngs_modulus = 0, thickness = 0;
+  int normal_modes = 4;
+  ModalDamping damping;
+  // Body-frame points where children, sensors and elements attach: on a
+  // hinge line (anywhere along it, or on a rigid bracket beside it) or at
+  // a mesh node (or a bracket beside one), which becomes an interface node.
+  std::vector<Eigen::Vector3d> attachments;
+  // The plate's corner x = y = 0 in the body frame, and the body axis its
+  // normal runs along (0 x, 1 y, 2 z): its own x and y are the next two
+  // body axes in cyclic order.
+  Eigen::Vector3d corner = Eigen::Vector3d::Zero();
+  int normal = 2;
+  // The edge tied rigid to the frame (the frame's attachment: the inboard
+  // hinge line, as the rigid model's joint holds it), and edges tied rigid
+  // in themselves (outboard hinge lines: three constraint modes each,
+  // where a single node's own degrees of freedom would take four and a
+  // line of them dozens).
+  PlateEdge root_edge = PlateEdge::y0;
+  std::vector<PlateEdge> hinge_lines;
+};
+
 struct FlexibleNode {
   Eigen::Vector3d point;                         // body frame, undeformed
   Eigen::Matrix<double, 6, Eigen::Dynamic> shape;  // translation, then rotation, per unit eta
@@ -91,8 +130,12 @@ struct FlexibleBody {
   Eigen::VectorXd damping;       // 2 zeta_k omega_k
   std::vector<FlexibleNode> nodes;
   // Every node of the structure's mesh, for the drawing and the deflection.
+  // (a plate's, along its x first: (elements_x + 1) (elements_y + 1)).
   std::vector<FlexibleNode> mesh_nodes;
+  // What the body was made from: a beam, or where `plate` is set a plate
+  // (the beam's spec then unused).
   BeamBodySpec beam;
+  std::optional<PlateBodySpec> plate;
 
   // The body-frame direction of the beam's axis, and the distance along it
   // from the root of a body-frame point.
@@ -100,6 +143,11 @@ struct FlexibleBody {
   double station(const Eigen::Vector3d& p) const { return axis().dot(p - beam.root); }
   // The node attachment `point` hangs on, or -1.
   int node_of(const Eigen::Vector3d& point) const;
+  // Whether `point` moves rigidly with the frame: the beam's root, a point
+  // over the plate's held edge.
+  bool on_frame(const Eigen::Vector3d& point) const;
+  // The largest dimension: the scale of the body's points' tolerances.
+  double size() const;
 
   // The largest translation of a mesh node at deformation eta.
   double largest_deflection(const double* eta) const;
@@ -121,6 +169,21 @@ FlexibleBody beam_body(const BeamBodySpec& spec);
 // larger, time unchanged (studies::scale_scene): the frequencies and mode
 // shapes' forms stay, the elastic coordinates (m kg^0.5) grow by L sqrt(M).
 BeamBodySpec scaled(const BeamBodySpec& spec, double L, double M);
+// A plate held along spec.root_edge (the frame's attachment), its hinge
+// lines tied, every other attachment an interface node at the mesh node
+// under it; `normal_modes` fixed-interface modes and the ties' and nodes'
+// constraint modes, damped as spec.damping says. No foreshortening: a
+// plate's stiffening by in-plane inertia loads is a membrane effect,
+// negligible at deployment rates (mass_points.hpp). Throws
+// std::invalid_argument as beam_body does, and for a point neither on a
+// hinge line nor over a mesh node.
+FlexibleBody plate_body(const PlateBodySpec& spec);
+PlateBodySpec scaled(const PlateBodySpec& spec, double L, double M);
+
+// Where a body-frame point lies in a plate's own axes (x, y in its plane,
+// z off it).
+Eigen::Vector3d plate_coordinates(const PlateBodySpec& spec, const Eigen::Vector3d& point);
+
 inline FlexibleBody beam_body(const BeamSection& section, int normal_modes, double zeta,
                               const std::vector<Eigen::Vector3d>& attachments) {
   return beam_body(BeamBodySpec{section, normal_modes, ModalDamping::uniform(zeta), attachments});

@@ -29,13 +29,20 @@ struct ModalReduction {
   // attachment rigid, as an RBE2 would).
   std::vector<int> frame_dofs;
   std::vector<int> interface_dofs;  // the other attachment points', one constraint mode each
-  int normal_modes = 0;             // fixed-interface modes kept
+  int normal_modes = 0;              // fixed-interface modes kept
+  // Sets of nodes tied rigid to one another (an RBE2 spider: a hinge line
+  // along a panel's edge), each held in the fixed-interface modes and
+  // given one constraint mode per rigid motion the structure models (a
+  // plate's three out of its plane), so that a line of nodes costs three
+  // coordinates where the nodes' own degrees of freedom would cost dozens.
+  std::vector<std::vector<int>> tied_nodes;
 };
 
 struct ModalBody {
   // Over the structure's degrees of freedom, one column per elastic
-  // coordinate (normal_modes + interface_dofs.size() of them): Phi^T M Phi
-  // = I, Phi^T K Phi = diag((2 pi f)^2).
+  // coordinate (the normal modes, one per interface degree of freedom and
+  // one per tied set's modelled rigid motion): Phi^T M Phi = I, Phi^T K
+  // Phi = diag((2 pi f)^2).
   Eigen::MatrixXd shape;
   Eigen::VectorXd frequency_hz;  // ascending, the frame held
   // The inertia coupling of the frame's motion (linear part first) with
@@ -46,6 +53,10 @@ struct ModalBody {
   // A node's small translation and rotation per unit elastic coordinate:
   // 6 x coordinates().
   Eigen::MatrixXd node_shape(const Structure& structure, int node) const;
+  // The small translation (at `point`, the structure's frame) and rotation
+  // per unit elastic coordinate of a tied set of nodes, which moves
+  // rigidly: 6 x coordinates().
+  Eigen::MatrixXd tie_shape(const Structure& structure, const std::vector<int>& tied, const Eigen::Vector3d& point) const;
 };
 
 // Throws std::invalid_argument when the frame's degrees of freedom leave a
