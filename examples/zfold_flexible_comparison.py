@@ -33,8 +33,8 @@ out = sys.argv[1] if len(sys.argv) > 1 else "out/examples"
 os.makedirs(out, exist_ok=True)
 
 TIP = "[{name: tip, body: panel_A3, point: [0, 0.6, 0], frame: body, measure: [acceleration]}]"
-scenes = {"rigid": unfurl.load("zfold", set={"sensors": TIP}), "flexible beams": unfurl.load("zfold_flexible"),
-          "flexible plates": unfurl.load("zfold_plates")}
+scenes = {"rigid": unfurl.load("zfold", set={"sensors": TIP}), "flexible, as beams": unfurl.load("zfold_flexible"),
+          "flexible, as plates": unfurl.load("zfold_plates")}
 runs = {name: unfurl.simulate(scene, sample=1e-4) for name, scene in scenes.items()}
 CUTOFF_HZ = 200
 for name, run in runs.items():
@@ -102,7 +102,7 @@ for name, deployed, torque, tj, force, fj, (force_low, fj_low), g, g_low, f1, wa
 
 fig, axes = plt.subplots(2, 1, figsize=(9, 6.5))
 for name, run in runs.items():
-    axes[0].plot(run.t, tip_g(run, filtered=True), lw=0.8, label=f"{name} panels")
+    axes[0].plot(run.t, tip_g(run, filtered=True), lw=0.8, label=f"panels {name}")
 axes[0].set_xlim(0, 20)
 axes[0].set_ylabel(f"tip acceleration 0-{CUTOFF_HZ} Hz, g")
 axes[0].set_title("z-fold wing: the outer panel tip's acceleration, rigid and flexible panels (beams, plates)",
@@ -110,7 +110,7 @@ axes[0].set_title("z-fold wing: the outer panel tip's acceleration, rigid and fl
 axes[0].legend(fontsize=8)
 axes[0].grid(True, alpha=0.3)
 # The outer panel's latch-up (j4), close up: unfiltered (0.1 ms samples) and filtered.
-t_latch = runs["flexible beams"].summary["latch_time"]["j4"]
+t_latch = runs["flexible, as beams"].summary["latch_time"]["j4"]
 for name, run in runs.items():
     line, = axes[1].plot(run.t, tip_g(run), lw=0.5, alpha=0.6, label=f"{name}, every 0.1 ms")
     axes[1].plot(run.t, tip_g(run, filtered=True), lw=1.4, color=line.get_color(), label=f"{name}, 0-{CUTOFF_HZ} Hz")
