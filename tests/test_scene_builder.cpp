@@ -112,6 +112,20 @@ TEST(SceneWriter, EveryBuiltInSceneReadsBackToTheSameRun) {
   }
 }
 
+// A scene built in code may come without its drawing (no visuals at all):
+// it writes without meshes and reads back to the same mechanism.
+TEST(SceneWriter, ASceneWithoutVisualsWritesWithoutMeshes) {
+  for (const char* name : {"pantograph", "pantograph_free"}) {
+    const sim::SceneFile drawn = sim::read_builtin_scene(name);
+    const sim::SceneFile bare{drawn.scene, {}};
+    const std::string text = sim::write_scene_text(bare);
+    EXPECT_EQ(text.find("mesh:"), std::string::npos) << name;
+    const sim::SceneFile back = sim::read_scene_text(text, std::string("bare:") + name);
+    EXPECT_EQ(back.scene.model.size(), drawn.scene.model.size()) << name;
+    EXPECT_EQ(back.scene.q0, drawn.scene.q0) << name;
+  }
+}
+
 TEST(SceneWriter, OverridesGoThroughTheText) {
   const sim::SceneFile file = studies::generate_zfold(2);
   const sim::SceneFile changed = sim::apply_overrides(file, {{"springs.j1.stiffness", "0.2"}});

@@ -163,8 +163,11 @@ void print_summary(const sim::Scene& scene, const sim::RunResult& result, const 
   std::printf("\nrun          0 .. %g s %s in %.3f s wall (%.1fx real time)\n", s.t_reached,
               sim::run_status_name(result.status), result.wall_time_s,
               result.wall_time_s > 0 ? s.t_reached / result.wall_time_s : 0.0);
-  std::printf("work         %ld steps, %ld right-hand sides, %ld Jacobians, min step %.3g s\n", result.stats.steps,
-              result.rhs_calls, result.stats.jacobian_evals, result.stats.min_step);
+  // A run that took no step (it failed at its start) has no smallest one.
+  char min_step[32] = "none";
+  if (std::isfinite(result.stats.min_step)) std::snprintf(min_step, sizeof min_step, "%.3g s", result.stats.min_step);
+  std::printf("work         %ld steps, %ld right-hand sides, %ld Jacobians, min step %s\n", result.stats.steps,
+              result.rhs_calls, result.stats.jacobian_evals, min_step);
   if (result.jacobian_product_evals > 0)
     std::printf("             %ld evaluations for Jacobian products (gains held, cheaper)\n",
                 result.jacobian_product_evals);

@@ -310,6 +310,13 @@ void run(std::ostream& out, const RunSettings& r) {
 
 }  // namespace
 
+// Body i's drawing: none where the scene was built in code without
+// visuals (SceneVisuals empty, or shorter than the model).
+const Visual& body_visual(const SceneFile& file, int i) {
+  static const Visual none;
+  return i < static_cast<int>(file.visuals.bodies.size()) ? file.visuals.bodies[i] : none;
+}
+
 std::string write_scene_text(const SceneFile& file, const std::string& comment) {
   const Scene& scene = file.scene;
   const Model& m = scene.model;
@@ -320,7 +327,7 @@ std::string write_scene_text(const SceneFile& file, const std::string& comment) 
   if (!scene.description.empty()) out << "description: " << quoted(scene.description) << "\n";
   const bool bus = m.free_floating();
   out << "\nbase:\n  name: " << (bus ? m.bodies[0].name : m.base_name) << "\n";
-  const Visual& base_visual = bus ? file.visuals.bodies[0] : file.visuals.base;
+  const Visual& base_visual = bus ? body_visual(file, 0) : file.visuals.base;
   if (!base_visual.mesh.empty()) out << "  mesh: " << visual(base_visual) << "\n";
   collision(out, base_visual, "  ");
   if (!m.base_velocity.isZero(0))
@@ -341,8 +348,8 @@ std::string write_scene_text(const SceneFile& file, const std::string& comment) 
       flexible_body(out, m.bodies[i].flexible->beam, "    ");
     else
       mass_properties(out, m.bodies[i], "    ");
-    if (!file.visuals.bodies[i].mesh.empty()) out << "    mesh: " << visual(file.visuals.bodies[i]) << "\n";
-    collision(out, file.visuals.bodies[i], "    ");
+    if (!body_visual(file, i).mesh.empty()) out << "    mesh: " << visual(body_visual(file, i)) << "\n";
+    collision(out, body_visual(file, i), "    ");
     out << "    joint: " << joint_text(m.joints[i], compliance_of(scene, i)) << "\n";
   }
   elements(out, scene);
