@@ -147,6 +147,33 @@ TEST(Gui, ScriptedSessionPlaysScrubsChangesAPreloadAndReruns) {
   std::printf("%s\n", report.c_str());
 }
 
+// A flexible plate's parameters edit and re-run like any other: the plate
+// z-fold with its first panel four times softer latches otherwise, and its
+// panels are drawn bending (the exaggeration slider's value).
+TEST(Gui, APlatesBendingStiffnessEditsAndReruns) {
+  if (!io::on_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed";
+  const Scratch scratch("unfurl_gui_plates");
+  const fs::path& dir = scratch.path;
+  std::ofstream(dir / "session.txt") << "wait_run\n"
+                                        "exaggerate 30\n"
+                                        "set bodies.panel_A1.flexible.plate.bending_stiffness 1858.75\n"
+                                        "wait_run\n"
+                                        "scrub 8.43\n"
+                                        "wait 0.3\n"
+                                        "screenshot " << (dir / "bent.png").string() << "\n"
+                                        "report " << (dir / "report.json").string() << "\n"
+                                        "quit\n";
+  ASSERT_EQ(gui_session_failure(dir, "zfold_plates"), "");
+  const std::string report = slurp(dir / "report.json");
+  EXPECT_NE(report.find("bodies.panel_A1.flexible.plate.bending_stiffness=1858.75"), std::string::npos) << report;
+  const double before = latch_time(report, "previous", "j2"), after = latch_time(report, "current", "j2");
+  ASSERT_FALSE(std::isnan(before)) << report;
+  ASSERT_FALSE(std::isnan(after)) << report;
+  EXPECT_GT(std::abs(after - before), 1e-4) << report;
+  const render::Image shot = test::read_png((dir / "bent.png").string());
+  EXPECT_GT(cell_pixels(shot, 0, 60, shot.width * 6 / 10, shot.height / 2), 2000);
+}
+
 // Opening another scene while a run of the first is still going: the old
 // run is neither drawn with the new scene's indices nor kept as its ghost
 // (it crashed the loop-gap and energy plots).

@@ -152,5 +152,16 @@ TEST(ModalBody, AFrameThatLeavesARigidMotionFreeIsRefused) {
   EXPECT_THROW(reduce(beam, {node_dofs(beam, 0), {}, 1000, {}}), std::invalid_argument);
 }
 
+// A tie that shares a node with the frame's attachment, an interface node
+// or another tie would be neither rigid nor held: refused.
+TEST(ModalBody, OverlappingTiesAreRefused) {
+  const Structure beam = beam_structure(boom());
+  const int tip = boom().elements;
+  EXPECT_THROW(reduce(beam, {node_dofs(beam, 0), {}, 2, {{0, 1}}}), std::invalid_argument);
+  EXPECT_THROW(reduce(beam, {node_dofs(beam, 0), node_dofs(beam, tip), 2, {{tip - 1, tip}}}), std::invalid_argument);
+  EXPECT_THROW(reduce(beam, {node_dofs(beam, 0), {}, 2, {{tip - 2, tip - 1}, {tip - 1, tip}}}), std::invalid_argument);
+  EXPECT_NO_THROW(reduce(beam, {node_dofs(beam, 0), {}, 2, {{tip - 1, tip}}}));
+}
+
 }  // namespace
 }  // namespace unfurl::sim::flexible

@@ -1,6 +1,7 @@
 #include "unfurl/io/mjcf_export.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -150,13 +151,14 @@ class Writer {
 
   // A lamina's principal moments meet the triangle inequality with
   // equality (a flexible plate's, C = A + B), which MuJoCo checks
-  // literally: round-off below it is raised onto it, by the shortfall
-  // added to every moment (the products unchanged).
+  // literally on its own eigenvalues: within round-off of it (1e-12 of C),
+  // every moment is raised by the shortfall and 1e-12 of C more (the
+  // products unchanged), so that A + B > C whoever rounds.
   static sim::Mat3 within_triangle_inequality(const sim::Mat3& J) {
     const Eigen::Vector3d moments = Eigen::SelfAdjointEigenSolver<sim::Mat3>(J, Eigen::EigenvaluesOnly).eigenvalues();
-    const double shortfall = moments[2] - moments[0] - moments[1];
-    if (shortfall <= 0) return J;
-    return J + 2 * shortfall * sim::Mat3::Identity();
+    const double C = moments[2], shortfall = C - moments[0] - moments[1];
+    if (shortfall <= -1e-12 * C) return J;
+    return J + (std::max(shortfall, 0.0) + 1e-12 * C) * sim::Mat3::Identity();
   }
 
   void inertial(int i, const std::string& pad) {

@@ -400,9 +400,16 @@ std::shared_ptr<const flexible::FlexibleBody> SceneReader::read_flexible(const Y
     }
   }
   int& normal_modes = plate ? panel.normal_modes : beam.normal_modes;
+  double& modes_up_to_hz = plate ? panel.modes_up_to_hz : beam.modes_up_to_hz;
   flexible::ModalDamping& damping = plate ? panel.damping : beam.damping;
   std::vector<Vec3>& attachments = plate ? panel.attachments : beam.attachments;
-  if (node["modes"]) normal_modes = static_cast<int>(count(node["modes"], field + ".modes", 0, flexible::kMaxModes));
+  // A count of fixed-interface modes, or every one up to a frequency.
+  if (const YAML::Node modes = node["modes"]; modes && modes.IsMap()) {
+    check_keys(modes, {"up_to"}, field + ".modes");
+    modes_up_to_hz = positive(require(modes, "up_to", field + ".modes"), field + ".modes.up_to");
+  } else if (modes) {
+    normal_modes = static_cast<int>(count(modes, field + ".modes", 0, flexible::kMaxModes));
+  }
   if (node["damping"]) damping = read_modal_damping(node["damping"], field + ".damping");
   // A point where something attaches: at a mesh node (a beam's, on its
   // axis; a plate's, or anywhere on a hinge line), on the body or on a
@@ -510,6 +517,11 @@ flexible::PlateBodySpec SceneReader::read_plate(const YAML::Node& node, const st
       const std::string at = input::index_field(field + ".hinge_lines", k);
       const flexible::PlateEdge e = edge(lines[k], at);
       if (e == spec.root_edge) fail(lines[k], at, "the root edge is held to the frame already");
+      const bool along_x = e == flexible::PlateEdge::x0 || e == flexible::PlateEdge::x1;
+      const bool root_along_x = spec.root_edge == flexible::PlateEdge::x0 || spec.root_edge == flexible::PlateEdge::x1;
+      if (along_x != root_along_x)
+        fail(lines[k], at,
+             "a hinge line is the edge opposite the root edge: this one meets it at a corner, which the root holds");
       for (flexible::PlateEdge seen : spec.hinge_lines)
         if (seen == e) fail(lines[k], at, "this edge is listed twice");
       spec.hinge_lines.push_back(e);

@@ -298,8 +298,8 @@ void place_sensors_on_nodes(Scene& scene) {
     s.node = scene.model.bodies[s.body].flexible->node_of(s.point);
     if (s.node < 0)
       throw SceneInvalid("sensors[" + std::to_string(k) + "].point",
-                         "a sensor on a flexible body sits at one of its attachment points (a mesh node, or a rigid "
-                         "bracket beside one)");
+                         "a sensor on a flexible body sits at one of its attachment points (a mesh node, a plate's "
+                         "hinge line or root edge, or a rigid bracket beside one)");
   }
 }
 

@@ -103,6 +103,10 @@ void mass_properties(std::ostream& out, const Body& b, const std::string& pad) {
   out << pad << "inertia: " << numbers(inertia) << "\n";
 }
 
+std::string modes_text(int normal_modes, double up_to_hz) {
+  return up_to_hz > 0 ? "{up_to: " + format_number(up_to_hz) + "}" : std::to_string(normal_modes);
+}
+
 std::string damping_text(const flexible::ModalDamping& d) {
   if (!d.per_coordinate.empty()) return numbers(d.per_coordinate);
   if (d.is_uniform()) return format_number(d.bands[0].ratio);
@@ -129,7 +133,7 @@ void flexible_body(std::ostream& out, const flexible::BeamBodySpec& spec, const 
   if (!spec.root.isZero(0)) out << ", root: " << numbers({spec.root.x(), spec.root.y(), spec.root.z()});
   if (spec.axis != 0) out << ", axis: " << static_cast<char>('x' + spec.axis);
   out << "}\n"
-      << pad << "  modes: " << spec.normal_modes << "\n"
+      << pad << "  modes: " << modes_text(spec.normal_modes, spec.modes_up_to_hz) << "\n"
       << pad << "  damping: " << damping_text(spec.damping) << "\n";
   if (!spec.geometric_stiffening) out << pad << "  geometric_stiffening: false\n";
 }
@@ -162,7 +166,7 @@ void flexible_body(std::ostream& out, const flexible::PlateBodySpec& spec, const
     out << "]";
   }
   out << "}\n"
-      << pad << "  modes: " << spec.normal_modes << "\n"
+      << pad << "  modes: " << modes_text(spec.normal_modes, spec.modes_up_to_hz) << "\n"
       << pad << "  damping: " << damping_text(spec.damping) << "\n";
 }
 

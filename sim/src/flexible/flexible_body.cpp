@@ -87,6 +87,16 @@ std::vector<int> edge_nodes(const PlateSpec& p, PlateEdge edge) {
   return nodes;
 }
 
+PlateEdge opposite(PlateEdge e) {
+  switch (e) {
+    case PlateEdge::x0: return PlateEdge::x1;
+    case PlateEdge::x1: return PlateEdge::x0;
+    case PlateEdge::y0: return PlateEdge::y1;
+    case PlateEdge::y1: return PlateEdge::y0;
+  }
+  return e;
+}
+
 // Whether plate coordinates u lie over the edge's line.
 bool over_edge(const PlateSpec& p, PlateEdge edge, const Eigen::Vector3d& u, double tolerance) {
   switch (edge) {
@@ -125,6 +135,7 @@ FlexibleBody beam_body(const BeamBodySpec& spec) {
   reduction.frame_dofs = node_dofs(beam, 0);
   reduction.interface_dofs = interface;
   reduction.normal_modes = spec.normal_modes;
+  reduction.normal_modes_up_to_hz = spec.modes_up_to_hz;
   const ModalBody reduced = reduce(beam, reduction);
   check_coordinates(reduced, "flexible beam", "six for each mesh node");
   FlexibleBody body{
@@ -157,12 +168,15 @@ FlexibleBody plate_body(const PlateBodySpec& spec) {
   ModalReduction reduction;
   reduction.frame_dofs = held_dofs(p, held_edges);
   reduction.normal_modes = spec.normal_modes;
+  reduction.normal_modes_up_to_hz = spec.modes_up_to_hz;
   std::vector<PlateEdge> ties;
-  for (PlateEdge edge : spec.hinge_lines)
-    if (edge != spec.root_edge && std::find(ties.begin(), ties.end(), edge) == ties.end()) {
-      ties.push_back(edge);
-      reduction.tied_nodes.push_back(edge_nodes(p, edge));
-    }
+  for (PlateEdge edge : spec.hinge_lines) {
+    if (edge != opposite(spec.root_edge))
+      throw std::invalid_argument("flexible plate: a hinge line is the edge opposite the root edge");
+    if (std::find(ties.begin(), ties.end(), edge) != ties.end()) continue;
+    ties.push_back(edge);
+    reduction.tied_nodes.push_back(edge_nodes(p, edge));
+  }
   // Each attachment: on the held edge (-1), on a tie (its index), or at a
   // mesh node (ties.size() + the node).
   struct Attachment {
@@ -257,7 +271,14 @@ int FlexibleBody::node_of(const Eigen::Vector3d& point) const {
 }
 
 bool FlexibleBody::on_frame(const Eigen::Vector3d& point) const {
-  if (plate) return over_edge(plate->plate, plate->root_edge, plate_coordinates(*plate, point), 1e-9 * size());
+  if (plate) {
+    const PlateSpec& p = plate->plate;
+    const Eigen::Vector3d u = plate_coordinates(*plate, point);
+    const double tolerance = 1e-9 * size();
+    const bool within = u.x() >= -tolerance && u.x() <= p.length_x + tolerance && u.y() >= -tolerance &&
+                        u.y() <= p.length_y + tolerance;
+    return within && over_edge(p, plate->root_edge, u, tolerance);
+  }
   return (point - beam.root).norm() <= 1e-9 * size();
 }
 

@@ -71,24 +71,35 @@ Eigen::MatrixXd tied_modes(const Structure& s, const std::vector<int>& tied, con
 }  // namespace
 
 ModalBody reduce(const Structure& s, const ModalReduction& reduction) {
-  std::vector<char> role(s.size(), 0);  // 1 frame, 2 interface
+  std::vector<char> role(s.size(), 0);  // 1 frame, 2 interface, 3 tied
   for (int d : reduction.frame_dofs) role.at(d) = 1;
   for (int d : reduction.interface_dofs) role.at(d) = 2;
+  // A tie that shares a node with the frame, an interface node or another
+  // tie would move it in one's constraint modes and hold it in the other's:
+  // neither rigid nor held.
   for (const std::vector<int>& tied : reduction.tied_nodes)
-    for (int d : dofs_of(s, tied)) role.at(d) = 3;
+    for (int d : dofs_of(s, tied)) {
+      if (role.at(d) != 0)
+        throw std::invalid_argument("flexible body: tied nodes share a node with the frame's attachment, an "
+                                    "interface node or another tie");
+      role[d] = 3;
+    }
   std::vector<int> held, interior;
   for (int d = 0; d < s.size(); ++d) (role[d] ? held : interior).push_back(d);
 
   const StructuralModes fixed = structural_modes(s, held);
   if (fixed.rigid > 0)
     throw std::invalid_argument("flexible body: the frame's attachment leaves a rigid motion of the body free");
-  if (fixed.frequency_hz.size() < reduction.normal_modes)
-    throw std::invalid_argument("flexible body: " + std::to_string(reduction.normal_modes) + " modes asked, the mesh has " +
+  int normal_modes = reduction.normal_modes;
+  if (reduction.normal_modes_up_to_hz > 0)
+    normal_modes = static_cast<int>((fixed.frequency_hz.array() <= reduction.normal_modes_up_to_hz).count());
+  if (fixed.frequency_hz.size() < normal_modes)
+    throw std::invalid_argument("flexible body: " + std::to_string(normal_modes) + " modes asked, the mesh has " +
                                 std::to_string(fixed.frequency_hz.size()));
   const int tied_columns = static_cast<int>(reduction.tied_nodes.size() * modelled_motions(s).size());
-  Eigen::MatrixXd T(s.size(), reduction.normal_modes + reduction.interface_dofs.size() + tied_columns);
-  T.leftCols(reduction.normal_modes) = fixed.shape.leftCols(reduction.normal_modes);
-  T.middleCols(reduction.normal_modes, reduction.interface_dofs.size()) =
+  Eigen::MatrixXd T(s.size(), normal_modes + reduction.interface_dofs.size() + tied_columns);
+  T.leftCols(normal_modes) = fixed.shape.leftCols(normal_modes);
+  T.middleCols(normal_modes, reduction.interface_dofs.size()) =
       constraint_modes(s, reduction.interface_dofs, interior);
   int c = static_cast<int>(T.cols()) - tied_columns;
   for (const std::vector<int>& tied : reduction.tied_nodes) {

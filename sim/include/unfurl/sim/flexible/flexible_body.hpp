@@ -82,6 +82,9 @@ struct BeamBodySpec {
   // x, with bending_stiffness_z.
   Eigen::Vector3d root = Eigen::Vector3d::Zero();
   int axis = 0;
+  // Where positive, instead of normal_modes: every fixed-interface mode up
+  // to this frequency (Hz), the scene's `modes: {up_to: F}`.
+  double modes_up_to_hz = 0;
 };
 
 // A plate's edges: x = 0, x = length_x, y = 0, y = length_y (its own
@@ -116,6 +119,7 @@ struct PlateBodySpec {
   // line of them dozens).
   PlateEdge root_edge = PlateEdge::y0;
   std::vector<PlateEdge> hinge_lines;
+  double modes_up_to_hz = 0;  // as a beam's
 };
 
 struct FlexibleNode {

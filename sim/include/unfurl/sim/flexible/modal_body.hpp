@@ -36,6 +36,9 @@ struct ModalReduction {
   // plate's three out of its plane), so that a line of nodes costs three
   // coordinates where the nodes' own degrees of freedom would cost dozens.
   std::vector<std::vector<int>> tied_nodes;
+  // Where positive, instead of normal_modes: every fixed-interface mode up
+  // to this frequency (Hz).
+  double normal_modes_up_to_hz = 0;
 };
 
 struct ModalBody {
