@@ -13,6 +13,7 @@
 #include "unfurl/input/yaml_fields.hpp"
 #include "unfurl/sim/elements/all.hpp"
 #include "unfurl/sim/flexible/flexible_body.hpp"
+#include "unfurl/sim/flexible/plate_point.hpp"
 #include "unfurl/sim/number_text.hpp"
 #include "unfurl/sim/scene_builder.hpp"
 #include "unfurl/sim/scene_file.hpp"
@@ -332,26 +333,12 @@ std::string beam_attachment_error(const flexible::BeamBodySpec& spec, const Vec3
 }
 
 std::string plate_attachment_error(const flexible::PlateBodySpec& spec, const Vec3& p) {
+  if (flexible::locate(spec, p).attaches()) return "";
   const flexible::PlateSpec& s = spec.plate;
-  const Vec3 u = flexible::plate_coordinates(spec, p);
-  const double tolerance = 1e-9 * std::max(s.length_x, s.length_y);
-  const double hx = s.length_x / s.elements_x, hy = s.length_y / s.elements_y;
-  const bool inside = u.x() >= -tolerance && u.x() <= s.length_x + tolerance && u.y() >= -tolerance &&
-                      u.y() <= s.length_y + tolerance;
-  const auto over = [&](flexible::PlateEdge e) {
-    return (e == flexible::PlateEdge::x0 && std::abs(u.x()) <= tolerance) ||
-           (e == flexible::PlateEdge::x1 && std::abs(u.x() - s.length_x) <= tolerance) ||
-           (e == flexible::PlateEdge::y0 && std::abs(u.y()) <= tolerance) ||
-           (e == flexible::PlateEdge::y1 && std::abs(u.y() - s.length_y) <= tolerance);
-  };
-  bool on_line = over(spec.root_edge);
-  for (flexible::PlateEdge e : spec.hinge_lines) on_line = on_line || over(e);
-  const bool at_node = std::abs(u.x() - hx * std::round(u.x() / hx)) <= tolerance &&
-                       std::abs(u.y() - hy * std::round(u.y() / hy)) <= tolerance;
-  if (inside && (on_line || at_node)) return "";
   return "on the plate (its own x in [0, " + format_number(s.length_x) + "], y in [0, " + format_number(s.length_y) +
          "] from its corner), on its root edge or a hinge line, or over a mesh node (x a multiple of " +
-         format_number(hx) + " m, y of " + format_number(hy) + " m), on the plate or on a rigid bracket off it";
+         format_number(s.length_x / s.elements_x) + " m, y of " + format_number(s.length_y / s.elements_y) +
+         " m), on the plate or on a rigid bracket off it";
 }
 
 // How many elastic coordinates a body has (-1 where it cannot be made),

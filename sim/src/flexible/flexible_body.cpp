@@ -7,6 +7,7 @@
 
 #include "unfurl/sim/flexible/mass_points.hpp"
 #include "unfurl/sim/flexible/modal_body.hpp"
+#include "unfurl/sim/flexible/plate_point.hpp"
 
 namespace unfurl::sim::flexible {
 
@@ -159,7 +160,6 @@ FlexibleBody plate_body(const PlateBodySpec& spec) {
   const PlateSpec& p = spec.plate;
   const Eigen::Matrix3d R = body_from_plate(spec.normal);
   const Structure plate = plate_structure(p);
-  const double tolerance = 1e-9 * plate_size(p), hx = p.length_x / p.elements_x, hy = p.length_y / p.elements_y;
   PlateEdges held_edges;
   (spec.root_edge == PlateEdge::x0   ? held_edges.x0
    : spec.root_edge == PlateEdge::x1 ? held_edges.x1
@@ -169,43 +169,23 @@ FlexibleBody plate_body(const PlateBodySpec& spec) {
   reduction.frame_dofs = held_dofs(p, held_edges);
   reduction.normal_modes = spec.normal_modes;
   reduction.normal_modes_up_to_hz = spec.modes_up_to_hz;
-  std::vector<PlateEdge> ties;
-  for (PlateEdge edge : spec.hinge_lines) {
+  // The hinge line, the one edge a plate ties.
+  for (PlateEdge edge : spec.hinge_lines)
     if (edge != opposite(spec.root_edge))
       throw std::invalid_argument("flexible plate: a hinge line is the edge opposite the root edge");
-    if (std::find(ties.begin(), ties.end(), edge) != ties.end()) continue;
-    ties.push_back(edge);
-    reduction.tied_nodes.push_back(edge_nodes(p, edge));
-  }
-  // Each attachment: on the held edge (-1), on a tie (its index), or at a
-  // mesh node (ties.size() + the node).
-  struct Attachment {
-    int on;
-    Eigen::Vector3d at;  // plate coordinates, in its plane
-  };
-  std::vector<Attachment> attachments;
+  if (!spec.hinge_lines.empty()) reduction.tied_nodes.push_back(edge_nodes(p, opposite(spec.root_edge)));
+  std::vector<PlatePoint> attachments;
   for (const Eigen::Vector3d& point : spec.attachments) {
-    const Eigen::Vector3d u = R.transpose() * (point - spec.corner);
-    if (u.x() < -tolerance || u.x() > p.length_x + tolerance || u.y() < -tolerance || u.y() > p.length_y + tolerance)
+    const PlatePoint where = locate(spec, point);
+    if (where.on == PlatePoint::On::outside)
       throw std::invalid_argument("flexible plate: an attachment point lies beyond the plate's edges");
-    const Eigen::Vector3d at(u.x(), u.y(), 0);
-    if (over_edge(p, spec.root_edge, u, tolerance)) {
-      attachments.push_back({-1, at});
-      continue;
-    }
-    const auto tie = std::find_if(ties.begin(), ties.end(), [&](PlateEdge e) { return over_edge(p, e, u, tolerance); });
-    if (tie != ties.end()) {
-      attachments.push_back({static_cast<int>(tie - ties.begin()), at});
-      continue;
-    }
-    const int i = static_cast<int>(std::lround(u.x() / hx)), j = static_cast<int>(std::lround(u.y() / hy));
-    if (std::abs(u.x() - i * hx) > tolerance || std::abs(u.y() - j * hy) > tolerance)
+    if (where.on == PlatePoint::On::between_nodes)
       throw std::invalid_argument("flexible plate: an attachment point is neither on a hinge line nor over a mesh node");
-    const int node = i + j * (p.elements_x + 1);
-    attachments.push_back({static_cast<int>(ties.size()) + node, plate.nodes[node]});
-    if (std::find(reduction.interface_dofs.begin(), reduction.interface_dofs.end(), plate.dof(node, 0)) ==
-        reduction.interface_dofs.end())
-      for (int k = 0; k < plate.dofs_per_node; ++k) reduction.interface_dofs.push_back(plate.dof(node, k));
+    attachments.push_back(where);
+    if (where.on == PlatePoint::On::node &&
+        std::find(reduction.interface_dofs.begin(), reduction.interface_dofs.end(), plate.dof(where.node, 0)) ==
+            reduction.interface_dofs.end())
+      for (int k = 0; k < plate.dofs_per_node; ++k) reduction.interface_dofs.push_back(plate.dof(where.node, k));
   }
   const ModalBody reduced = reduce(plate, reduction);
   check_coordinates(reduced, "flexible plate", "three for each hinge line and four for each mesh node");
@@ -213,12 +193,10 @@ FlexibleBody plate_body(const PlateBodySpec& spec) {
                     reduced.frequency_hz, {}, {}, {}, {}, {}, spec};
   set_modal_terms(body, spec.damping, "flexible plate");
   const int m = reduced.coordinates();
-  for (const Attachment& a : attachments) {
-    Eigen::MatrixXd shape = Eigen::MatrixXd::Zero(6, m);
-    if (a.on >= static_cast<int>(ties.size()))
-      shape = reduced.node_shape(plate, a.on - static_cast<int>(ties.size()));
-    else if (a.on >= 0)
-      shape = reduced.tie_shape(plate, reduction.tied_nodes[a.on], a.at);
+  for (const PlatePoint& a : attachments) {
+    Eigen::MatrixXd shape = Eigen::MatrixXd::Zero(6, m);  // on the held edge
+    if (a.on == PlatePoint::On::node) shape = reduced.node_shape(plate, a.node);
+    if (a.on == PlatePoint::On::hinge_line) shape = reduced.tie_shape(plate, reduction.tied_nodes.front(), a.at);
     body.nodes.push_back(placed(a.at, shape, R, spec.corner));
   }
   for (int node = 0; node < static_cast<int>(plate.nodes.size()); ++node)
@@ -271,15 +249,33 @@ int FlexibleBody::node_of(const Eigen::Vector3d& point) const {
 }
 
 bool FlexibleBody::on_frame(const Eigen::Vector3d& point) const {
-  if (plate) {
-    const PlateSpec& p = plate->plate;
-    const Eigen::Vector3d u = plate_coordinates(*plate, point);
-    const double tolerance = 1e-9 * size();
-    const bool within = u.x() >= -tolerance && u.x() <= p.length_x + tolerance && u.y() >= -tolerance &&
-                        u.y() <= p.length_y + tolerance;
-    return within && over_edge(p, plate->root_edge, u, tolerance);
-  }
+  if (plate) return locate(*plate, point).on == PlatePoint::On::root_edge;
   return (point - beam.root).norm() <= 1e-9 * size();
+}
+
+PlatePoint locate(const PlateBodySpec& spec, const Eigen::Vector3d& point) {
+  const PlateSpec& p = spec.plate;
+  const Eigen::Vector3d u = plate_coordinates(spec, point);
+  const double tolerance = 1e-9 * plate_size(p), hx = p.length_x / p.elements_x, hy = p.length_y / p.elements_y;
+  PlatePoint where;
+  where.at = Eigen::Vector3d(u.x(), u.y(), 0);
+  if (u.x() < -tolerance || u.x() > p.length_x + tolerance || u.y() < -tolerance || u.y() > p.length_y + tolerance)
+    return where;
+  const auto over_line = [&](PlateEdge e) { return over_edge(p, e, u, tolerance); };
+  if (over_line(spec.root_edge)) {
+    where.on = PlatePoint::On::root_edge;
+  } else if (std::any_of(spec.hinge_lines.begin(), spec.hinge_lines.end(), over_line)) {
+    where.on = PlatePoint::On::hinge_line;
+  } else {
+    const int i = static_cast<int>(std::lround(u.x() / hx)), j = static_cast<int>(std::lround(u.y() / hy));
+    const bool over_node = std::abs(u.x() - i * hx) <= tolerance && std::abs(u.y() - j * hy) <= tolerance;
+    where.on = over_node ? PlatePoint::On::node : PlatePoint::On::between_nodes;
+    if (over_node) {
+      where.node = i + j * (p.elements_x + 1);
+      where.at = Eigen::Vector3d(i * hx, j * hy, 0);
+    }
+  }
+  return where;
 }
 
 double FlexibleBody::size() const { return plate ? plate_size(plate->plate) : beam.section.length; }

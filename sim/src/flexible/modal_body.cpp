@@ -12,6 +12,10 @@
 namespace unfurl::sim::flexible {
 namespace {
 
+[[noreturn]] void throw_rigid_motion_free() {
+  throw std::invalid_argument("flexible body: the frame's attachment leaves a rigid motion of the body free");
+}
+
 // The rows and columns of x at the listed indices.
 Eigen::MatrixXd block(const Eigen::MatrixXd& x, const std::vector<int>& rows, const std::vector<int>& cols) {
   Eigen::MatrixXd out(rows.size(), cols.size());
@@ -20,16 +24,22 @@ Eigen::MatrixXd block(const Eigen::MatrixXd& x, const std::vector<int>& rows, co
   return out;
 }
 
+// The interior's stiffness K_II factored, once for every constraint mode;
+// singular where the held degrees of freedom leave a rigid motion free.
+Eigen::LDLT<Eigen::MatrixXd> interior_stiffness(const Structure& s, const std::vector<int>& interior) {
+  const Eigen::LDLT<Eigen::MatrixXd> K_II(block(s.K, interior, interior));
+  if (K_II.info() != Eigen::Success || !K_II.isPositive()) throw_rigid_motion_free();
+  return K_II;
+}
+
 // The constraint modes: for each interface degree of freedom c, the static
 // shape with u_c = 1, the other interface and frame ones 0, the interior
 // free of load (K_II psi_I = -K_Ic).
 Eigen::MatrixXd constraint_modes(const Structure& s, const std::vector<int>& interface,
-                                 const std::vector<int>& interior) {
+                                 const std::vector<int>& interior, const Eigen::LDLT<Eigen::MatrixXd>& K_II) {
   if (interface.empty()) return Eigen::MatrixXd::Zero(s.size(), 0);
-  const Eigen::LDLT<Eigen::MatrixXd> K_II(block(s.K, interior, interior));
   const Eigen::MatrixXd psi_I = K_II.solve(-block(s.K, interior, interface));
-  if (K_II.info() != Eigen::Success || !K_II.isPositive() || !psi_I.allFinite())
-    throw std::invalid_argument("flexible body: the frame's attachment leaves a rigid motion of the body free");
+  if (!psi_I.allFinite()) throw_rigid_motion_free();
   Eigen::MatrixXd psi = Eigen::MatrixXd::Zero(s.size(), interface.size());
   for (size_t c = 0; c < interface.size(); ++c) psi(interface[c], c) = 1;
   for (size_t a = 0; a < interior.size(); ++a) psi.row(interior[a]) = psi_I.row(a);
@@ -55,13 +65,12 @@ std::vector<int> modelled_motions(const Structure& s) {
 // A tied set's constraint modes: for each rigid motion the structure
 // models, the static shape with the set moving by it, every other held
 // degree of freedom at 0 and the interior free of load.
-Eigen::MatrixXd tied_modes(const Structure& s, const std::vector<int>& tied, const std::vector<int>& interior) {
+Eigen::MatrixXd tied_modes(const Structure& s, const std::vector<int>& tied, const std::vector<int>& interior,
+                           const Eigen::LDLT<Eigen::MatrixXd>& K_II) {
   const std::vector<int> set = dofs_of(s, tied), motions = modelled_motions(s);
   const Eigen::MatrixXd u_S = block(s.rigid, set, motions);
-  const Eigen::LDLT<Eigen::MatrixXd> K_II(block(s.K, interior, interior));
   const Eigen::MatrixXd psi_I = K_II.solve(-block(s.K, interior, set) * u_S);
-  if (K_II.info() != Eigen::Success || !K_II.isPositive() || !psi_I.allFinite())
-    throw std::invalid_argument("flexible body: the frame's attachment leaves a rigid motion of the body free");
+  if (!psi_I.allFinite()) throw_rigid_motion_free();
   Eigen::MatrixXd psi = Eigen::MatrixXd::Zero(s.size(), motions.size());
   for (size_t a = 0; a < set.size(); ++a) psi.row(set[a]) = u_S.row(a);
   for (size_t a = 0; a < interior.size(); ++a) psi.row(interior[a]) = psi_I.row(a);
@@ -88,8 +97,7 @@ ModalBody reduce(const Structure& s, const ModalReduction& reduction) {
   for (int d = 0; d < s.size(); ++d) (role[d] ? held : interior).push_back(d);
 
   const StructuralModes fixed = structural_modes(s, held);
-  if (fixed.rigid > 0)
-    throw std::invalid_argument("flexible body: the frame's attachment leaves a rigid motion of the body free");
+  if (fixed.rigid > 0) throw_rigid_motion_free();
   int normal_modes = reduction.normal_modes;
   if (reduction.normal_modes_up_to_hz > 0)
     normal_modes = static_cast<int>((fixed.frequency_hz.array() <= reduction.normal_modes_up_to_hz).count());
@@ -99,11 +107,13 @@ ModalBody reduce(const Structure& s, const ModalReduction& reduction) {
   const int tied_columns = static_cast<int>(reduction.tied_nodes.size() * modelled_motions(s).size());
   Eigen::MatrixXd T(s.size(), normal_modes + reduction.interface_dofs.size() + tied_columns);
   T.leftCols(normal_modes) = fixed.shape.leftCols(normal_modes);
+  const Eigen::LDLT<Eigen::MatrixXd> K_II = T.cols() > normal_modes ? interior_stiffness(s, interior)
+                                                                    : Eigen::LDLT<Eigen::MatrixXd>();
   T.middleCols(normal_modes, reduction.interface_dofs.size()) =
-      constraint_modes(s, reduction.interface_dofs, interior);
+      constraint_modes(s, reduction.interface_dofs, interior, K_II);
   int c = static_cast<int>(T.cols()) - tied_columns;
   for (const std::vector<int>& tied : reduction.tied_nodes) {
-    const Eigen::MatrixXd psi = tied_modes(s, tied, interior);
+    const Eigen::MatrixXd psi = tied_modes(s, tied, interior, K_II);
     T.middleCols(c, psi.cols()) = psi;
     c += static_cast<int>(psi.cols());
   }
