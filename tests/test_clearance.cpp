@@ -11,6 +11,7 @@
 #include "unfurl/sim/simulation.hpp"
 #include "unfurl/studies/body_solids.hpp"
 #include "unfurl/studies/clearance.hpp"
+#include "unfurl/studies/clearance_broad_phase.hpp"
 
 namespace unfurl {
 namespace {
@@ -40,6 +41,20 @@ initial:
   dq: {a: 1.0}
 run: {t_end: 3, rtol: 1.0e-10, atol: 1.0e-12, sample: 0.05}
 )";
+}
+
+// arm_and_post with a third body, a sphere of 0.2 hinged at (x, 0, 0).
+std::string with_far_body(std::string text, double x) {
+  const std::string far = R"(
+  - name: far
+    parent: ground
+    mass: 1.0
+    inertia: [0.1, 0.1, 0.1]
+    collision: [{sphere: 0.2}]
+    joint: {name: f, type: revolute, axis: [1, 0, 0], parent_point: [)" + std::to_string(x) + R"(, 0, 0], child_point: [0, 0, 0]}
+initial:)";
+  text.replace(text.find("\ninitial:"), 9, far);
+  return text;
 }
 
 // A unit cube's twelve triangles, centred on the origin.
@@ -75,6 +90,84 @@ TEST(Clearance, SpheresPassAtTheirClosedFormDistanceAndTime) {
   EXPECT_TRUE(c.clear());
   EXPECT_EQ(c.samples, 61);
   EXPECT_LT(c.distance_queries, 61 + 40);
+}
+
+TEST(Clearance, PairsThatNeverComeNearAreCertifiedWithoutMeasuring) {
+  // The far body is 50 m off: its pairs are left out, the arm and post's
+  // closest approach stays the closed form's.
+  const sim::Clearance c = clearance_of(
+      with_far_body(arm_and_post("[{sphere: 0.1, offset: [0, 1, 0]}]", "[{sphere: 0.2, offset: [0, 0, 1.5]}]"), 50));
+  ASSERT_EQ(c.pairs.size(), 1u);
+  EXPECT_EQ(c.pairs_beyond, 2);
+  EXPECT_EQ(c.pairs[0].body_b, "post");
+  EXPECT_NEAR(c.pairs[0].distance, 0.2, 1e-8);
+  EXPECT_NEAR(c.listed_within, 0.34, 1e-12);  // a tenth of the post's reach, doubled once
+  EXPECT_LT(c.distance_queries, 61 + 40);
+}
+
+TEST(Clearance, ThePairsAreMeasuredFartherOutUntilTheClosestIsFound) {
+  // The arm's sphere (reach 1.1) and the far body's, 50 m off: the margin
+  // doubles from 0.11 until it takes the pair in, and its distance is exact.
+  const sim::Clearance c = clearance_of(with_far_body(arm_and_post("[{sphere: 0.1, offset: [0, 1, 0]}]", "none"), 50));
+  ASSERT_EQ(c.pairs.size(), 1u);
+  EXPECT_EQ(c.pairs_beyond, 0);
+  EXPECT_NEAR(c.pairs[0].distance, std::sqrt(2501.0) - 0.3, 1e-8);
+  EXPECT_NEAR(c.listed_within, 0.11 * 512, 1e-12);
+}
+
+// Whether two boxes, body a's and body b's, come within `margin` over
+// their poses at the samples (one per sample).
+bool near(const studies::BodyBox& a, const studies::BodyBox& b, const std::vector<sim::Pose>& pa,
+          const std::vector<sim::Pose>& pb, double margin) {
+  const studies::NearPairs pairs({a, b}, pa.size(),
+                                 [&](std::size_t k, int i) -> const sim::Pose& { return i == 0 ? pa[k] : pb[k]; },
+                                 margin);
+  EXPECT_EQ(pairs.near(0, 1), pairs.near(1, 0));
+  return pairs.near(0, 1);
+}
+
+sim::Pose at(const sim::Vec3& position, double turn_about_z = 0) {
+  sim::Pose p;
+  p.position = position;
+  p.rotation = Eigen::AngleAxisd(turn_about_z, sim::Vec3::UnitZ()).toRotationMatrix().transpose();
+  return p;
+}
+
+TEST(ClearanceBroadPhase, BoxesNearAtASampleOrCrossingBetweenTwo) {
+  const studies::BodyBox unit{sim::Vec3::Zero(), sim::Vec3::Constant(0.5), std::sqrt(0.75)};
+  // 1.5 apart along y.
+  EXPECT_FALSE(near(unit, unit, {at({0, 0, 0})}, {at({0, 2.5, 0})}, 1.4));
+  EXPECT_TRUE(near(unit, unit, {at({0, 0, 0})}, {at({0, 2.5, 0})}, 1.6));
+  // Far apart at both samples, through each other between them.
+  EXPECT_TRUE(near(unit, unit, {at({-10, 0, 0}), at({10, 0, 0})}, {at({10, 0, 0}), at({-10, 0, 0})}, 0));
+  // A 4 x 1 x 1 box turned a quarter about z reaches 2 along y: 0.5 from
+  // the unit box at y = 3 (2 when not turned).
+  const studies::BodyBox bar{sim::Vec3::Zero(), sim::Vec3(2, 0.5, 0.5), std::sqrt(4.5)};
+  EXPECT_FALSE(near(bar, unit, {at({0, 0, 0}, M_PI / 2)}, {at({0, 3, 0})}, 0.4));
+  EXPECT_TRUE(near(bar, unit, {at({0, 0, 0}, M_PI / 2)}, {at({0, 3, 0})}, 0.6));
+  EXPECT_FALSE(near(bar, unit, {at({0, 0, 0})}, {at({0, 3, 0})}, 1.9));
+  // Turning from 0 to a quarter between two samples sweeps it through.
+  EXPECT_TRUE(near(bar, unit, {at({0, 0, 0}), at({0, 0, 0}, M_PI / 2)}, {at({0, 3, 0}), at({0, 3, 0})}, 0.6));
+  // A body without solids is never near.
+  EXPECT_FALSE(near(studies::BodyBox{}, unit, {at({0, 0, 0})}, {at({0, 0, 0})}, 100));
+}
+
+TEST(ClearanceBroadPhase, TheEnclosingBoxOfABoxAndOfTheSameBoxAsAMesh) {
+  studies::Solid box;
+  box.kind = sim::CollisionShape::Kind::box;
+  box.size = sim::Vec3(0.2, 0.4, 0.6);
+  box.offset = sim::Vec3(1, 2, 3);
+  studies::Solid mesh;
+  mesh.mesh = unit_cube();
+  for (sim::Vec3& v : mesh.mesh.vertices) v = v.cwiseProduct(box.size);
+  mesh.offset = box.offset;
+  for (const studies::Solid& s : {box, mesh}) {
+    const studies::BodyBox e = studies::enclosing_box({s});
+    EXPECT_NEAR((e.centre - box.offset).norm(), 0, 1e-15);
+    EXPECT_NEAR((e.half - 0.5 * box.size).norm(), 0, 1e-15);
+    EXPECT_NEAR(e.radius, 0.5 * box.size.norm(), 1e-15);
+  }
+  EXPECT_LT(studies::enclosing_box({}).radius, 0);
 }
 
 TEST(Clearance, ABoxAndTheSameBoxAsAMeshGiveTheSameDistance) {
@@ -180,7 +273,7 @@ TEST(Clearance, ALoopsImageIsItsSplitBodysOtherHalf) {
       studies::check_clearance(file.scene, studies::body_solids(file.scene, file.visuals, box), run.trajectory);
   // 9 bodies (the bus, 11 less the 3 images): 36 pairs less the 8 joints
   // between them and the 3 loop pivots.
-  EXPECT_EQ(c.pairs.size(), 36u - 8u - 3u);
+  EXPECT_EQ(c.pairs.size() + c.pairs_beyond, 36u - 8u - 3u);
   for (const sim::PairClearance& p : c.pairs) {
     EXPECT_EQ(p.body_a.find("image"), std::string::npos);
     EXPECT_EQ(p.body_b.find("image"), std::string::npos);

@@ -128,8 +128,10 @@ void print_clearance(const sim::RunSummary& s) {
   if (!s.clearance) return;
   const sim::Clearance& c = *s.clearance;
   if (const sim::PairClearance* p = c.closest())
-    std::printf("clearance    closest %.4g m, %s and %s at t = %.6f s (%zu pairs, %d samples, %.3g s)\n", p->distance,
-                p->body_a.c_str(), p->body_b.c_str(), p->t, c.pairs.size(), c.samples, c.wall_time_s);
+    std::printf("clearance    closest %.4g m, %s and %s at t = %.6f s (%zu pairs within %.3g m, %ld farther; %d "
+                "samples, %.3g s)\n",
+                p->distance, p->body_a.c_str(), p->body_b.c_str(), p->t, c.pairs.size(), c.listed_within,
+                c.pairs_beyond, c.samples, c.wall_time_s);
   else
     std::printf("clearance    no two bodies that are not jointed together both have a solid\n");
   for (const sim::ClearanceContact& x : c.contacts) {

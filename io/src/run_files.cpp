@@ -271,6 +271,7 @@ void write_clearance(JsonWriter& json, const sim::RunSummary& summary) {
     json.value("distance", p.distance).value("t", p.t).end_object();
   }
   json.end_array();
+  json.value("listed_within", c.listed_within).value("pairs_beyond", c.pairs_beyond);
   json.begin_array("without_solid");
   for (const std::string& b : c.without_solid) json.value("", b);
   json.end_array();

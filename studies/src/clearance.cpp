@@ -11,6 +11,7 @@
 #include <string>
 
 #include "unfurl/sim/kinematics.hpp"
+#include "unfurl/studies/clearance_broad_phase.hpp"
 
 namespace unfurl::studies {
 
@@ -32,6 +33,7 @@ struct PhysicalBody {
   int body = sim::kBase;  // the model body its solids are on
   std::vector<FclSolid> solids;
   double reach = 0;
+  BodyBox bound;  // body frame
 };
 
 std::shared_ptr<fcl::CollisionGeometryd> fcl_geometry(const Solid& s) {
@@ -86,8 +88,29 @@ class ClearanceCheck {
     sample_poses();
   }
 
+  // The pairs that come within a margin of each other, the margin doubled
+  // from a tenth of the largest body's reach until the closest pair
+  // measured lies within it: every pair left out is then farther apart
+  // than the margin, and than the closest, throughout.
   sim::Clearance run() {
-    for (const auto& [a, b] : pairs_) scan(a, b);
+    std::vector<bool> measured(pairs_.size(), false);
+    long left = static_cast<long>(pairs_.size());
+    double margin = 0.1 * length_;
+    for (;;) {
+      const NearPairs near(
+          boxes_, poses_.size(), [&](std::size_t k, int s) -> const sim::Pose& { return pose(poses_[k], s); }, margin);
+      for (std::size_t i = 0; i < pairs_.size(); ++i) {
+        const auto [a, b] = pairs_[i];
+        if (measured[i] || !near.near(a, b)) continue;
+        scan(a, b);
+        measured[i] = true;
+        --left;
+      }
+      if (left == 0 || closest_ <= margin) break;
+      margin = margin > 0 ? 2 * margin : kInf;
+    }
+    out_.listed_within = margin;
+    out_.pairs_beyond = left;
     std::sort(out_.pairs.begin(), out_.pairs.end(),
               [](const auto& x, const auto& y) { return x.distance < y.distance; });
     std::stable_sort(out_.contacts.begin(), out_.contacts.end(),
@@ -114,6 +137,7 @@ class ClearanceCheck {
         p.solids.push_back(std::move(f));
         p.reach = std::max(p.reach, s.reach());
       }
+      p.bound = enclosing_box(list);
       if (p.solids.empty()) out_.without_solid.push_back(name);
       bodies_.push_back(std::move(p));
       return static_cast<int>(bodies_.size()) - 1;
@@ -158,6 +182,7 @@ class ClearanceCheck {
       poses_at(samples[k].y.data() + trajectory_.layout.q(), poses_[k]);
     for (const PhysicalBody& b : bodies_) length_ = std::max(length_, b.reach);
     resolution_ = 1e-4 * length_;
+    for (const PhysicalBody& b : bodies_) boxes_.push_back(b.bound);
   }
 
   // The distance between two bodies' solids at the poses (0: touching or
@@ -247,6 +272,7 @@ class ClearanceCheck {
       moved = 0;
     }
     if (best.distance > 0) refine(a, b, best);
+    closest_ = std::min(closest_, best.distance);
     out_.pairs.push_back({bodies_[a].name, bodies_[b].name, best.distance, best.t});
   }
 
@@ -326,6 +352,8 @@ class ClearanceCheck {
   int base_slot_ = -1;
   std::vector<std::pair<int, int>> pairs_;
   std::vector<std::vector<sim::Pose>> poses_;  // per sample
+  std::vector<BodyBox> boxes_;                 // per physical body
+  double closest_ = kInf;                      // over the pairs measured
   double length_ = 0;                          // the largest reach
   // How close to a pair's closest approach its reported one is: a
   // ten-thousandth of the largest body.

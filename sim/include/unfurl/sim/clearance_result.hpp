@@ -27,7 +27,14 @@ struct ClearanceContact {
 };
 
 struct Clearance {
-  std::vector<PairClearance> pairs;        // every pair checked, closest first
+  // Every pair that came within `listed_within` (m) of each other at some
+  // time, closest first. The other `pairs_beyond` pairs stayed farther
+  // apart than that throughout (their bounding spheres did), and farther
+  // than the closest pair: a tenth of the largest body's reach, doubled
+  // until it holds the closest pair.
+  std::vector<PairClearance> pairs;
+  double listed_within = 0;
+  long pairs_beyond = 0;
   std::vector<ClearanceContact> contacts;  // by time
   std::vector<std::string> without_solid;  // bodies left out: no mesh and no collision shapes
   std::vector<std::string> unread;         // meshes that could not be had, and why

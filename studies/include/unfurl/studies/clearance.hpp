@@ -6,7 +6,10 @@
 // The distances are the Flexible Collision Library's (FCL, Debian's
 // libfcl-dev): exact between boxes, spheres, cylinders and triangle meshes,
 // with bounding-volume hierarchies that make a mesh's query cost grow with
-// the log of its triangles. Most queries are never made: a pair whose last
+// the log of its triangles. Only pairs whose swept bounding boxes come
+// within a margin are measured at all (clearance_broad_phase.hpp): a tenth
+// of the largest body's reach, doubled until it holds the closest pair.
+// Most of their queries are never made either: a pair whose last
 // measured distance exceeds how far its bodies can have moved since (the
 // chord of each body's origin plus its reach times the angle turned,
 // sample to sample) is certified clear. Where two measured samples do not

@@ -1,0 +1,56 @@
+// The broad phase of the clearance check: which pairs of bodies can come
+// within a margin of each other at all over a run, from boxes that enclose
+// each body's solids, so that the exact distances (FCL's) are asked only of
+// those. Its cost grows with the bodies' near neighbours, not with the
+// square of their number; boxes rather than spheres, because a stowed
+// array's flat panels lie a few millimetres apart in a stack, where every
+// panel's sphere takes in every other's.
+//
+// Between two samples a body lies in the union of its boxes at the two,
+// grown by the centre's chord plus its radius times the angle it turned:
+// twice the path length that the clearance check's own bounds allow a point
+// (the chord plus the turn), so that an arc-shaped path is covered too.
+// Pairs are found interval by interval by sweep and prune along x.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "unfurl/sim/kinematics.hpp"
+#include "unfurl/sim/spatial.hpp"
+#include "unfurl/studies/body_solids.hpp"
+
+namespace unfurl::studies {
+
+// An axis-aligned box in a body's frame about its solids, and the largest
+// distance of their points from its centre.
+struct BodyBox {
+  sim::Vec3 centre = sim::Vec3::Zero(), half = sim::Vec3::Zero();
+  double radius = -1;  // negative: no solids
+};
+
+BodyBox enclosing_box(const std::vector<Solid>& solids);
+
+// Whether each pair of bodies comes within `margin` of each other at some
+// time of a run: a symmetric table, row-major.
+class NearPairs {
+ public:
+  // pose(k, i): body i's pose at sample k of `samples` (base frame).
+  using PoseAt = std::function<const sim::Pose&(std::size_t k, int i)>;
+  NearPairs(const std::vector<BodyBox>& boxes, std::size_t samples, const PoseAt& pose, double margin);
+  bool near(int a, int b) const { return table_[static_cast<std::size_t>(a) * n_ + b]; }
+
+ private:
+  struct Span {
+    sim::Vec3 low, high;
+  };
+  // spans[i] for the bodies in `order_`.
+  void sweep(const std::vector<Span>& spans, double margin);
+
+  std::size_t n_ = 0;
+  std::vector<bool> table_;
+  std::vector<int> bodies_;  // those with solids
+  std::vector<int> order_;   // scratch
+};
+
+}  // namespace unfurl::studies

@@ -1,0 +1,105 @@
+#include "unfurl/studies/clearance_broad_phase.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+
+namespace unfurl::studies {
+
+namespace {
+
+using Kind = sim::CollisionShape::Kind;
+
+// A primitive's own enclosing sphere's radius, about its offset.
+double primitive_radius(const Solid& s) {
+  switch (s.kind) {
+    case Kind::box: return 0.5 * s.size.norm();
+    case Kind::sphere: return s.radius;
+    case Kind::cylinder: return std::hypot(s.radius, 0.5 * s.length);
+    case Kind::mesh: break;
+  }
+  return 0;
+}
+
+// Each solid's extent as points with a radius about them (body frame): a
+// primitive's corners (a box's eight; a sphere's and a cylinder's centre
+// with their radius), a mesh's vertices.
+template <typename Visit>
+void for_each_extent(const std::vector<Solid>& solids, Visit visit) {
+  for (const Solid& s : solids) {
+    if (s.kind == Kind::box) {
+      for (int c = 0; c < 8; ++c) {
+        const sim::Vec3 corner(c & 1 ? 0.5 : -0.5, c & 2 ? 0.5 : -0.5, c & 4 ? 0.5 : -0.5);
+        visit(s.offset + s.rotation * corner.cwiseProduct(s.size), 0.0);
+      }
+    } else if (s.kind != Kind::mesh) {
+      visit(s.offset, primitive_radius(s));
+    } else {
+      for (const sim::Vec3& v : s.mesh.vertices) visit(s.offset + s.rotation * v, 0.0);
+    }
+  }
+}
+
+}  // namespace
+
+BodyBox enclosing_box(const std::vector<Solid>& solids) {
+  Eigen::AlignedBox3d box;
+  for_each_extent(solids, [&](const sim::Vec3& p, double r) {
+    box.extend(p - sim::Vec3::Constant(r));
+    box.extend(p + sim::Vec3::Constant(r));
+  });
+  BodyBox out;
+  if (box.isEmpty()) return out;
+  out.centre = box.center();
+  out.half = 0.5 * box.sizes();
+  out.radius = 0;
+  for_each_extent(solids, [&](const sim::Vec3& p, double r) { out.radius = std::max(out.radius, (p - out.centre).norm() + r); });
+  return out;
+}
+
+NearPairs::NearPairs(const std::vector<BodyBox>& boxes, std::size_t samples, const PoseAt& pose, double margin)
+    : n_(boxes.size()), table_(n_ * n_, false) {
+  for (std::size_t i = 0; i < n_; ++i)
+    if (boxes[i].radius >= 0) bodies_.push_back(static_cast<int>(i));
+  // Body i's box at sample k in the base frame, and its centre.
+  const auto placed = [&](std::size_t k, int i, sim::Vec3& centre) {
+    const sim::Pose& p = pose(k, i);
+    centre = p.position + p.rotation.transpose() * boxes[i].centre;
+    const sim::Vec3 half = p.rotation.transpose().cwiseAbs() * boxes[i].half;
+    return Span{centre - half, centre + half};
+  };
+  std::vector<Span> spans(n_);
+  sim::Vec3 c0, c1;
+  if (samples == 1) {
+    for (int i : bodies_) spans[i] = placed(0, i, c0);
+    sweep(spans, margin);
+  }
+  for (std::size_t k = 1; k < samples; ++k) {
+    for (int i : bodies_) {
+      const Span a = placed(k - 1, i, c0), b = placed(k, i, c1);
+      const double turn = Eigen::AngleAxisd(pose(k, i).rotation * pose(k - 1, i).rotation.transpose()).angle();
+      const sim::Vec3 grow = sim::Vec3::Constant((c1 - c0).norm() + boxes[i].radius * turn);
+      spans[i] = {a.low.cwiseMin(b.low) - grow, a.high.cwiseMax(b.high) + grow};
+    }
+    sweep(spans, margin);
+  }
+}
+
+// Every pair of boxes within `margin` of each other along all three axes
+// (so their solids are, at least): sorted by their low x, each is compared
+// with those that begin before it ends.
+void NearPairs::sweep(const std::vector<Span>& spans, double margin) {
+  order_ = bodies_;
+  std::sort(order_.begin(), order_.end(), [&](int a, int b) { return spans[a].low.x() < spans[b].low.x(); });
+  for (std::size_t u = 0; u < order_.size(); ++u) {
+    const Span& a = spans[order_[u]];
+    for (std::size_t v = u + 1; v < order_.size() && spans[order_[v]].low.x() <= a.high.x() + margin; ++v) {
+      const Span& b = spans[order_[v]];
+      if (((b.low - a.high).array() > margin).any() || ((a.low - b.high).array() > margin).any()) continue;
+      const std::size_t i = order_[u], j = order_[v];
+      table_[i * n_ + j] = table_[j * n_ + i] = true;
+    }
+  }
+}
+
+}  // namespace unfurl::studies
