@@ -452,7 +452,7 @@ std::shared_ptr<const flexible::FlexibleBody> SceneReader::read_flexible(const Y
 // glass and adhesive that add mass, not stiffness).
 flexible::PlateBodySpec SceneReader::read_plate(const YAML::Node& node, const std::string& field) const {
   check_keys(node, {"size", "corner", "normal", "bending_stiffness", "youngs_modulus", "thickness", "poisson",
-                    "mass_per_area", "elements", "root_edge", "hinge_lines"},
+                    "mass_per_area", "elements", "root_edge", "hinge_lines", "brackets"},
              field);
   flexible::PlateBodySpec spec;
   flexible::PlateSpec& p = spec.plate;
@@ -512,6 +512,26 @@ flexible::PlateBodySpec SceneReader::read_plate(const YAML::Node& node, const st
       for (flexible::PlateEdge seen : spec.hinge_lines)
         if (seen == e) fail(lines[k], at, "this edge is listed twice");
       spec.hinge_lines.push_back(e);
+    }
+  }
+  if (const YAML::Node brackets = node["brackets"]) {
+    const bool along_x = spec.root_edge == flexible::PlateEdge::y0 || spec.root_edge == flexible::PlateEdge::y1;
+    const double edge_length = along_x ? p.length_x : p.length_y;
+    if (!brackets.IsSequence() || brackets.size() == 0)
+      fail(brackets, field + ".brackets", "expected a list of spans along the hinge lines, [[from, to], ...] (m)");
+    for (std::size_t k = 0; k < brackets.size(); ++k) {
+      const std::string at = input::index_field(field + ".brackets", k);
+      const std::vector<double> span = numbers(brackets[k], at);
+      if (span.size() != 2 || !(span[0] >= 0) || !(span[0] <= span[1]) || !(span[1] <= edge_length))
+        fail(brackets[k], at,
+             "expected a span [from, to] along the edge, 0 <= from <= to <= " + format_number(edge_length) +
+                 " m (the edge's length)");
+      const double h = edge_length / (along_x ? p.elements_x : p.elements_y);
+      if (std::ceil(span[0] / h - 1e-9) > std::floor(span[1] / h + 1e-9))
+        fail(brackets[k], at,
+             "this span fastens no mesh node: they lie " + format_number(h) +
+                 " m apart along the edge (its length / elements); widen it or refine the mesh");
+      spec.brackets.push_back({span[0], span[1]});
     }
   }
   return spec;

@@ -165,6 +165,12 @@ void flexible_body(std::ostream& out, const flexible::PlateBodySpec& spec, const
     for (std::size_t k = 0; k < spec.hinge_lines.size(); ++k) out << (k ? ", " : "") << edge_name(spec.hinge_lines[k]);
     out << "]";
   }
+  if (!spec.brackets.empty()) {
+    out << ", brackets: [";
+    for (std::size_t k = 0; k < spec.brackets.size(); ++k)
+      out << (k ? ", " : "") << numbers({spec.brackets[k][0], spec.brackets[k][1]});
+    out << "]";
+  }
   out << "}\n"
       << pad << "  modes: " << modes_text(spec.normal_modes, spec.modes_up_to_hz) << "\n"
       << pad << "  damping: " << damping_text(spec.damping) << "\n";

@@ -111,6 +111,39 @@ bool over_edge(const PlateSpec& p, PlateEdge edge, const Eigen::Vector3d& u, dou
 
 double plate_size(const PlateSpec& p) { return std::max(p.length_x, p.length_y); }
 
+// The nodes of an edge that the plate's brackets fasten to its pin: all of
+// them without brackets.
+std::vector<int> fastened_nodes(const PlateBodySpec& spec, PlateEdge edge) {
+  const PlateSpec& p = spec.plate;
+  const std::vector<int> nodes = edge_nodes(p, edge);
+  if (spec.brackets.empty()) return nodes;
+  const bool along_x = edge == PlateEdge::y0 || edge == PlateEdge::y1;
+  const double h = along_x ? p.length_x / p.elements_x : p.length_y / p.elements_y;
+  const double tolerance = 1e-9 * plate_size(p);
+  std::vector<int> out;
+  std::vector<bool> used(spec.brackets.size(), false);
+  for (std::size_t k = 0; k < nodes.size(); ++k)
+    for (std::size_t b = 0; b < spec.brackets.size(); ++b)
+      if (k * h >= spec.brackets[b][0] - tolerance && k * h <= spec.brackets[b][1] + tolerance) {
+        if (out.empty() || out.back() != nodes[k]) out.push_back(nodes[k]);
+        used[b] = true;
+      }
+  for (std::size_t b = 0; b < spec.brackets.size(); ++b)
+    if (!used[b])
+      throw std::invalid_argument("flexible plate: the bracket [" + std::to_string(spec.brackets[b][0]) + ", " +
+                                  std::to_string(spec.brackets[b][1]) + "] fastens no mesh node (they lie " +
+                                  std::to_string(h) + " m apart along the edge): widen it or refine the mesh");
+  return out;
+}
+
+// All four degrees of freedom of each node: a clamp.
+std::vector<int> clamped_dofs(const Structure& plate, const std::vector<int>& nodes) {
+  std::vector<int> dofs;
+  for (int node : nodes)
+    for (int k = 0; k < plate.dofs_per_node; ++k) dofs.push_back(plate.dof(node, k));
+  return dofs;
+}
+
 }  // namespace
 
 FlexibleBody beam_body(const BeamBodySpec& spec) {
@@ -160,20 +193,20 @@ FlexibleBody plate_body(const PlateBodySpec& spec) {
   const PlateSpec& p = spec.plate;
   const Eigen::Matrix3d R = body_from_plate(spec.normal);
   const Structure plate = plate_structure(p);
-  PlateEdges held_edges;
-  (spec.root_edge == PlateEdge::x0   ? held_edges.x0
-   : spec.root_edge == PlateEdge::x1 ? held_edges.x1
-   : spec.root_edge == PlateEdge::y0 ? held_edges.y0
-                                     : held_edges.y1) = EdgeSupport::clamped;
+  for (const auto& [from, to] : spec.brackets) {
+    const double edge = spec.root_edge == PlateEdge::y0 || spec.root_edge == PlateEdge::y1 ? p.length_x : p.length_y;
+    if (!(from >= 0 && from <= to && to <= edge * (1 + 1e-12)))
+      throw std::invalid_argument("flexible plate: a bracket is a span [from, to] along the edge, within its length");
+  }
   ModalReduction reduction;
-  reduction.frame_dofs = held_dofs(p, held_edges);
+  reduction.frame_dofs = clamped_dofs(plate, fastened_nodes(spec, spec.root_edge));
   reduction.normal_modes = spec.normal_modes;
   reduction.normal_modes_up_to_hz = spec.modes_up_to_hz;
   // The hinge line, the one edge a plate ties.
   for (PlateEdge edge : spec.hinge_lines)
     if (edge != opposite(spec.root_edge))
       throw std::invalid_argument("flexible plate: a hinge line is the edge opposite the root edge");
-  if (!spec.hinge_lines.empty()) reduction.tied_nodes.push_back(edge_nodes(p, opposite(spec.root_edge)));
+  if (!spec.hinge_lines.empty()) reduction.tied_nodes.push_back(fastened_nodes(spec, opposite(spec.root_edge)));
   std::vector<PlatePoint> attachments;
   for (const Eigen::Vector3d& point : spec.attachments) {
     const PlatePoint where = locate(spec, point);
@@ -215,6 +248,8 @@ PlateBodySpec scaled(const PlateBodySpec& spec, double L, double M) {
   out.thickness *= L;
   out.corner *= L;
   for (Eigen::Vector3d& a : out.attachments) a *= L;
+  for (auto& bracket : out.brackets)
+    for (double& s : bracket) s *= L;
   return out;
 }
 
