@@ -13,44 +13,55 @@ namespace {
 
 constexpr int kQuasiStaticPoints = 101;
 
+// The elements whose generalized forces count as harness torques on any
+// driven joint: all but the joint elements (springs, dampers, friction,
+// stops, latches: each acts on its own joint) and joint compliance.
+std::vector<std::size_t> harness_elements(const Scene& scene) {
+  std::vector<std::size_t> harness;
+  for (std::size_t k = 0; k < scene.elements.size(); ++k) {
+    const ForceElement& e = *scene.elements[k];
+    if (!dynamic_cast<const Latch*>(&e) && !dynamic_cast<const JointElement*>(&e) &&
+        !dynamic_cast<const JointCompliance*>(&e))
+      harness.push_back(k);
+  }
+  return harness;
+}
+
 // What acts on one driven joint, and how to weigh it.
 class JointMargin {
  public:
-  JointMargin(Dynamics& dynamics, int joint, double direction, const TorqueMarginFactors& f)
-      : dynamics_(dynamics), model_(dynamics.model()), joint_(joint), s_(direction), f_(f) {
+  JointMargin(const Dynamics& dynamics, int joint, double direction, const TorqueMarginFactors& f)
+      : model_(dynamics.model()), joint_(joint), s_(direction), f_(f) {
     const std::size_t c = model_.velocity_of(joint).value;
     inertia_ = dynamics.scales().inertia.size() > c ? dynamics.scales().inertia[c] : 0.0;
+    for (const auto& e : dynamics.scene().elements)
+      if (const auto* own = dynamic_cast<const JointElement*>(e.get()); own && own->joint == joint_)
+        own_.push_back(own);
   }
 
-  // The torques at positions q and rates w (w = 0: at rest).
-  TorqueMarginPoint at(double t, const std::vector<double>& q, const std::vector<double>& w) {
+  // The torques at positions q and rates w (w = 0: at rest), `harness`
+  // the generalized forces of harness_elements() there.
+  TorqueMarginPoint at(double t, const std::vector<double>& q, const std::vector<double>& w,
+                       const std::vector<Eigen::VectorXd>& harness) const {
     TorqueMarginPoint p;
     p.t = t;
     p.q = q[model_.position_of(joint_).value];
     const double rate = w[model_.velocity_of(joint_).value];
     const double moving = s_ * rate;  // > 0 towards the latch
-    const Scene& scene = dynamics_.scene();
-    for (std::size_t k = 0; k < scene.elements.size(); ++k) {
-      const ForceElement& e = *scene.elements[k];
-      if (const auto* spring = dynamic_cast<const JointSpring*>(&e)) {
-        if (spring->joint != joint_) continue;
+    for (const JointElement* e : own_) {
+      if (const auto* spring = dynamic_cast<const JointSpring*>(e)) {
         const double elastic = s_ * spring->elastic_torque(p.q);
         (elastic > 0 ? p.drive : p.spring) += std::abs(elastic);
         if (moving > 0) p.damping += spring->damping * std::abs(rate);
-      } else if (const auto* damper = dynamic_cast<const JointDamper*>(&e)) {
-        if (damper->joint == joint_ && moving > 0) p.damping += damper->damping * std::abs(rate);
-      } else if (const auto* friction = dynamic_cast<const JointFriction*>(&e)) {
-        if (friction->joint == joint_) p.friction += friction->coulomb + friction->viscous * std::abs(rate);
-      } else if (const auto* stop = dynamic_cast<const JointStop*>(&e)) {
-        if (stop->joint == joint_) p.spring += std::max(0.0, -s_ * stop->torque(p.q, rate));
-      } else if (dynamic_cast<const Latch*>(&e) || dynamic_cast<const JointElement*>(&e) ||
-                 dynamic_cast<const JointCompliance*>(&e)) {
-        continue;  // a latch holds nothing before it engages; others act on other joints
-      } else {
-        const Eigen::VectorXd Q = dynamics_.element_generalized_forces(k, q.data(), w.data());
-        p.harness += std::max(0.0, -s_ * Q[model_.velocity_of(joint_).value]);
-      }
+      } else if (const auto* damper = dynamic_cast<const JointDamper*>(e)) {
+        if (moving > 0) p.damping += damper->damping * std::abs(rate);
+      } else if (const auto* friction = dynamic_cast<const JointFriction*>(e)) {
+        p.friction += friction->coulomb + friction->viscous * std::abs(rate);
+      } else if (const auto* stop = dynamic_cast<const JointStop*>(e)) {
+        p.spring += std::max(0.0, -s_ * stop->torque(p.q, rate));
+      }  // a latch holds nothing before it engages
     }
+    for (const Eigen::VectorXd& Q : harness) p.harness += std::max(0.0, -s_ * Q[model_.velocity_of(joint_).value]);
     p.inertia = f_.required_acceleration * inertia_;
     const double resisting = f_.spring * p.spring + f_.friction * p.friction + f_.damping * p.damping +
                              f_.harness * p.harness + f_.inertia * p.inertia;
@@ -59,13 +70,21 @@ class JointMargin {
   }
 
  private:
-  Dynamics& dynamics_;
   const Model& model_;
   int joint_;
   double s_;
   const TorqueMarginFactors& f_;
   double inertia_ = 0;
+  std::vector<const JointElement*> own_;  // the elements on joint_, in the scene's order
 };
+
+// The harness elements' generalized forces at (q, w).
+std::vector<Eigen::VectorXd> harness_forces(Dynamics& dynamics, const std::vector<std::size_t>& harness,
+                                            const std::vector<double>& q, const std::vector<double>& w) {
+  std::vector<Eigen::VectorXd> Q;
+  for (std::size_t k : harness) Q.push_back(dynamics.element_generalized_forces(k, q.data(), w.data()));
+  return Q;
+}
 
 int worst_of(const std::vector<TorqueMarginPoint>& points) {
   int worst = -1;
@@ -104,18 +123,20 @@ double JointTorqueMargin::worst() const {
 }
 
 std::vector<int> driven_joints(const Scene& scene) {
+  std::vector<bool> sprung(scene.model.joints.size(), false);
+  for (const auto& e : scene.elements)
+    if (const auto* s = dynamic_cast<const JointSpring*>(e.get())) sprung[s->joint] = true;
   std::vector<int> joints;
   for (const Latch* latch : scene.latches()) {
     const int j = latch->joint;
-    const bool sprung = std::any_of(scene.elements.begin(), scene.elements.end(), [&](const auto& e) {
-      const auto* s = dynamic_cast<const JointSpring*>(e.get());
-      return s && s->joint == j;
-    });
-    if (sprung && std::find(joints.begin(), joints.end(), j) == joints.end()) joints.push_back(j);
+    if (sprung[j] && std::find(joints.begin(), joints.end(), j) == joints.end()) joints.push_back(j);
   }
   return joints;
 }
 
+// Each driven joint's margin at every sample before its latch engages (the
+// samples' rates and harness forces found once for all joints), then at
+// kQuasiStaticPoints angles at rest.
 std::vector<JointTorqueMargin> torque_margins(const Scene& scene, const Trajectory& run) {
   const TorqueMarginFactors& factors = scene.torque_margin;
   std::vector<JointTorqueMargin> out;
@@ -123,6 +144,12 @@ std::vector<JointTorqueMargin> torque_margins(const Scene& scene, const Trajecto
   Dynamics dynamics(scene);
   const Model& model = scene.model;
   const std::vector<const Latch*> latches = scene.latches();
+  struct Travel {
+    int c;
+    double start, end, s, latched_at;
+    JointMargin margin;
+  };
+  std::vector<Travel> travels;
   for (const int j : driven_joints(scene)) {
     // Its first latch: where its travel ends.
     int l = 0;
@@ -133,24 +160,30 @@ std::vector<JointTorqueMargin> torque_margins(const Scene& scene, const Trajecto
     double latched_at = std::numeric_limits<double>::infinity();
     for (const LatchEvent& e : run.events)
       if (e.latch == l) latched_at = std::min(latched_at, e.t);
-    JointMargin margin(dynamics, j, s, factors);
-    JointTorqueMargin m;
-    m.joint = model.joints[j].name;
-    std::vector<double> w(model.nv);
-    for (const Sample& sample : run.samples) {
-      if (sample.t >= latched_at) break;
-      const std::vector<double> q(sample.y.begin(), sample.y.begin() + model.nq);
-      rates_from_position_rates(model, q.data(), sample.q_dot.data(), w.data());
-      m.run.push_back(margin.at(sample.t, q, w));
-    }
-    const std::vector<double> at_rest(model.nv, 0.0);
+    travels.push_back({c, start, end, s, latched_at, JointMargin(dynamics, j, s, factors)});
+    out.emplace_back();
+    out.back().joint = model.joints[j].name;
+  }
+  const std::vector<std::size_t> harness = harness_elements(scene);
+  std::vector<double> w(model.nv);
+  for (const Sample& sample : run.samples) {
+    if (std::none_of(travels.begin(), travels.end(), [&](const Travel& x) { return sample.t < x.latched_at; })) break;
+    const std::vector<double> q(sample.y.begin(), sample.y.begin() + model.nq);
+    rates_from_position_rates(model, q.data(), sample.q_dot.data(), w.data());
+    const std::vector<Eigen::VectorXd> Q = harness_forces(dynamics, harness, q, w);
+    for (std::size_t i = 0; i < travels.size(); ++i)
+      if (sample.t < travels[i].latched_at) out[i].run.push_back(travels[i].margin.at(sample.t, q, w, Q));
+  }
+  const std::vector<double> at_rest(model.nv, 0.0);
+  for (std::size_t i = 0; i < travels.size(); ++i) {
+    const Travel& x = travels[i];
     for (int k = 0; k < kQuasiStaticPoints; ++k) {
-      const double target = start + (end - start) * k / (kQuasiStaticPoints - 1);
-      m.quasi_static.push_back(margin.at(std::nan(""), state_at_angle(run, c, s, start, target), at_rest));
+      const double target = x.start + (x.end - x.start) * k / (kQuasiStaticPoints - 1);
+      const std::vector<double> q = state_at_angle(run, x.c, x.s, x.start, target);
+      out[i].quasi_static.push_back(x.margin.at(std::nan(""), q, at_rest, harness_forces(dynamics, harness, q, at_rest)));
     }
-    m.worst_run = worst_of(m.run);
-    m.worst_quasi_static = worst_of(m.quasi_static);
-    out.push_back(std::move(m));
+    out[i].worst_run = worst_of(out[i].run);
+    out[i].worst_quasi_static = worst_of(out[i].quasi_static);
   }
   return out;
 }
