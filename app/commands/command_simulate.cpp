@@ -13,6 +13,7 @@
 #include "unfurl/io/run_files.hpp"
 #include "scene_clearance.hpp"
 #include "scene_options.hpp"
+#include "unfurl/sim/elements/elasticity.hpp"
 #include "unfurl/sim/summary.hpp"
 
 namespace unfurl::app {
@@ -93,6 +94,21 @@ void print_element_peaks(const std::vector<sim::RunSummary::ElementPeakValue>& p
                 e->peak.value, e->unit.c_str(), e->name.c_str(), e->peak.t);
     if (e->quantity == "peak_acceleration") std::printf(" (%.3g g)", e->peak.value / sim::kStandardGravity);
     std::printf("\n");
+  }
+}
+
+// A flexible body bent beyond what its model is meant for.
+void print_large_deflections(const sim::Scene& scene, const sim::RunSummary& s) {
+  for (const auto& e : s.element_peaks) {
+    if (e.quantity != "peak_deflection" || std::isnan(e.peak.t)) continue;
+    const std::optional<int> body = scene.model.find_body(e.name);
+    if (!body || !scene.model.bodies[*body].flexible) continue;
+    const double size = scene.model.bodies[*body].flexible->size();
+    if (e.peak.value > sim::Elasticity::kLargeDeflection * size)
+      std::printf("warning      %s deflects %.3g m at t = %.6f s, %.0f %% of its %.3g m: a flexible body is a small\n"
+                  "             deformation on a floating frame, meant for a few per cent of its size; its\n"
+                  "             results this far out are not the structure's\n",
+                  e.name.c_str(), e.peak.value, e.peak.t, 100 * e.peak.value / size, size);
   }
 }
 
@@ -213,6 +229,7 @@ void print_summary(const sim::Scene& scene, const sim::RunResult& result, const 
                 latch->peak.t);
   print_hinge_force_peaks(s);
   print_element_peaks(s.element_peaks, "");
+  print_large_deflections(scene, s);
   print_element_peaks(s.sensor_peaks, "sensors");
   print_torque_margins(s);
   print_clearance(s);

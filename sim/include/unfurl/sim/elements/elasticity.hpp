@@ -28,6 +28,13 @@ class Elasticity : public ForceElement {
   void add_joint_stiffness(const ElementState& s, RatesOut stiffness, RatesOut damping) const override;
   std::vector<LoadColumn> load_columns(const Model& model) const override;  // elastic_energy, deflection
   void load_values(const ElementState& s, double* values) const override;
+  // The largest deflection, as a fraction of the body's size, the model is
+  // meant for: its kinetic energy is kept to second order in the
+  // deformation and its stiffness is linear, so their errors grow as the
+  // square of it (a per cent at a tenth); a run beyond is warned about.
+  static constexpr double kLargeDeflection = 0.1;
+  // peak_deflection: the largest displacement of its mesh over the run.
+  std::vector<ElementPeak> peaks() const override { return {{"peak_deflection", 1, 1}}; }
   // The damping ratio, and the beam's bending stiffness (when both planes'
   // are equal) and mass per length: edited, the body is meshed and
   // reduced again.
