@@ -33,6 +33,7 @@ StowedRun stowed_run(int stages) {
   settings.rtol = 1e-7;
   settings.atol = 1e-9;
   out.run = sim::simulate(out.file.scene, settings);
+  if (out.run.status != sim::RunStatus::finished) throw std::runtime_error("the stowed run failed: " + describe(out.run.failure));
   return out;
 }
 

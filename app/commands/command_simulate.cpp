@@ -106,8 +106,8 @@ void print_large_deflections(const sim::Scene& scene, const sim::RunSummary& s) 
     const double size = scene.model.bodies[*body].flexible->size();
     if (e.peak.value > sim::Elasticity::kLargeDeflection * size)
       std::printf("warning      %s deflects %.3g m at t = %.6f s, %.0f %% of its %.3g m: a flexible body is a small\n"
-                  "             deformation on a floating frame, meant for a few per cent of its size; its\n"
-                  "             results this far out are not the structure's\n",
+                  "             deformation on a floating frame, its errors growing as the square of that\n"
+                  "             share; past a tenth of its size its results are not the structure's\n",
                   e.name.c_str(), e.peak.value, e.peak.t, 100 * e.peak.value / size, size);
   }
 }
@@ -143,12 +143,14 @@ void print_torque_margins(const sim::RunSummary& s) {
 void print_clearance(const sim::RunSummary& s) {
   if (!s.clearance) return;
   const sim::Clearance& c = *s.clearance;
-  if (const sim::PairClearance* p = c.closest())
-    std::printf("clearance    closest %.4g m, %s and %s at t = %.6f s (%zu pairs within %.3g m, %ld farther; %d "
-                "samples, %.3g s)\n",
-                p->distance, p->body_a.c_str(), p->body_b.c_str(), p->t, c.pairs.size(), c.listed_within,
-                c.pairs_beyond, c.samples, c.wall_time_s);
-  else
+  if (const sim::PairClearance* p = c.closest()) {
+    char beyond[96] = "all measured";
+    if (c.pairs_beyond > 0)
+      std::snprintf(beyond, sizeof beyond, "%ld certified beyond %.3g m", c.pairs_beyond, c.listed_within);
+    std::printf("clearance    closest %.4g m, %s and %s at t = %.6f s (%zu pairs, %s; %d samples, %.3g s)\n",
+                p->distance, p->body_a.c_str(), p->body_b.c_str(), p->t, c.pairs.size(), beyond, c.samples,
+                c.wall_time_s);
+  } else
     std::printf("clearance    no two bodies that are not jointed together both have a solid\n");
   for (const sim::ClearanceContact& x : c.contacts) {
     if (x.t_begin == x.t_end)

@@ -239,8 +239,9 @@ void write_torque_margins(JsonWriter& json, const sim::RunSummary& summary) {
   json.end_object();
 }
 
-// "clearance": the closest pair and every pair's closest approach, the
-// spans of contact, and what was left out; null when not checked.
+// "clearance": the closest pair and the measured pairs' closest approach
+// (listed_within null when every pair was measured), the spans of contact,
+// and what was left out; null when not checked.
 void write_clearance(JsonWriter& json, const sim::RunSummary& summary) {
   if (!summary.clearance) {
     json.null("clearance");
@@ -271,7 +272,11 @@ void write_clearance(JsonWriter& json, const sim::RunSummary& summary) {
     json.value("distance", p.distance).value("t", p.t).end_object();
   }
   json.end_array();
-  json.value("listed_within", c.listed_within).value("pairs_beyond", c.pairs_beyond);
+  if (std::isinf(c.listed_within))
+    json.null("listed_within");
+  else
+    json.value("listed_within", c.listed_within);
+  json.value("pairs_beyond", c.pairs_beyond);
   json.begin_array("without_solid");
   for (const std::string& b : c.without_solid) json.value("", b);
   json.end_array();

@@ -109,10 +109,13 @@ class ClearanceCheck {
       if (left == 0 || closest_ <= margin) break;
       margin = margin > 0 ? 2 * margin : kInf;
     }
-    out_.listed_within = margin;
+    out_.listed_within = left == 0 ? kInf : margin;
     out_.pairs_beyond = left;
-    std::sort(out_.pairs.begin(), out_.pairs.end(),
-              [](const auto& x, const auto& y) { return x.distance < y.distance; });
+    // Among pairs at the same distance (touching), the earliest first, then
+    // the scene's order: the closest pair is the first contact.
+    std::stable_sort(out_.pairs.begin(), out_.pairs.end(), [](const auto& x, const auto& y) {
+      return x.distance < y.distance || (x.distance == y.distance && x.t < y.t);
+    });
     std::stable_sort(out_.contacts.begin(), out_.contacts.end(),
                      [](const auto& x, const auto& y) { return x.t_begin < y.t_begin; });
     out_.samples = static_cast<int>(trajectory_.samples.size());

@@ -10,16 +10,8 @@ namespace {
 
 using Kind = sim::CollisionShape::Kind;
 
-// A primitive's own enclosing sphere's radius, about its offset.
-double primitive_radius(const Solid& s) {
-  switch (s.kind) {
-    case Kind::box: return 0.5 * s.size.norm();
-    case Kind::sphere: return s.radius;
-    case Kind::cylinder: return std::hypot(s.radius, 0.5 * s.length);
-    case Kind::mesh: break;
-  }
-  return 0;
-}
+// A sphere's or a cylinder's enclosing sphere's radius, about its offset.
+double round_radius(const Solid& s) { return s.kind == Kind::sphere ? s.radius : std::hypot(s.radius, 0.5 * s.length); }
 
 // Each solid's extent as points with a radius about them (body frame): a
 // primitive's corners (a box's eight; a sphere's and a cylinder's centre
@@ -33,7 +25,7 @@ void for_each_extent(const std::vector<Solid>& solids, Visit visit) {
         visit(s.offset + s.rotation * corner.cwiseProduct(s.size), 0.0);
       }
     } else if (s.kind != Kind::mesh) {
-      visit(s.offset, primitive_radius(s));
+      visit(s.offset, round_radius(s));
     } else {
       for (const sim::Vec3& v : s.mesh.vertices) visit(s.offset + s.rotation * v, 0.0);
     }
@@ -86,14 +78,20 @@ NearPairs::NearPairs(const std::vector<BodyBox>& boxes, std::size_t samples, con
 }
 
 // Every pair of boxes within `margin` of each other along all three axes
-// (so their solids are, at least): sorted by their low x, each is compared
-// with those that begin before it ends.
+// (so their solids are, at least): sorted by their low end along the axis
+// their centres spread most along (an array hinged about x spreads along y
+// or z, its panels all overlapping in x), each is compared with those that
+// begin before it ends.
 void NearPairs::sweep(const std::vector<Span>& spans, double margin) {
+  Eigen::AlignedBox3d centres;
+  for (int i : bodies_) centres.extend(0.5 * (spans[i].low + spans[i].high));
+  int axis = 0;
+  if (!centres.isEmpty()) centres.sizes().maxCoeff(&axis);
   order_ = bodies_;
-  std::sort(order_.begin(), order_.end(), [&](int a, int b) { return spans[a].low.x() < spans[b].low.x(); });
+  std::sort(order_.begin(), order_.end(), [&](int a, int b) { return spans[a].low[axis] < spans[b].low[axis]; });
   for (std::size_t u = 0; u < order_.size(); ++u) {
     const Span& a = spans[order_[u]];
-    for (std::size_t v = u + 1; v < order_.size() && spans[order_[v]].low.x() <= a.high.x() + margin; ++v) {
+    for (std::size_t v = u + 1; v < order_.size() && spans[order_[v]].low[axis] <= a.high[axis] + margin; ++v) {
       const Span& b = spans[order_[v]];
       if (((b.low - a.high).array() > margin).any() || ((a.low - b.high).array() > margin).any()) continue;
       const std::size_t i = order_[u], j = order_[v];

@@ -1,7 +1,8 @@
 // What a clearance check gives (studies/clearance.hpp computes it): the
-// closest approach of every pair of bodies that are not jointed together,
-// and when any two touched or went through each other. Plain data, for the
-// summary, files, plots and the workbench's timeline.
+// closest approach of the pairs of bodies not jointed together that came
+// near each other (the rest certified farther apart), and when any two
+// touched or went through each other. Plain data, for the summary, files,
+// plots and the workbench's timeline.
 #pragma once
 
 #include <string>
@@ -27,11 +28,14 @@ struct ClearanceContact {
 };
 
 struct Clearance {
-  // Every pair that came within `listed_within` (m) of each other at some
-  // time, closest first. The other `pairs_beyond` pairs stayed farther
-  // apart than that throughout (their bounding spheres did), and farther
-  // than the closest pair: a tenth of the largest body's reach, doubled
-  // until it holds the closest pair.
+  // The pairs measured, closest first (at equal distances, as touching
+  // pairs are, the earliest first): every pair that came within
+  // `listed_within` (m) of each other at some time, and some farther ones
+  // (their swept bounding boxes came that near). The other `pairs_beyond`
+  // pairs stayed farther apart than `listed_within` throughout (their
+  // boxes did), and so farther than the closest pair: a tenth of the
+  // largest body's reach, doubled until it holds the closest pair;
+  // infinite when every pair was measured.
   std::vector<PairClearance> pairs;
   double listed_within = 0;
   long pairs_beyond = 0;

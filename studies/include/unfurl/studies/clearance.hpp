@@ -1,7 +1,8 @@
-// The clearance between a run's bodies: for every pair not jointed together
-// (a joint, a loop's split body or a bushing holds them at a pivot where
-// they meet by design), the smallest distance between their solids over the
-// run and when, and every span in which they touched or interpenetrated.
+// The clearance between a run's bodies not jointed together (a joint, a
+// loop's split body or a bushing holds them at a pivot where they meet by
+// design): the smallest distance between their solids over the run and
+// when, for every pair that comes near (the others certified farther
+// apart), and every span in which two touched or interpenetrated.
 //
 // The distances are the Flexible Collision Library's (FCL, Debian's
 // libfcl-dev): exact between boxes, spheres, cylinders and triangle meshes,

@@ -10,7 +10,8 @@
 // grown by the centre's chord plus its radius times the angle it turned:
 // twice the path length that the clearance check's own bounds allow a point
 // (the chord plus the turn), so that an arc-shaped path is covered too.
-// Pairs are found interval by interval by sweep and prune along x.
+// Pairs are found interval by interval by sweep and prune along the axis
+// the bodies spread most along.
 #pragma once
 
 #include <functional>
@@ -44,7 +45,7 @@ class NearPairs {
   struct Span {
     sim::Vec3 low, high;
   };
-  // spans[i] for the bodies in `order_`.
+  // spans[i], indexed by body, for the bodies in `bodies_`.
   void sweep(const std::vector<Span>& spans, double margin);
 
   std::size_t n_ = 0;

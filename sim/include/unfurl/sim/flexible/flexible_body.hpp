@@ -121,8 +121,9 @@ struct PlateBodySpec {
   PlateEdge root_edge = PlateEdge::y0;
   std::vector<PlateEdge> hinge_lines;
   // Where the plate is fastened to its hinge pins, at the root edge and
-  // the hinge line alike: spans [from, to] along them (m, from the edge's
-  // end at the plate's corner), each holding at least one mesh node.
+  // the hinge line alike (one list for both edges, a tied tip edge
+  // included): spans [from, to] along them (m, from the edge's end at the
+  // plate's corner), each holding at least one mesh node.
   // Empty: the whole edge. The pins themselves stay rigid along the whole
   // line; between brackets the plate's edge is free.
   std::vector<std::array<double, 2>> brackets;
