@@ -68,7 +68,7 @@ struct Case {
 
 Case beam_case() {
   const Structure beam = beam_structure(yoke());
-  return {beam_mass_points(yoke()), reduce(beam, {node_dofs(beam, 0), node_dofs(beam, yoke().elements), 3, {}})};
+  return {beam_mass_points(yoke()), reduce(beam, {beam.dofs_of({0}), beam.dofs_of({yoke().elements}), 3, {}})};
 }
 
 // The points' exact positions with the foreshortening: the sum over them

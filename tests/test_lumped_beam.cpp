@@ -130,7 +130,7 @@ double modal_spin_up_largest_tip(int modes, bool stiffening) {
   s.elements = 20;
   const sim::flexible::Structure beam = sim::flexible::beam_structure(s);
   // In-plane bending only: the hub's node and every other component held.
-  std::vector<int> held = sim::flexible::node_dofs(beam, 0);
+  std::vector<int> held = beam.dofs_of({0});
   for (int node = 1; node <= s.elements; ++node)
     for (int k : {0, 2, 3, 4}) held.push_back(beam.dof(node, k));
   const sim::flexible::ModalBody body = sim::flexible::reduce(beam, {held, {}, modes, {}});
@@ -178,7 +178,7 @@ double invariant_spin_up_largest_tip(int modes, bool foreshortening) {
   s.mass_per_length = kSpec.mass_per_length;
   s.elements = 20;
   const sim::flexible::Structure beam = sim::flexible::beam_structure(s);
-  std::vector<int> held = sim::flexible::node_dofs(beam, 0);
+  std::vector<int> held = beam.dofs_of({0});
   for (int node = 1; node <= s.elements; ++node)
     for (int k : {0, 2, 3, 4}) held.push_back(beam.dof(node, k));
   const sim::flexible::ModalBody body = sim::flexible::reduce(beam, {held, {}, modes, {}});

@@ -64,7 +64,7 @@ std::vector<int> concat(std::vector<int> a, const std::vector<int>& b) {
 TEST(ModalBody, EveryModeKeptReproducesTheFreeBeamExactly) {
   const Structure beam = beam_structure(boom());
   const int tip = boom().elements;
-  ModalReduction reduction{node_dofs(beam, 0), node_dofs(beam, tip), 0, {}};
+  ModalReduction reduction{beam.dofs_of({0}), beam.dofs_of({tip}), 0, {}};
   reduction.normal_modes = beam.size() - 12;
   const ModalBody body = reduce(beam, reduction);
   const std::vector<double> reduced = free_frequencies(beam, body), mesh = mesh_free_frequencies(beam);
@@ -77,7 +77,7 @@ TEST(ModalBody, EveryModeKeptReproducesTheFreeBeamExactly) {
 TEST(ModalBody, AFewModesGiveTheFreeBeamFromAbove) {
   const BeamSection s = boom();
   const Structure beam = beam_structure(s);
-  const ModalBody body = reduce(beam, {node_dofs(beam, 0), node_dofs(beam, s.elements), 4, {}});
+  const ModalBody body = reduce(beam, {beam.dofs_of({0}), beam.dofs_of({s.elements}), 4, {}});
   EXPECT_EQ(body.coordinates(), 10);
   const std::vector<double> reduced = free_frequencies(beam, body), mesh = mesh_free_frequencies(beam);
   for (size_t k = 0; k < 4; ++k) {
@@ -100,7 +100,7 @@ TEST(ModalBody, AFewModesGiveTheFreeBeamFromAbove) {
 TEST(ModalBody, FrameHeldModesAreTheCantilevers) {
   const BeamSection s = boom();
   const Structure beam = beam_structure(s);
-  const ModalBody body = reduce(beam, {node_dofs(beam, 0), node_dofs(beam, s.elements), 4, {}});
+  const ModalBody body = reduce(beam, {beam.dofs_of({0}), beam.dofs_of({s.elements}), 4, {}});
   const Eigen::MatrixXd gram = body.shape.transpose() * beam.M * body.shape;
   EXPECT_LT((gram - Eigen::MatrixXd::Identity(10, 10)).cwiseAbs().maxCoeff(), 1e-9);
   for (double EI : {s.bending_stiffness_y, s.bending_stiffness_z}) {
@@ -126,7 +126,7 @@ TEST(ModalBody, APanelsFreeFrequenciesFromItsReducedModel) {
   auto node = [&](int i, int j) { return i + j * (spec.elements_x + 1); };
   const std::vector<int> frame = {plate.dof(node(0, 1), plate_w), plate.dof(node(0, 5), plate_w),
                                   plate.dof(node(0, 1), plate_w_x)};
-  const std::vector<int> interface = concat(node_dofs(plate, node(8, 1)), node_dofs(plate, node(8, 5)));
+  const std::vector<int> interface = concat(plate.dofs_of({node(8, 1)}), plate.dofs_of({node(8, 5)}));
   const ModalBody body = reduce(plate, {frame, interface, 12, {}});
   const std::vector<double> reduced = free_frequencies(plate, body), mesh = mesh_free_frequencies(plate);
   for (size_t k = 0; k < 5; ++k) {
@@ -146,10 +146,10 @@ TEST(ModalBody, APanelsFreeFrequenciesFromItsReducedModel) {
 
 TEST(ModalBody, AFrameThatLeavesARigidMotionFreeIsRefused) {
   const Structure beam = beam_structure(boom());
-  std::vector<int> frame = node_dofs(beam, 0);
+  std::vector<int> frame = beam.dofs_of({0});
   frame.pop_back();  // the rotation about z left free
   EXPECT_THROW(reduce(beam, {frame, {}, 3, {}}), std::invalid_argument);
-  EXPECT_THROW(reduce(beam, {node_dofs(beam, 0), {}, 1000, {}}), std::invalid_argument);
+  EXPECT_THROW(reduce(beam, {beam.dofs_of({0}), {}, 1000, {}}), std::invalid_argument);
 }
 
 // A tie that shares a node with the frame's attachment, an interface node
@@ -157,10 +157,10 @@ TEST(ModalBody, AFrameThatLeavesARigidMotionFreeIsRefused) {
 TEST(ModalBody, OverlappingTiesAreRefused) {
   const Structure beam = beam_structure(boom());
   const int tip = boom().elements;
-  EXPECT_THROW(reduce(beam, {node_dofs(beam, 0), {}, 2, {{0, 1}}}), std::invalid_argument);
-  EXPECT_THROW(reduce(beam, {node_dofs(beam, 0), node_dofs(beam, tip), 2, {{tip - 1, tip}}}), std::invalid_argument);
-  EXPECT_THROW(reduce(beam, {node_dofs(beam, 0), {}, 2, {{tip - 2, tip - 1}, {tip - 1, tip}}}), std::invalid_argument);
-  EXPECT_NO_THROW(reduce(beam, {node_dofs(beam, 0), {}, 2, {{tip - 1, tip}}}));
+  EXPECT_THROW(reduce(beam, {beam.dofs_of({0}), {}, 2, {{0, 1}}}), std::invalid_argument);
+  EXPECT_THROW(reduce(beam, {beam.dofs_of({0}), beam.dofs_of({tip}), 2, {{tip - 1, tip}}}), std::invalid_argument);
+  EXPECT_THROW(reduce(beam, {beam.dofs_of({0}), {}, 2, {{tip - 2, tip - 1}, {tip - 1, tip}}}), std::invalid_argument);
+  EXPECT_NO_THROW(reduce(beam, {beam.dofs_of({0}), {}, 2, {{tip - 1, tip}}}));
 }
 
 }  // namespace

@@ -211,7 +211,7 @@ TEST(BeamModes, SpinStiffeningHasSouthwellsCoefficient) {
   auto first_w = [&](double omega2) {
     Structure spun = still;
     spun.K += omega2 * KG;
-    const StructuralModes modes = structural_modes(spun, node_dofs(spun, 0));
+    const StructuralModes modes = structural_modes(spun, spun.dofs_of({0}));
     return std::pow(2 * M_PI * modes.frequency_hz[0], 2);
   };
   const double d = 1e-3;

@@ -102,13 +102,11 @@ TEST(UnitInvariance, ADrivenCrankInAnyUnits) {
 // repeatable (a mass changed by 1e-9 moves its angles by 6e-7 rad and its
 // steps by 12 %, units or not), here by 1.2e-8 rad; the units move them by
 // under 1e-8.
-void expect_flexible_zfold_invariant(const std::string& name) {
-  const sim::SceneFile zfold =
-      sim::read_builtin_scene(name, {{"run.t_end", "3.2"}, {"run.rtol", "1e-10"}, {"run.atol", "1e-12"}});
+void expect_flexible_invariant(const sim::SceneFile& zfold, const std::string& deflection_column) {
   const sim::RunResult base = sim::simulate(zfold.scene, zfold.scene.run);
   ASSERT_EQ(base.status, sim::RunStatus::finished) << sim::describe(base.failure);
   ASSERT_EQ(base.trajectory.events.size(), 1u);
-  const int deflection = sim::find_load_column(base.trajectory.load_columns, "deflection.panel_A3");
+  const int deflection = sim::find_load_column(base.trajectory.load_columns, deflection_column);
   ASSERT_GE(deflection, 0);
   const auto largest_deflection = [deflection](const sim::RunResult& run) {
     double largest = 0;
@@ -129,11 +127,28 @@ void expect_flexible_zfold_invariant(const std::string& name) {
   }
 }
 
-TEST(UnitInvariance, FlexiblePanelsInAnyUnits) { expect_flexible_zfold_invariant("zfold_flexible"); }
+sim::SceneFile zfold_through_first_latch(const std::string& name) {
+  return sim::read_builtin_scene(name, {{"run.t_end", "3.2"}, {"run.rtol", "1e-10"}, {"run.atol", "1e-12"}});
+}
+
+TEST(UnitInvariance, FlexiblePanelsInAnyUnits) {
+  expect_flexible_invariant(zfold_through_first_latch("zfold_flexible"), "deflection.panel_A3");
+}
 
 // The same with plate panels (a plate's bending stiffness D scales as M
 // L^2, its mass per area as M / L^2).
-TEST(UnitInvariance, FlexiblePlatesInAnyUnits) { expect_flexible_zfold_invariant("zfold_plates"); }
+TEST(UnitInvariance, FlexiblePlatesInAnyUnits) {
+  expect_flexible_invariant(zfold_through_first_latch("zfold_plates"), "deflection.panel_A3");
+}
+
+// And a body read from an FE model (its node coordinates, lumped masses,
+// modal matrices and shapes' rotations scaled with it): the example
+// magnetometer boom through its latch-up.
+TEST(UnitInvariance, AnFEModelInAnyUnits) {
+  expect_flexible_invariant(sim::read_scene_file(std::string(UNFURL_SOURCE_DIR) + "/examples/fem/magnetometer_boom.yaml",
+                                                 {{"run.t_end", "5.2"}, {"run.rtol", "1e-10"}, {"run.atol", "1e-12"}}),
+                            "deflection.boom");
+}
 
 // Forces at a flexible body's points in other units: a flexible pendulum
 // swinging under gravity, pulled by a damped point spring and a bushing at

@@ -6,6 +6,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -59,6 +60,7 @@ class SceneReader : private input::YamlFields {
                                                               const YAML::Node& all, const std::string& field) const;
   flexible::BeamSection read_beam_section(const YAML::Node& node, const std::string& field) const;
   flexible::PlateBodySpec read_plate(const YAML::Node& node, const std::string& field) const;
+  std::string fem_path(const YAML::Node& node, const std::string& field) const;
   flexible::ModalDamping read_modal_damping(const YAML::Node& node, const std::string& field) const;
   Joint read_joint(const YAML::Node& node, const std::string& field) const;
   std::shared_ptr<JointCompliance> read_compliance(const YAML::Node& node, int joint, const std::string& field) const;
@@ -354,26 +356,54 @@ int elastic_coordinates(Spec spec, Make make) {
   }
 }
 
-// A flexible body (docs/FLEXIBLE.md): its structure (a beam or a plate),
-// the modes kept and their damping. The points its children's joints hang
-// on, its sensors' and the points where elements push on it become the
-// reduction's interface nodes, so they must lie at mesh nodes, on a
-// plate's hinge lines, or on brackets beside them.
+// Where a point may not attach to an FE model, as beam_attachment_error.
+std::string fem_attachment_error(const flexible::FemBodySpec& spec, const Vec3& p) {
+  const flexible::FemModel& f = *spec.model;
+  const double tolerance = 1e-6 * (f.points.rowwise().maxCoeff() - f.points.rowwise().minCoeff()).maxCoeff();
+  if (p.norm() <= tolerance) return "";
+  for (int k = 0; k < f.nodes(); ++k)
+    if ((f.points.col(k) - p).norm() <= tolerance) return "";
+  return "at a node of the FE model (its coordinates are the body frame's) or at the frame's origin";
+}
+
+// A flexible body (docs/FLEXIBLE.md): its structure (a beam, a plate or a
+// reduced FE model), the modes kept and their damping. The points its
+// children's joints hang on, its sensors' and the points where elements
+// push on it become the reduction's interface nodes, so they must lie at
+// mesh nodes, on a plate's hinge lines, or on brackets beside them.
 std::shared_ptr<const flexible::FlexibleBody> SceneReader::read_flexible(const YAML::Node& node,
                                                                          const std::string& name,
                                                                          const YAML::Node& all,
                                                                          const std::string& field) const {
-  check_keys(node, {"beam", "plate", "modes", "damping", "geometric_stiffening"}, field);
-  if (node["beam"] && node["plate"]) fail(node["plate"], field + ".plate", "a flexible body is a beam or a plate, not both");
-  if (!node["beam"] && !node["plate"]) fail(node, field, "a flexible body is a `beam` or a `plate`");
-  const bool plate = static_cast<bool>(node["plate"]);
+  check_keys(node, {"beam", "plate", "fem", "modes", "damping", "geometric_stiffening"}, field);
+  const int kinds = static_cast<int>(node["beam"].IsDefined()) + static_cast<int>(node["plate"].IsDefined()) +
+                    static_cast<int>(node["fem"].IsDefined());
+  if (kinds > 1) {
+    const char* second = node["beam"] && node["plate"] ? "plate" : "fem";
+    fail(node[second], field + "." + second, "a flexible body is a beam, a plate or an FE model (`fem`), not several");
+  }
+  if (kinds == 0) fail(node, field, "a flexible body is a `beam`, a `plate` or an FE model (`fem: file.fem`)");
+  const bool plate = static_cast<bool>(node["plate"]), fem = static_cast<bool>(node["fem"]);
+  const char* kind = fem ? "FE model" : plate ? "plate" : "beam";
   flexible::BeamBodySpec beam;
   flexible::PlateBodySpec panel;
-  if (plate) {
-    panel = read_plate(node["plate"], field + ".plate");
+  flexible::FemBodySpec model;
+  if (plate || fem) {
     if (node["geometric_stiffening"])
       fail(node["geometric_stiffening"], field + ".geometric_stiffening",
-           "a plate carries no foreshortening (its stiffening by in-plane loads is a membrane effect, left out)");
+           plate ? "a plate carries no foreshortening (its stiffening by in-plane loads is a membrane effect, left out)"
+                 : "an FE model carries no foreshortening (its stiffening is its own modes', as the file gives them)");
+  }
+  if (plate) {
+    panel = read_plate(node["plate"], field + ".plate");
+  } else if (fem) {
+    model.file = fem_path(node["fem"], field + ".fem");
+    try {
+      model.model = std::make_shared<const flexible::FemModel>(flexible::read_fem(model.file));
+    } catch (const flexible::FemFileError& e) {
+      fail(node["fem"], field + ".fem", e.what());
+    }
+    model.damping_from_file = !node["damping"] && model.model->damping.size() > 0;
   } else {
     beam.section = read_beam_section(node["beam"], field + ".beam");
     if (node["geometric_stiffening"])
@@ -386,25 +416,27 @@ std::shared_ptr<const flexible::FlexibleBody> SceneReader::read_flexible(const Y
       beam.axis = a[0] - 'x';
     }
   }
-  int& normal_modes = plate ? panel.normal_modes : beam.normal_modes;
-  double& modes_up_to_hz = plate ? panel.modes_up_to_hz : beam.modes_up_to_hz;
-  flexible::ModalDamping& damping = plate ? panel.damping : beam.damping;
-  std::vector<Vec3>& attachments = plate ? panel.attachments : beam.attachments;
+  int& normal_modes = fem ? model.normal_modes : plate ? panel.normal_modes : beam.normal_modes;
+  double& modes_up_to_hz = fem ? model.modes_up_to_hz : plate ? panel.modes_up_to_hz : beam.modes_up_to_hz;
+  flexible::ModalDamping& damping = fem ? model.damping : plate ? panel.damping : beam.damping;
+  std::vector<Vec3>& attachments = fem ? model.attachments : plate ? panel.attachments : beam.attachments;
   // A count of fixed-interface modes, or every one up to a frequency.
   if (const YAML::Node modes = node["modes"]; modes && modes.IsMap()) {
     check_keys(modes, {"up_to"}, field + ".modes");
     modes_up_to_hz = positive(require(modes, "up_to", field + ".modes"), field + ".modes.up_to");
   } else if (modes) {
-    normal_modes = static_cast<int>(count(modes, field + ".modes", 0, flexible::kMaxModes));
+    normal_modes = static_cast<int>(count(modes, field + ".modes", fem ? 1 : 0, flexible::kMaxModes));
   }
   if (node["damping"]) damping = read_modal_damping(node["damping"], field + ".damping");
   // A point where something attaches: at a mesh node (a beam's, on its
   // axis; a plate's, or anywhere on a hinge line), on the body or on a
-  // rigid bracket beside it.
+  // rigid bracket beside it; an FE model's node.
   const auto attach = [&](const Vec3& p, const YAML::Node& at_node, const std::string& at, const char* what) {
-    const std::string where = plate ? plate_attachment_error(panel, p) : beam_attachment_error(beam, p);
-    if (!where.empty()) fail(at_node, at, std::string("a ") + what + " of the flexible " + (plate ? "plate" : "beam") +
-                                              " '" + name + "' sits " + where);
+    const std::string where = fem     ? fem_attachment_error(model, p)
+                              : plate ? plate_attachment_error(panel, p)
+                                      : beam_attachment_error(beam, p);
+    if (!where.empty())
+      fail(at_node, at, std::string("a ") + what + " of the flexible " + kind + " '" + name + "' sits " + where);
     attachments.push_back(p);
   };
   // Each entry of a list whose `body` key names this body, at its point; a
@@ -436,14 +468,30 @@ std::shared_ptr<const flexible::FlexibleBody> SceneReader::read_flexible(const Y
   }
   const auto make_beam = [](const flexible::BeamBodySpec& s) { return flexible::beam_body(s); };
   const auto make_plate = [](const flexible::PlateBodySpec& s) { return flexible::plate_body(s); };
+  const auto make_fem = [](const flexible::FemBodySpec& s) { return flexible::fem_body(s); };
   try {
-    return std::make_shared<const flexible::FlexibleBody>(plate ? make_plate(panel) : make_beam(beam));
+    return std::make_shared<const flexible::FlexibleBody>(fem     ? make_fem(model)
+                                                          : plate ? make_plate(panel)
+                                                                  : make_beam(beam));
   } catch (const std::invalid_argument& e) {
     const std::size_t ratios = damping.per_coordinate.size();
-    const int coordinates = plate ? elastic_coordinates(panel, make_plate) : elastic_coordinates(beam, make_beam);
+    const int coordinates = fem     ? elastic_coordinates(model, make_fem)
+                            : plate ? elastic_coordinates(panel, make_plate)
+                                    : elastic_coordinates(beam, make_beam);
     if (ratios > 0 && static_cast<int>(ratios) != coordinates) fail(node["damping"], field + ".damping", e.what());
-    fail(node, field, e.what());
+    fail(fem ? node["fem"] : node, fem ? field + ".fem" : field, e.what());
   }
+}
+
+// An FE model's file: relative to the scene file's directory, as a mesh
+// is; kept absolute, so that a scene written elsewhere reads it back.
+std::string SceneReader::fem_path(const YAML::Node& node, const std::string& field) const {
+  const std::filesystem::path given = text(node, field);
+  if (given.empty()) fail(node, field, "expected the path of a modal data file (.fem)");
+  if (given.is_absolute()) return given.lexically_normal().string();
+  const std::filesystem::path scene = source();
+  const std::filesystem::path directory = scene.has_parent_path() ? scene.parent_path() : std::filesystem::path(".");
+  return std::filesystem::absolute(directory / given).lexically_normal().string();
 }
 
 // A rectangular plate's properties and placement: its bending stiffness D

@@ -176,6 +176,15 @@ void flexible_body(std::ostream& out, const flexible::PlateBodySpec& spec, const
       << pad << "  damping: " << damping_text(spec.damping) << "\n";
 }
 
+// The file's path as the reader resolved it (absolute), the modes kept
+// where the scene chose, the damping where it gave one (else the file's).
+void flexible_body(std::ostream& out, const flexible::FemBodySpec& spec, const std::string& pad) {
+  out << pad << "flexible:\n" << pad << "  fem: " << quoted(spec.file) << "\n";
+  if (spec.normal_modes > 0 || spec.modes_up_to_hz > 0)
+    out << pad << "  modes: " << modes_text(spec.normal_modes, spec.modes_up_to_hz) << "\n";
+  if (!spec.damping_from_file) out << pad << "  damping: " << damping_text(spec.damping) << "\n";
+}
+
 std::string joint_text(const Joint& j, const JointCompliance* compliance) {
   std::string out = "{name: " + j.name + ", type: " + joint_type_name(j.type);
   const bool axial = j.type == JointType::revolute || j.type == JointType::prismatic || j.type == JointType::planar ||
@@ -352,7 +361,9 @@ std::string write_scene_text(const SceneFile& file, const std::string& comment) 
     const int k = m.parent[i];
     out << "  - name: " << m.bodies[i].name << "\n    parent: " << (k == kBase ? m.base_name : m.bodies[k].name)
         << "\n";
-    if (m.bodies[i].flexible && m.bodies[i].flexible->plate)
+    if (m.bodies[i].flexible && m.bodies[i].flexible->fem)
+      flexible_body(out, *m.bodies[i].flexible->fem, "    ");
+    else if (m.bodies[i].flexible && m.bodies[i].flexible->plate)
       flexible_body(out, *m.bodies[i].flexible->plate, "    ");
     else if (m.bodies[i].flexible)
       flexible_body(out, m.bodies[i].flexible->beam, "    ");

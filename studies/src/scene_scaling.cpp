@@ -17,10 +17,13 @@ sim::SceneFile scale_scene(const sim::SceneFile& file, double L, double M) {
     b.mass *= M;
     b.com *= L;
     b.inertia_com *= M * L * L;
-    if (b.flexible)
+    if (b.flexible) {
+      const sim::flexible::FlexibleBody& f = *b.flexible;
       b.flexible = std::make_shared<const sim::flexible::FlexibleBody>(
-          b.flexible->plate ? sim::flexible::plate_body(sim::flexible::scaled(*b.flexible->plate, L, M))
-                            : sim::flexible::beam_body(sim::flexible::scaled(b.flexible->beam, L, M)));
+          f.fem     ? sim::flexible::fem_body(sim::flexible::scaled(*f.fem, L, M))
+          : f.plate ? sim::flexible::plate_body(sim::flexible::scaled(*f.plate, L, M))
+                    : sim::flexible::beam_body(sim::flexible::scaled(f.beam, L, M)));
+    }
   }
   for (sim::Joint& j : model.joints) {
     j.parent_point *= L;

@@ -61,11 +61,13 @@ void Elasticity::load_values(const ElementState& s, double* values) const {
 std::vector<ElementParameter> Elasticity::parameters() const {
   const std::optional<flexible::PlateBodySpec>& plate = flexible_->plate;
   std::vector<ElementParameter> out;
-  const flexible::ModalDamping& d = plate ? plate->damping : flexible_->beam.damping;
-  if (d.is_uniform()) {
+  const std::optional<flexible::FemBodySpec>& fem = flexible_->fem;
+  const flexible::ModalDamping& d = fem ? fem->damping : plate ? plate->damping : flexible_->beam.damping;
+  const bool file_damping = fem && fem->damping_from_file;  // the FE file's matrix, not the scene's
+  if (!file_damping && d.is_uniform()) {
     out.push_back({"damping", "damping ratio", d.bands[0].ratio, 0.001, 0, 0.99,
                    "every elastic coordinate's modal damping ratio zeta"});
-  } else if (d.per_coordinate.empty()) {
+  } else if (!file_damping && d.per_coordinate.empty()) {
     for (std::size_t k = 0; k < d.bands.size(); ++k) {
       const bool last = k + 1 == d.bands.size();
       const std::string edge = format_number(last ? d.bands[k - 1].up_to_hz : d.bands[k].up_to_hz);
@@ -74,6 +76,7 @@ std::vector<ElementParameter> Elasticity::parameters() const {
                      "the modal damping ratio of the elastic coordinates in this band of frequencies"});
     }
   }
+  if (fem) return out;  // its stiffness and mass are the FE model's
   if (plate) {
     const flexible::PlateSpec& p = plate->plate;
     if (plate->youngs_modulus > 0)

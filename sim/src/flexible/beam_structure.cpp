@@ -95,10 +95,4 @@ Eigen::MatrixXd geometric_stiffness(const BeamSection& s, const std::function<do
   return KG;
 }
 
-std::vector<int> node_dofs(const Structure& structure, int node) {
-  std::vector<int> dofs;
-  for (int k = 0; k < structure.dofs_per_node; ++k) dofs.push_back(structure.dof(node, k));
-  return dofs;
-}
-
 }  // namespace unfurl::sim::flexible

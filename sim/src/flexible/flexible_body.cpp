@@ -1,5 +1,7 @@
 #include "unfurl/sim/flexible/flexible_body.hpp"
 
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -136,12 +138,105 @@ std::vector<int> fastened_nodes(const PlateBodySpec& spec, PlateEdge edge) {
   return out;
 }
 
-// All four degrees of freedom of each node: a clamp.
-std::vector<int> clamped_dofs(const Structure& plate, const std::vector<int>& nodes) {
-  std::vector<int> dofs;
-  for (int node : nodes)
-    for (int k = 0; k < plate.dofs_per_node; ++k) dofs.push_back(plate.dof(node, k));
-  return dofs;
+// The largest extent of an FE model's nodes.
+double fem_size(const FemModel& f) {
+  return (f.points.rowwise().maxCoeff() - f.points.rowwise().minCoeff()).maxCoeff();
+}
+
+// The node at a body-frame point, or -1.
+int fem_node_at(const FemModel& f, const Eigen::Vector3d& point) {
+  const double tolerance = 1e-6 * fem_size(f);
+  for (int k = 0; k < f.nodes(); ++k)
+    if ((f.points.col(k) - point).norm() <= tolerance) return k;
+  return -1;
+}
+
+// Refuses a modal mass or stiffness that is not a symmetric one.
+void check_modal_matrices(const FemModel& f) {
+  const auto symmetric = [](const Eigen::MatrixXd& A) {
+    return (A - A.transpose()).norm() <= 1e-9 * std::max(A.norm(), 1e-300);
+  };
+  if (!symmetric(f.mass)) throw std::invalid_argument("flexible FE model: its modal mass matrix is not symmetric");
+  if (!symmetric(f.stiffness))
+    throw std::invalid_argument("flexible FE model: its modal stiffness matrix is not symmetric");
+  if (Eigen::LLT<Eigen::MatrixXd>(f.mass).info() != Eigen::Success)
+    throw std::invalid_argument("flexible FE model: its modal mass matrix is not positive definite");
+}
+
+// The modal mass of the lumped masses, sum m_g Phi_g^T Phi_g + Psi_g^T J_g
+// Psi_g over the file's modes: the one the body's inertia invariants sum
+// from the same points, so that its kinetic energy is one body's (the
+// file's own modal mass, from its consistent masses, would pair with
+// couplings the lumped points do not have, and can make the whole
+// indefinite).
+Eigen::MatrixXd lumped_modal_mass(const std::vector<MassPoint>& points, const Eigen::MatrixXd& shapes) {
+  const int m = static_cast<int>(shapes.cols());
+  return InertiaInvariants(points, shapes).mass_matrix(Eigen::VectorXd::Zero(m)).bottomRightCorner(m, m);
+}
+
+// The coordinates orthonormalized (unit modal masses, ascending
+// frequencies): the eigenvectors of the file's modal stiffness and the
+// lumped masses' modal mass.
+Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> orthonormal_coordinates(const FemModel& f,
+                                                                                  const Eigen::MatrixXd& Me) {
+  if (Eigen::LLT<Eigen::MatrixXd>(Me).info() != Eigen::Success)
+    throw std::invalid_argument("flexible FE model: a combination of its modes moves none of its lumped masses");
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(f.stiffness, Me);
+  if (solver.info() != Eigen::Success) throw std::invalid_argument("flexible FE model: its modes do not solve");
+  const Eigen::VectorXd& lambda = solver.eigenvalues();
+  // A coordinate without stiffness is a rigid motion, which the floating
+  // frame already carries: the modes were not held where the frame attaches.
+  if (lambda[0] <= 1e-10 * lambda[lambda.size() - 1])
+    throw std::invalid_argument("flexible FE model: a combination of its modes has no stiffness (a rigid motion, " +
+                                std::to_string(std::sqrt(std::max(lambda[0], 0.0)) / (2 * M_PI)) +
+                                " Hz): give modes of the body held where its frame attaches (Craig-Bampton's, the "
+                                "inboard hinge's nodes held)");
+  return solver;
+}
+
+// How many of the orthonormalized coordinates the spec keeps.
+int kept_coordinates(const FemBodySpec& spec, const Eigen::VectorXd& frequency_hz) {
+  const int available = static_cast<int>(frequency_hz.size());
+  int kept = available;
+  if (spec.modes_up_to_hz > 0) kept = static_cast<int>((frequency_hz.array() <= spec.modes_up_to_hz).count());
+  else if (spec.normal_modes > 0) kept = spec.normal_modes;
+  if (kept > available)
+    throw std::invalid_argument("flexible FE model: " + std::to_string(kept) + " modes asked, the file has " +
+                                std::to_string(available));
+  if (kept == 0)
+    throw std::invalid_argument("flexible FE model: no mode lies below " + std::to_string(spec.modes_up_to_hz) +
+                                " Hz (the lowest is at " + std::to_string(frequency_hz[0]) + " Hz)");
+  if (kept > kMaxModes)
+    throw std::invalid_argument("flexible FE model: " + std::to_string(kept) + " elastic coordinates, more than " +
+                                std::to_string(kMaxModes) + " (keep fewer with `modes`)");
+  return kept;
+}
+
+// Each node a mass point: its lumped mass moving with its translation, its
+// moments of inertia turning with its rotation.
+std::vector<MassPoint> lumped_mass_points(const FemModel& f) {
+  std::vector<MassPoint> points;
+  Eigen::Matrix<double, 3, 6> translation = Eigen::Matrix<double, 3, 6>::Zero(), rotation = translation;
+  translation.leftCols<3>().setIdentity();
+  rotation.rightCols<3>().setIdentity();
+  for (int k = 0; k < f.nodes(); ++k) {
+    const Eigen::Matrix<double, 6, 1> m = f.lumped.col(k);
+    if (m.minCoeff() < 0)
+      throw std::invalid_argument("flexible FE model: node " + f.labels[k] + " has a negative lumped mass or inertia");
+    if (std::abs(m[1] - m[0]) > 1e-9 * m[0] || std::abs(m[2] - m[0]) > 1e-9 * m[0])
+      throw std::invalid_argument("flexible FE model: node " + f.labels[k] +
+                                  "'s lumped masses along x, y and z differ; a node carries one mass");
+    if (m.isZero()) continue;
+    MassPoint p;
+    p.m = m[0];
+    p.r = f.points.col(k);
+    for (int c = 0; c < 6; ++c) p.dofs.push_back(6 * k + c);
+    p.N = translation;
+    p.J = m.tail<3>().asDiagonal();
+    p.R = rotation;
+    points.push_back(p);
+  }
+  return points;
 }
 
 }  // namespace
@@ -163,10 +258,10 @@ FlexibleBody beam_body(const BeamBodySpec& spec) {
     bool seen = false;
     for (int d : interface) seen = seen || d == beam.dof(node, 0);
     if (!seen)
-      for (int d : node_dofs(beam, node)) interface.push_back(d);
+      for (int d : beam.dofs_of({node})) interface.push_back(d);
   }
   ModalReduction reduction;
-  reduction.frame_dofs = node_dofs(beam, 0);
+  reduction.frame_dofs = beam.dofs_of({0});
   reduction.interface_dofs = interface;
   reduction.normal_modes = spec.normal_modes;
   reduction.normal_modes_up_to_hz = spec.modes_up_to_hz;
@@ -176,7 +271,7 @@ FlexibleBody beam_body(const BeamBodySpec& spec) {
       InertiaInvariants(placed(beam_mass_points(section), R, spec.root), reduced.shape,
                         spec.geometric_stiffening ? placed(beam_shortening(section, reduced.shape), R)
                                                   : std::vector<Shortening>{}),
-      reduced.frequency_hz, {}, {}, {}, {}, spec, {}};
+      reduced.frequency_hz, {}, {}, {}, {}, spec, {}, {}};
   set_modal_terms(body, spec.damping, "flexible beam");
   for (int node : nodes) body.nodes.push_back(placed(beam.nodes[node], reduced.node_shape(beam, node), R, spec.root));
   for (int node = 0; node < static_cast<int>(beam.nodes.size()); ++node)
@@ -199,7 +294,7 @@ FlexibleBody plate_body(const PlateBodySpec& spec) {
       throw std::invalid_argument("flexible plate: a bracket is a span [from, to] along the edge, within its length");
   }
   ModalReduction reduction;
-  reduction.frame_dofs = clamped_dofs(plate, fastened_nodes(spec, spec.root_edge));
+  reduction.frame_dofs = plate.dofs_of(fastened_nodes(spec, spec.root_edge));
   reduction.normal_modes = spec.normal_modes;
   reduction.normal_modes_up_to_hz = spec.modes_up_to_hz;
   // The hinge line, the one edge a plate ties.
@@ -218,12 +313,12 @@ FlexibleBody plate_body(const PlateBodySpec& spec) {
     if (where.on == PlatePoint::On::node &&
         std::find(reduction.interface_dofs.begin(), reduction.interface_dofs.end(), plate.dof(where.node, 0)) ==
             reduction.interface_dofs.end())
-      for (int k = 0; k < plate.dofs_per_node; ++k) reduction.interface_dofs.push_back(plate.dof(where.node, k));
+      for (int d : plate.dofs_of({where.node})) reduction.interface_dofs.push_back(d);
   }
   const ModalBody reduced = reduce(plate, reduction);
   check_coordinates(reduced, "flexible plate", "three for each hinge line and four for each mesh node");
   FlexibleBody body{InertiaInvariants(placed(plate_mass_points(p), R, spec.corner), reduced.shape),
-                    reduced.frequency_hz, {}, {}, {}, {}, {}, spec};
+                    reduced.frequency_hz, {}, {}, {}, {}, {}, spec, {}};
   set_modal_terms(body, spec.damping, "flexible plate");
   const int m = reduced.coordinates();
   for (const PlatePoint& a : attachments) {
@@ -235,6 +330,62 @@ FlexibleBody plate_body(const PlateBodySpec& spec) {
   for (int node = 0; node < static_cast<int>(plate.nodes.size()); ++node)
     body.mesh_nodes.push_back(placed(plate.nodes[node], reduced.node_shape(plate, node), R, spec.corner));
   return body;
+}
+
+FlexibleBody fem_body(const FemBodySpec& spec) {
+  const FemModel& f = *spec.model;
+  check_modal_matrices(f);
+  const std::vector<MassPoint> points = lumped_mass_points(f);
+  const auto solver = orthonormal_coordinates(f, lumped_modal_mass(points, f.shapes));
+  const Eigen::VectorXd all_hz = solver.eigenvalues().cwiseSqrt() / (2 * M_PI);
+  const int m = kept_coordinates(spec, all_hz);
+  const Eigen::MatrixXd X = solver.eigenvectors().leftCols(m);
+  const Eigen::MatrixXd shape = f.shapes * X;
+  const InertiaInvariants inertia(points, shape);
+  if (f.rigid_mass && std::abs(*f.rigid_mass - inertia.mass()) > 0.01 * *f.rigid_mass)
+    throw std::invalid_argument("flexible FE model: its lumped masses sum to " + std::to_string(inertia.mass()) +
+                                " kg, its rigid body's mass (RECORD GROUP 12) is " + std::to_string(*f.rigid_mass) +
+                                " kg");
+  FlexibleBody body{inertia, all_hz.head(m), {}, {}, {}, {}, {}, {}, spec};
+  if (spec.damping_from_file) {
+    body.stiffness = (2 * M_PI * body.frequency_hz).array().square();
+    body.damping = (X.transpose() * f.damping * X).diagonal();
+  } else {
+    set_modal_terms(body, spec.damping, "flexible FE model");
+  }
+  const auto node_shape = [&](int k) -> Eigen::MatrixXd { return shape.middleRows(6 * k, 6); };
+  for (const Eigen::Vector3d& point : spec.attachments) {
+    const int k = fem_node_at(f, point);
+    if (k >= 0) {
+      body.nodes.push_back({f.points.col(k), node_shape(k)});
+    } else if (point.norm() <= 1e-6 * fem_size(f)) {
+      body.nodes.push_back({point, Eigen::MatrixXd::Zero(6, m)});  // the frame's own point
+    } else {
+      throw std::invalid_argument("flexible FE model: an attachment point is at no node of the model");
+    }
+  }
+  for (int k = 0; k < f.nodes(); ++k) body.mesh_nodes.push_back({f.points.col(k), node_shape(k)});
+  return body;
+}
+
+// Each mode shape's translations keep their numbers, so the coordinates
+// grow by L (and by sqrt(M) from the unit modal masses the body makes of
+// them); rotations, by L less; the matrices carry the masses.
+FemBodySpec scaled(const FemBodySpec& spec, double L, double M) {
+  FemBodySpec out = spec;
+  FemModel f = *spec.model;
+  f.points *= L;
+  for (int k = 0; k < f.nodes(); ++k) f.shapes.middleRows(6 * k + 3, 3) /= L;
+  f.mass *= M;
+  f.stiffness *= M;
+  f.damping *= M;
+  f.lumped.topRows<3>() *= M;
+  f.lumped.bottomRows<3>() *= M * L * L;
+  if (f.rigid_mass) *f.rigid_mass *= M;
+  f.rigid_centre *= L;
+  out.model = std::make_shared<const FemModel>(std::move(f));
+  for (Eigen::Vector3d& a : out.attachments) a *= L;
+  return out;
 }
 
 PlateBodySpec scaled(const PlateBodySpec& spec, double L, double M) {
@@ -277,13 +428,15 @@ double ModalDamping::ratio(int k, double f_hz) const {
 
 int FlexibleBody::node_of(const Eigen::Vector3d& point) const {
   const double tolerance = 1e-9 * std::max(size(), point.norm());
-  const std::vector<Eigen::Vector3d>& attachments = plate ? plate->attachments : beam.attachments;
+  const std::vector<Eigen::Vector3d>& attachments =
+      fem ? fem->attachments : plate ? plate->attachments : beam.attachments;
   for (std::size_t a = 0; a < attachments.size(); ++a)
     if ((attachments[a] - point).norm() <= tolerance) return static_cast<int>(a);
   return -1;
 }
 
 bool FlexibleBody::on_frame(const Eigen::Vector3d& point) const {
+  if (fem) return point.norm() <= 1e-6 * size();
   if (plate) return locate(*plate, point).on == PlatePoint::On::root_edge;
   return (point - beam.root).norm() <= 1e-9 * size();
 }
@@ -313,7 +466,10 @@ PlatePoint locate(const PlateBodySpec& spec, const Eigen::Vector3d& point) {
   return where;
 }
 
-double FlexibleBody::size() const { return plate ? plate_size(plate->plate) : beam.section.length; }
+double FlexibleBody::size() const {
+  if (fem) return fem_size(*fem->model);
+  return plate ? plate_size(plate->plate) : beam.section.length;
+}
 
 double FlexibleBody::largest_deflection(const double* eta) const {
   const Eigen::Map<const Eigen::VectorXd> e(eta, modes());

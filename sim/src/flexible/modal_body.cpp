@@ -46,14 +46,6 @@ Eigen::MatrixXd constraint_modes(const Structure& s, const std::vector<int>& int
   return psi;
 }
 
-// Every degree of freedom of the listed nodes.
-std::vector<int> dofs_of(const Structure& s, const std::vector<int>& nodes) {
-  std::vector<int> dofs;
-  for (int node : nodes)
-    for (int k = 0; k < s.dofs_per_node; ++k) dofs.push_back(s.dof(node, k));
-  return dofs;
-}
-
 // The rigid motions (columns of s.rigid) the structure models.
 std::vector<int> modelled_motions(const Structure& s) {
   std::vector<int> motions;
@@ -67,7 +59,7 @@ std::vector<int> modelled_motions(const Structure& s) {
 // degree of freedom at 0 and the interior free of load.
 Eigen::MatrixXd tied_modes(const Structure& s, const std::vector<int>& tied, const std::vector<int>& interior,
                            const Eigen::LDLT<Eigen::MatrixXd>& K_II) {
-  const std::vector<int> set = dofs_of(s, tied), motions = modelled_motions(s);
+  const std::vector<int> set = s.dofs_of(tied), motions = modelled_motions(s);
   const Eigen::MatrixXd u_S = block(s.rigid, set, motions);
   const Eigen::MatrixXd psi_I = K_II.solve(-block(s.K, interior, set) * u_S);
   if (!psi_I.allFinite()) throw_rigid_motion_free();
@@ -87,7 +79,7 @@ ModalBody reduce(const Structure& s, const ModalReduction& reduction) {
   // tie would move it in one's constraint modes and hold it in the other's:
   // neither rigid nor held.
   for (const std::vector<int>& tied : reduction.tied_nodes)
-    for (int d : dofs_of(s, tied)) {
+    for (int d : s.dofs_of(tied)) {
       if (role.at(d) != 0)
         throw std::invalid_argument("flexible body: tied nodes share a node with the frame's attachment, an "
                                     "interface node or another tie");
@@ -136,7 +128,7 @@ Eigen::MatrixXd ModalBody::node_shape(const Structure& structure, int node) cons
 
 Eigen::MatrixXd ModalBody::tie_shape(const Structure& structure, const std::vector<int>& tied,
                                      const Eigen::Vector3d& point) const {
-  const std::vector<int> set = dofs_of(structure, tied), motions = modelled_motions(structure);
+  const std::vector<int> set = structure.dofs_of(tied), motions = modelled_motions(structure);
   std::vector<int> all(shape.cols());
   for (int k = 0; k < coordinates(); ++k) all[k] = k;
   // The set moves rigidly: its degrees of freedom are the rigid fields'

@@ -77,6 +77,9 @@ class SceneView {
                         Bend& bend);
   static void bend_plate(const sim::flexible::FlexibleBody& flexible, const Eigen::VectorXd& eta, double exaggeration,
                          Bend& bend);
+  // An FE model's nodes resampled on a beam's row or a plate's grid.
+  static void bend_fem(const sim::flexible::FlexibleBody& flexible, const Eigen::VectorXd& eta, double exaggeration,
+                       Bend& bend);
 
   std::vector<Item> items_;
   std::vector<Bend> bends_;  // per body

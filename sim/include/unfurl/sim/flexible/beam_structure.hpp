@@ -36,7 +36,4 @@ Structure beam_structure(const BeamSection& section);
 // (Kane, Ryan and Banerjee, 1987). Exact for N up to cubic in x.
 Eigen::MatrixXd geometric_stiffness(const BeamSection& section, const std::function<double(double)>& axial_force);
 
-// Every degree of freedom of a node: what a clamp there holds.
-std::vector<int> node_dofs(const Structure& structure, int node);
-
 }  // namespace unfurl::sim::flexible

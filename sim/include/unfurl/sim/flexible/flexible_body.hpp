@@ -9,11 +9,13 @@
 #include <Eigen/Core>
 #include <array>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "unfurl/sim/flexible/beam_structure.hpp"
+#include "unfurl/sim/flexible/fem_model.hpp"
 #include "unfurl/sim/flexible/inertia_invariants.hpp"
 #include "unfurl/sim/flexible/plate_structure.hpp"
 
@@ -130,6 +132,28 @@ struct PlateBodySpec {
   double modes_up_to_hz = 0;  // as a beam's
 };
 
+// What a body read from a reduced finite-element model was made from (a
+// scene file's `flexible: {fem: file}`, fem_model.hpp): its modes must
+// hold the body where its frame attaches (Craig-Bampton's fixed-interface
+// and constraint modes with the inboard hinge's nodes held), as the
+// plate's and the beam's do, and its node coordinates are the body
+// frame's.
+struct FemBodySpec {
+  std::string file;  // as the scene resolved it
+  std::shared_ptr<const FemModel> model;
+  // The lowest this many of the file's coordinates (orthonormalized),
+  // or where modes_up_to_hz is positive every one up to it; neither: all.
+  int normal_modes = 0;
+  double modes_up_to_hz = 0;
+  ModalDamping damping;
+  // Where the scene gives no damping and the file has a modal damping
+  // matrix: its diagonal in the orthonormalized coordinates.
+  bool damping_from_file = false;
+  // Body-frame points where children, sensors and elements attach: each at
+  // a node of the model, or at the frame's origin.
+  std::vector<Eigen::Vector3d> attachments;
+};
+
 struct FlexibleNode {
   Eigen::Vector3d point;                         // body frame, undeformed
   Eigen::Matrix<double, 6, Eigen::Dynamic> shape;  // translation, then rotation, per unit eta
@@ -144,10 +168,11 @@ struct FlexibleBody {
   // Every node of the structure's mesh, for the drawing and the deflection.
   // (a plate's, along its x first: (elements_x + 1) (elements_y + 1)).
   std::vector<FlexibleNode> mesh_nodes;
-  // What the body was made from: a beam, or where `plate` is set a plate
-  // (the beam's spec then unused).
+  // What the body was made from: a beam, or where `plate` or `fem` is
+  // set a plate or an FE model (the beam's spec then unused).
   BeamBodySpec beam;
   std::optional<PlateBodySpec> plate;
+  std::optional<FemBodySpec> fem;  // where set, the beam's and the plate's unused
 
   // The body-frame direction of the beam's axis, and the distance along it
   // from the root of a body-frame point.
@@ -191,6 +216,16 @@ BeamBodySpec scaled(const BeamBodySpec& spec, double L, double M);
 // hinge line nor over a mesh node.
 FlexibleBody plate_body(const PlateBodySpec& spec);
 PlateBodySpec scaled(const PlateBodySpec& spec, double L, double M);
+// A body from a reduced FE model: its inertia, the modal mass included,
+// summed from the lumped masses at its nodes moved by the file's mode
+// shapes, its stiffness the file's modal stiffness, its coordinates
+// orthonormalized with them; `attachments` at its nodes. Throws
+// std::invalid_argument for a model that is not one (a rigid motion among
+// its modes, modal matrices that are not symmetric and positive definite,
+// lumped masses that disagree with its rigid-body mass), and as beam_body
+// does.
+FlexibleBody fem_body(const FemBodySpec& spec);
+FemBodySpec scaled(const FemBodySpec& spec, double L, double M);
 
 // Where a body-frame point lies in a plate's own axes (x, y in its plane,
 // z off it).

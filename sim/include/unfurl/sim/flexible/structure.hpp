@@ -24,6 +24,13 @@ struct Structure {
   Eigen::MatrixXd rigid;
 
   int dof(int node, int component) const { return node * dofs_per_node + component; }
+  // Every degree of freedom of the listed nodes (all of a clamp's).
+  std::vector<int> dofs_of(const std::vector<int>& listed) const {
+    std::vector<int> out;
+    for (int node : listed)
+      for (int k = 0; k < dofs_per_node; ++k) out.push_back(dof(node, k));
+    return out;
+  }
   int size() const { return static_cast<int>(M.rows()); }
 };
 
