@@ -12,9 +12,13 @@ std::vector<LoopComponent> active_loop_components(const Model& model, const std:
   std::vector<std::vector<double>> samples{q0};
   std::mt19937 rng(12345);
   std::uniform_real_distribution<double> angle(-M_PI, M_PI);
+  // Random joint positions; flexible bodies undeformed, as where a loop
+  // closes (an elastic coordinate of the size of an angle is a deflection
+  // of metres).
   for (int s = 0; s < 3; ++s) {
-    std::vector<double> q(model.nq);
-    for (double& x : q) x = angle(rng);
+    std::vector<double> q(model.nq, 0.0);
+    for (int c = 0; c < model.nq; ++c)
+      if (model.joint_of_position[c] >= 0) q[c] = angle(rng);
     samples.push_back(q);
   }
   // Row (l, a) of eps T A equals (J^T e)^T = (A^T T^T eps^T e)^T: one

@@ -305,8 +305,8 @@ void place_sensors_on_nodes(Scene& scene) {
 
 // What flexible bodies (docs/FLEXIBLE.md) do not carry yet is refused
 // rather than computed wrong: their joints are hinges, slides (driven or
-// not) or fixed, not compliant; and loops. Elements that push at a flexible
-// body's points check that each point is one of its nodes.
+// not) or fixed, not compliant. Elements that push at a flexible body's
+// points check that each point is one of its nodes.
 void check_flexible(const Scene& scene) {
   const Model& m = scene.model;
   if (!m.has_flexible_bodies()) return;
@@ -318,7 +318,6 @@ void check_flexible(const Scene& scene) {
       throw SceneInvalid(field + ".joint", "a flexible body's joint is a revolute, prismatic or fixed joint, not "
                                            "compliant (the others are not carried yet)");
   }
-  if (!scene.loops.empty()) throw SceneInvalid("loops", "loops in a scene with flexible bodies are not carried yet");
 }
 
 void validate(Scene& scene) {

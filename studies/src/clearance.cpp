@@ -123,7 +123,8 @@ class ClearanceCheck {
   }
 
  private:
-  // Every body but a loop's image, which is its split body's other half.
+  // Every body but a loop's image, which is its split body's other half,
+  // and a solid-less body fixed to its parent.
   void gather_bodies(const BodySolids& solids) {
     const sim::Model& m = scene_.model;
     slot_of_.assign(m.size(), -1);
@@ -146,8 +147,13 @@ class ClearanceCheck {
       return static_cast<int>(bodies_.size()) - 1;
     };
     if (!m.free_floating()) base_slot_ = add(sim::kBase, m.base_name, solids.base);
-    for (int i = 0; i < m.size(); ++i)
-      if (image_of[i] < 0) slot_of_[i] = add(i, m.bodies[i].name, solids.bodies[i]);
+    // A body fixed to its parent without a solid of its own (a loop's
+    // pivot on a flexible panel) is part of the parent, and so is its image.
+    for (int i = 0; i < m.size(); ++i) {
+      if (image_of[i] >= 0) continue;
+      const bool part = m.joints[i].type == sim::JointType::fixed && solids.bodies[i].empty() && m.parent[i] >= 0;
+      slot_of_[i] = part ? slot_of_[m.parent[i]] : add(i, m.bodies[i].name, solids.bodies[i]);
+    }
     for (int i = 0; i < m.size(); ++i)
       if (image_of[i] >= 0) slot_of_[i] = slot_of_[image_of[i]];
   }
