@@ -174,6 +174,36 @@ TEST(FemModel, ABadFileIsRefusedAtItsLine) {
       << fem_error(replaced(good, "0.0000000000000000e+00", "abc"));
   EXPECT_NE(fem_error(replaced(good, "** END OF FILE", "** RECORD GROUP 9\n1\n")).find("appears twice"),
             std::string::npos);
+  EXPECT_NE(fem_error("1 2 3\n" + good).find("bad.fem:1: '1' before the first RECORD GROUP"), std::string::npos);
+  EXPECT_NE(fem_error(replaced(good, "REV0 17 4 0 6 0", "REV0 17 4 0 6 10")).find("10 of its 10 modes rejected"),
+            std::string::npos);
+  // Node 1's lumped masses (the first line of group 11) made unequal, and
+  // the rigid body's mass (group 12's first line) off by 10 %.
+  const std::size_t lumped = good.find('\n', good.find("** RECORD GROUP 11")) + 1;
+  std::string unequal = good;
+  unequal.replace(good.find(' ', lumped), 0, "1");
+  EXPECT_NE(fem_error(unequal).find("RECORD GROUP 11: node 1's masses along x, y and z differ"), std::string::npos)
+      << fem_error(unequal);
+  const std::size_t rigid = good.find('\n', good.find("** RECORD GROUP 12")) + 1;
+  std::string heavier = good;
+  heavier.replace(rigid, good.find('\n', rigid) - rigid, "0.65");
+  EXPECT_NE(fem_error(heavier).find("RECORD GROUP 12: the rigid body's mass is 0.65"), std::string::npos)
+      << fem_error(heavier);
+}
+
+// Rejected modes come first in the mode shapes and are skipped: a file
+// with one more, rejected, reads to the same model.
+TEST(FemModel, RejectedModesAreSkipped) {
+  const std::string good = text_of(kFem);
+  std::string with_rejected = replaced(good, "REV0 17 4 0 6 0", "REV0 17 4 0 7 1");
+  const std::string shapes = "** RECORD GROUP 8, MODE SHAPES\n";
+  std::string rejected = "**    REJECTED MODE SHAPE # 1\n";
+  for (int k = 0; k < 17; ++k) rejected += "9 9 9 9 9 9\n";
+  with_rejected.replace(with_rejected.find(shapes) + shapes.size(), 0, rejected);
+  const flexible::FemModel a = flexible::read_fem_text(good, "good.fem"),
+                           b = flexible::read_fem_text(with_rejected, "rejected.fem");
+  EXPECT_EQ(a.shapes, b.shapes);
+  EXPECT_EQ(a.stiffness, b.stiffness);
 }
 
 TEST(FemModel, ABadModelOrAttachmentIsRefusedAtItsField) {

@@ -1,6 +1,7 @@
 #include "unfurl/render/scene_view.hpp"
 
 #include "gl.hpp"
+#include "node_resampling.hpp"
 #include "shader.hpp"
 #include "unfurl/sim/flexible/flexible_body.hpp"
 
@@ -137,65 +138,6 @@ std::string vertex_shader() {
   return text;
 }
 
-// An FE model's node and its motion (translation, then rotation).
-using Motion = Eigen::Matrix<double, 6, 1>;
-struct NodeMotion {
-  Eigen::Vector3d point;
-  Motion u;
-};
-
-// The motions at n stations along axis a over the box: linear between the
-// nodes (those at one station, a section's, averaged).
-std::vector<Motion> motions_along(std::vector<NodeMotion> nodes, int a, const Eigen::AlignedBox3d& box, int n) {
-  std::sort(nodes.begin(), nodes.end(), [a](const NodeMotion& x, const NodeMotion& y) { return x.point[a] < y.point[a]; });
-  const double length = box.sizes()[a];
-  std::vector<std::pair<double, Motion>> stations;
-  for (std::size_t k = 0; k < nodes.size();) {
-    std::size_t end = k;
-    Motion sum = Motion::Zero();
-    while (end < nodes.size() && nodes[end].point[a] <= nodes[k].point[a] + 1e-9 * length) sum += nodes[end++].u;
-    stations.push_back({nodes[k].point[a], sum / static_cast<double>(end - k)});
-    k = end;
-  }
-  std::vector<Motion> out(n, stations.front().second);
-  if (stations.size() == 1) return out;
-  std::size_t s = 0;
-  for (int k = 0; k < n; ++k) {
-    const double x = box.min()[a] + k * length / (n - 1);
-    while (s + 2 < stations.size() && stations[s + 1].first < x) ++s;
-    const double x0 = stations[s].first, x1 = stations[s + 1].first;
-    const double f = std::clamp((x - x0) / (x1 - x0), 0.0, 1.0);
-    out[k] = (1 - f) * stations[s].second + f * stations[s + 1].second;
-  }
-  return out;
-}
-
-// The motions on an n x n grid over the box's axes a and b: Shepard's
-// weights held within about two node spacings (1 / d^2, fading to nothing
-// at the radius), smooth and local.
-std::vector<Motion> motions_over(const std::vector<NodeMotion>& nodes, int a, int b, const Eigen::AlignedBox3d& box,
-                                 int n) {
-  const Eigen::Vector3d extent = box.sizes();
-  const double spacing = std::sqrt(extent[a] * extent[b] / static_cast<double>(nodes.size()));
-  const double radius = 2.5 * spacing, floor = 1e-12 * extent[a] * extent[a];
-  std::vector<Motion> out(n * n, Motion::Zero());
-  for (int r = 0; r < n; ++r)
-    for (int k = 0; k < n; ++k) {
-      const double x = box.min()[a] + k * extent[a] / (n - 1), y = box.min()[b] + r * extent[b] / (n - 1);
-      Motion sum = Motion::Zero();
-      double total = 0;
-      for (const NodeMotion& node : nodes) {
-        const double d = std::hypot(node.point[a] - x, node.point[b] - y);
-        if (d >= radius) continue;
-        const double fade = 1 - d / radius, weight = fade * fade / (d * d + floor);
-        sum += weight * node.u;
-        total += weight;
-      }
-      if (total > 0) out[r * n + k] = sum / total;
-    }
-  return out;
-}
-
 }  // namespace
 
 SceneView::SceneView(const sim::Scene& scene, const sim::SceneVisuals& visuals, MeshLibrary& meshes)
@@ -240,25 +182,13 @@ void SceneView::bend_beam(const sim::flexible::FlexibleBody& flexible, const Eig
                           Bend& bend) {
   const std::vector<sim::flexible::FlexibleNode>& nodes = flexible.mesh_nodes;
   const double length = flexible.station(nodes.back().point);
-  bend.count = kBendStations;
   bend.rows = 1;
   bend.spacing = static_cast<float>(length / (kBendStations - 1));
   bend.root = flexible.beam.root.cast<float>();
   bend.axis = flexible.axis().cast<float>();
-  bend.displacement.resize(kBendStations);
-  bend.turn.resize(kBendStations);
-  // The mesh nodes' displacements and rotations, resampled at equal
-  // stations (linear between nodes).
-  std::size_t a = 0;
-  for (int k = 0; k < kBendStations; ++k) {
-    const double x = length * k / (kBendStations - 1);
-    while (a + 2 < nodes.size() && flexible.station(nodes[a + 1].point) < x) ++a;
-    const double x0 = flexible.station(nodes[a].point), x1 = flexible.station(nodes[a + 1].point);
-    const double f = std::clamp((x - x0) / (x1 - x0), 0.0, 1.0);
-    const Eigen::Matrix<double, 6, 1> u = (1 - f) * (nodes[a].shape * eta) + f * (nodes[a + 1].shape * eta);
-    bend.displacement[k] = (exaggeration * u.head<3>()).cast<float>();
-    bend.turn[k] = (exaggeration * u.tail<3>()).cast<float>();
-  }
+  std::vector<StationMotion> stations;
+  for (const sim::flexible::FlexibleNode& node : nodes) stations.push_back({flexible.station(node.point), node.shape * eta});
+  set_bend(resample_along(stations, 0, length, kBendStations), kBendStations, exaggeration, bend);
 }
 
 void SceneView::bend_plate(const sim::flexible::FlexibleBody& flexible, const Eigen::VectorXd& eta,
@@ -299,33 +229,48 @@ void SceneView::bend_plate(const sim::flexible::FlexibleBody& flexible, const Ei
 
 void SceneView::bend_fem(const sim::flexible::FlexibleBody& flexible, const Eigen::VectorXd& eta, double exaggeration,
                          Bend& bend) {
-  std::vector<NodeMotion> nodes;
   Eigen::AlignedBox3d box;
-  for (const sim::flexible::FlexibleNode& node : flexible.mesh_nodes) {
-    nodes.push_back({node.point, node.shape * eta});
-    box.extend(node.point);
-  }
+  for (const sim::flexible::FlexibleNode& node : flexible.mesh_nodes) box.extend(node.point);
   // Along the nodes' two largest extents: one row along a boom, a grid
-  // over a panel.
+  // over a panel; a model without extent is drawn unbent.
   const Eigen::Vector3d extent = box.sizes();
   int a = 0;
   extent.maxCoeff(&a);
   const int b = extent[(a + 1) % 3] >= extent[(a + 2) % 3] ? (a + 1) % 3 : (a + 2) % 3;
+  if (!(extent[a] > 0)) {
+    bend.displacement.clear();
+    bend.turn.clear();
+    return;
+  }
   const bool boom = extent[b] < 0.05 * extent[a];
-  const int n = boom ? kBendStations : kPlateStations, rows = boom ? 1 : kPlateStations;
-  bend.count = n;
-  bend.rows = rows;
+  const int n = boom ? kBendStations : kPlateStations;
+  bend.rows = boom ? 1 : kPlateStations;
   bend.spacing = static_cast<float>(extent[a] / (n - 1));
-  bend.row_spacing = boom ? 0.0f : static_cast<float>(extent[b] / (rows - 1));
+  bend.row_spacing = boom ? 0.0f : static_cast<float>(extent[b] / (n - 1));
   bend.root = box.min().cast<float>();
   bend.axis = Eigen::Vector3f::Unit(a);
   bend.across = Eigen::Vector3f::Unit(b);
-  const std::vector<Motion> w = boom ? motions_along(nodes, a, box, n) : motions_over(nodes, a, b, box, n);
-  bend.displacement.resize(w.size());
-  bend.turn.resize(w.size());
-  for (std::size_t k = 0; k < w.size(); ++k) {
-    bend.displacement[k] = (exaggeration * w[k].head<3>()).cast<float>();
-    bend.turn[k] = (exaggeration * w[k].tail<3>()).cast<float>();
+  if (boom) {
+    std::vector<StationMotion> stations;
+    for (const sim::flexible::FlexibleNode& node : flexible.mesh_nodes)
+      stations.push_back({node.point[a], node.shape * eta});
+    set_bend(resample_along(stations, box.min()[a], extent[a], n), n, exaggeration, bend);
+  } else {
+    std::vector<ScatteredMotion> nodes;
+    for (const sim::flexible::FlexibleNode& node : flexible.mesh_nodes)
+      nodes.push_back({Eigen::Vector2d(node.point[a], node.point[b]), node.shape * eta});
+    set_bend(resample_over(nodes, Eigen::Vector2d(box.min()[a], box.min()[b]), Eigen::Vector2d(extent[a], extent[b]), n),
+             n, exaggeration, bend);
+  }
+}
+
+void SceneView::set_bend(const std::vector<NodeMotion>& motions, int count, double exaggeration, Bend& bend) {
+  bend.count = count;
+  bend.displacement.resize(motions.size());
+  bend.turn.resize(motions.size());
+  for (std::size_t k = 0; k < motions.size(); ++k) {
+    bend.displacement[k] = (exaggeration * motions[k].head<3>()).cast<float>();
+    bend.turn[k] = (exaggeration * motions[k].tail<3>()).cast<float>();
   }
 }
 

@@ -358,11 +358,7 @@ int elastic_coordinates(Spec spec, Make make) {
 
 // Where a point may not attach to an FE model, as beam_attachment_error.
 std::string fem_attachment_error(const flexible::FemBodySpec& spec, const Vec3& p) {
-  const flexible::FemModel& f = *spec.model;
-  const double tolerance = 1e-6 * (f.points.rowwise().maxCoeff() - f.points.rowwise().minCoeff()).maxCoeff();
-  if (p.norm() <= tolerance) return "";
-  for (int k = 0; k < f.nodes(); ++k)
-    if ((f.points.col(k) - p).norm() <= tolerance) return "";
+  if (spec.model->attaches(p)) return "";
   return "at a node of the FE model (its coordinates are the body frame's) or at the frame's origin";
 }
 

@@ -147,15 +147,23 @@ class ClearanceCheck {
       return static_cast<int>(bodies_.size()) - 1;
     };
     if (!m.free_floating()) base_slot_ = add(sim::kBase, m.base_name, solids.base);
-    // A body fixed to its parent without a solid of its own (a loop's
-    // pivot on a flexible panel) is part of the parent, and so is its image.
+    // A body fixed to its parent without a solid of its own (a loop's pin
+    // on a flexible panel) is part of the parent, and so is its image.
+    std::vector<bool> part(m.size(), false);
     for (int i = 0; i < m.size(); ++i) {
-      if (image_of[i] >= 0) continue;
-      const bool part = m.joints[i].type == sim::JointType::fixed && solids.bodies[i].empty() && m.parent[i] >= 0;
-      slot_of_[i] = part ? slot_of_[m.parent[i]] : add(i, m.bodies[i].name, solids.bodies[i]);
+      part[i] = image_of[i] < 0 && m.joints[i].type == sim::JointType::fixed && solids.bodies[i].empty() &&
+                m.parent[i] >= 0;
+      if (image_of[i] < 0 && !part[i]) slot_of_[i] = add(i, m.bodies[i].name, solids.bodies[i]);
     }
-    for (int i = 0; i < m.size(); ++i)
-      if (image_of[i] >= 0) slot_of_[i] = slot_of_[image_of[i]];
+    for (bool changed = true; changed;) {
+      changed = false;
+      for (int i = 0; i < m.size(); ++i) {
+        const int from = part[i] ? m.parent[i] : image_of[i];
+        if (slot_of_[i] >= 0 || from < 0 || slot_of_[from] < 0) continue;
+        slot_of_[i] = slot_of_[from];
+        changed = true;
+      }
+    }
   }
 
   int slot(int body) const { return body == sim::kBase ? base_slot_ : slot_of_[body]; }

@@ -57,9 +57,11 @@ void check_coordinates(const ModalBody& reduced, const std::string& what, const 
 
 // Each coordinate's stiffness omega_k^2 and damping 2 zeta_k omega_k (unit
 // modal masses).
+void set_modal_stiffness(FlexibleBody& body) { body.stiffness = (2 * M_PI * body.frequency_hz).array().square(); }
+
 void set_modal_terms(FlexibleBody& body, const ModalDamping& damping, const std::string& what) {
   const Eigen::VectorXd omega = 2 * M_PI * body.frequency_hz;
-  body.stiffness = omega.array().square();
+  set_modal_stiffness(body);
   if (!damping.per_coordinate.empty() && static_cast<int>(damping.per_coordinate.size()) != body.modes())
     throw std::invalid_argument(what + ": " + std::to_string(damping.per_coordinate.size()) +
                                 " damping ratios given, one for each of its " + std::to_string(body.modes()) +
@@ -138,19 +140,6 @@ std::vector<int> fastened_nodes(const PlateBodySpec& spec, PlateEdge edge) {
   return out;
 }
 
-// The largest extent of an FE model's nodes.
-double fem_size(const FemModel& f) {
-  return (f.points.rowwise().maxCoeff() - f.points.rowwise().minCoeff()).maxCoeff();
-}
-
-// The node at a body-frame point, or -1.
-int fem_node_at(const FemModel& f, const Eigen::Vector3d& point) {
-  const double tolerance = 1e-6 * fem_size(f);
-  for (int k = 0; k < f.nodes(); ++k)
-    if ((f.points.col(k) - point).norm() <= tolerance) return k;
-  return -1;
-}
-
 // Refuses a modal mass or stiffness that is not a symmetric one.
 void check_modal_matrices(const FemModel& f) {
   const auto symmetric = [](const Eigen::MatrixXd& A) {
@@ -220,12 +209,7 @@ std::vector<MassPoint> lumped_mass_points(const FemModel& f) {
   translation.leftCols<3>().setIdentity();
   rotation.rightCols<3>().setIdentity();
   for (int k = 0; k < f.nodes(); ++k) {
-    const Eigen::Matrix<double, 6, 1> m = f.lumped.col(k);
-    if (m.minCoeff() < 0)
-      throw std::invalid_argument("flexible FE model: node " + f.labels[k] + " has a negative lumped mass or inertia");
-    if (std::abs(m[1] - m[0]) > 1e-9 * m[0] || std::abs(m[2] - m[0]) > 1e-9 * m[0])
-      throw std::invalid_argument("flexible FE model: node " + f.labels[k] +
-                                  "'s lumped masses along x, y and z differ; a node carries one mass");
+    const Eigen::Matrix<double, 6, 1> m = f.lumped.col(k);  // one mass: read_fem checked
     if (m.isZero()) continue;
     MassPoint p;
     p.m = m[0];
@@ -341,28 +325,22 @@ FlexibleBody fem_body(const FemBodySpec& spec) {
   const int m = kept_coordinates(spec, all_hz);
   const Eigen::MatrixXd X = solver.eigenvectors().leftCols(m);
   const Eigen::MatrixXd shape = f.shapes * X;
-  const InertiaInvariants inertia(points, shape);
-  if (f.rigid_mass && std::abs(*f.rigid_mass - inertia.mass()) > 0.01 * *f.rigid_mass)
-    throw std::invalid_argument("flexible FE model: its lumped masses sum to " + std::to_string(inertia.mass()) +
-                                " kg, its rigid body's mass (RECORD GROUP 12) is " + std::to_string(*f.rigid_mass) +
-                                " kg");
-  FlexibleBody body{inertia, all_hz.head(m), {}, {}, {}, {}, {}, {}, spec};
+  FlexibleBody body{InertiaInvariants(points, shape), all_hz.head(m), {}, {}, {}, {}, {}, {}, spec};
   if (spec.damping_from_file) {
-    body.stiffness = (2 * M_PI * body.frequency_hz).array().square();
+    if (f.damping.rows() != f.modes())
+      throw std::invalid_argument("flexible FE model: its damping is the file's, which has no damping matrix");
+    set_modal_stiffness(body);
     body.damping = (X.transpose() * f.damping * X).diagonal();
   } else {
     set_modal_terms(body, spec.damping, "flexible FE model");
   }
   const auto node_shape = [&](int k) -> Eigen::MatrixXd { return shape.middleRows(6 * k, 6); };
   for (const Eigen::Vector3d& point : spec.attachments) {
-    const int k = fem_node_at(f, point);
-    if (k >= 0) {
-      body.nodes.push_back({f.points.col(k), node_shape(k)});
-    } else if (point.norm() <= 1e-6 * fem_size(f)) {
-      body.nodes.push_back({point, Eigen::MatrixXd::Zero(6, m)});  // the frame's own point
-    } else {
+    if (!f.attaches(point))
       throw std::invalid_argument("flexible FE model: an attachment point is at no node of the model");
-    }
+    const int k = f.node_at(point);
+    if (k >= 0) body.nodes.push_back({f.points.col(k), node_shape(k)});
+    else body.nodes.push_back({point, Eigen::MatrixXd::Zero(6, m)});  // the frame's own point
   }
   for (int k = 0; k < f.nodes(); ++k) body.mesh_nodes.push_back({f.points.col(k), node_shape(k)});
   return body;
@@ -381,8 +359,6 @@ FemBodySpec scaled(const FemBodySpec& spec, double L, double M) {
   f.damping *= M;
   f.lumped.topRows<3>() *= M;
   f.lumped.bottomRows<3>() *= M * L * L;
-  if (f.rigid_mass) *f.rigid_mass *= M;
-  f.rigid_centre *= L;
   out.model = std::make_shared<const FemModel>(std::move(f));
   for (Eigen::Vector3d& a : out.attachments) a *= L;
   return out;
@@ -436,7 +412,7 @@ int FlexibleBody::node_of(const Eigen::Vector3d& point) const {
 }
 
 bool FlexibleBody::on_frame(const Eigen::Vector3d& point) const {
-  if (fem) return point.norm() <= 1e-6 * size();
+  if (fem) return point.norm() <= 1e-6 * size();  // the held attachment's own point
   if (plate) return locate(*plate, point).on == PlatePoint::On::root_edge;
   return (point - beam.root).norm() <= 1e-9 * size();
 }
@@ -467,7 +443,7 @@ PlatePoint locate(const PlateBodySpec& spec, const Eigen::Vector3d& point) {
 }
 
 double FlexibleBody::size() const {
-  if (fem) return fem_size(*fem->model);
+  if (fem) return fem->model->size();
   return plate ? plate_size(plate->plate) : beam.section.length;
 }
 

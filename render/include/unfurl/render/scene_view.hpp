@@ -80,6 +80,9 @@ class SceneView {
   // An FE model's nodes resampled on a beam's row or a plate's grid.
   static void bend_fem(const sim::flexible::FlexibleBody& flexible, const Eigen::VectorXd& eta, double exaggeration,
                        Bend& bend);
+  // The stations' displacements and turns, times `exaggeration`.
+  static void set_bend(const std::vector<Eigen::Matrix<double, 6, 1>>& motions, int count, double exaggeration,
+                       Bend& bend);
 
   std::vector<Item> items_;
   std::vector<Bend> bends_;  // per body

@@ -4,7 +4,8 @@
 // plain text in numbered record groups, each headed by a line
 // "** RECORD GROUP n, ...", other "**" lines comments:
 //    1  header: revision, nodes, normal, attachment and constraint modes,
-//       rejected modes (the modes are the sum of the three counts)
+//       rejected modes (the modes are the sum of the three counts less
+//       the rejected ones)
 //    2  the nodes' labels
 //    3, 4  initial modal displacements and velocities (read, not used:
 //       a scene starts its bodies undeformed and at rest)
@@ -12,9 +13,10 @@
 //    8  the mode shapes: per mode (rejected ones first, skipped), per node,
 //       its translation and rotation (6 numbers)
 //    9, 10  the modal mass and stiffness matrices (modes square)
-//    11  the diagonal of the lumped mass matrix: per node, 3 masses and 3
-//       moments of inertia
-//    12  the rigid body's mass, centre of mass and inertia about it
+//    11  the diagonal of the lumped mass matrix: per node, 3 masses (equal)
+//       and 3 moments of inertia, none negative
+//    12  the rigid body's mass, centre of mass and inertia about it (its
+//       mass and centre checked against the lumped masses')
 //    13  the modal damping matrix
 //    14 and up  MBDyn's precomputed inertia invariants (skipped: unfurl sums
 //       its own from the lumped masses)
@@ -22,7 +24,6 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -40,12 +41,16 @@ struct FemModel {
   // 11: per node (columns), its masses along x, y, z and its moments of
   // inertia about x, y, z.
   Eigen::Matrix<double, 6, Eigen::Dynamic> lumped;
-  // 12, where given: the rigid body's mass, centre and inertia about it.
-  std::optional<double> rigid_mass;
-  Eigen::Vector3d rigid_centre = Eigen::Vector3d::Zero();
 
   int nodes() const { return static_cast<int>(points.cols()); }
   int modes() const { return static_cast<int>(mass.rows()); }
+  // The nodes' largest extent: the scale of the model's tolerances.
+  double size() const;
+  // The node at a body-frame point (within 1e-6 of the size), or -1.
+  int node_at(const Eigen::Vector3d& point) const;
+  // Whether something may attach at a body-frame point: at a node, or at
+  // the frame's origin (the held attachment's own point).
+  bool attaches(const Eigen::Vector3d& point) const;
 };
 
 // A line of the file that is not what its record group holds.

@@ -221,10 +221,11 @@ PlateBodySpec scaled(const PlateBodySpec& spec, double L, double M);
 // shapes, its stiffness the file's modal stiffness, its coordinates
 // orthonormalized with them; `attachments` at its nodes. Throws
 // std::invalid_argument for a model that is not one (a rigid motion among
-// its modes, modal matrices that are not symmetric and positive definite,
-// lumped masses that disagree with its rigid-body mass), and as beam_body
-// does.
+// its modes, modal matrices that are not symmetric and positive definite),
+// and as beam_body does.
 FlexibleBody fem_body(const FemBodySpec& spec);
+// (The scaled spec keeps the file's path: written back, a scaled scene
+// reads the unscaled model; scale_scene is the studies' unit check.)
 FemBodySpec scaled(const FemBodySpec& spec, double L, double M);
 
 // Where a body-frame point lies in a plate's own axes (x, y in its plane,
