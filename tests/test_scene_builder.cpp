@@ -105,7 +105,7 @@ TEST(SceneWriter, EveryBuiltInSceneReadsBackToTheSameRun) {
     const sim::SceneFile back = sim::read_scene_text(text, "written:" + name);
     EXPECT_EQ(sim::write_scene_text(back), text) << name;
     sim::Scene short_run = file.scene, short_back = back.scene;
-    for (sim::Scene* s : {&short_run, &short_back}) s->run.t_end = std::min(s->run.t_end, 1.0);
+    for (sim::Scene* s : {&short_run, &short_back}) s->run.t_end = std::min(s->run.t_end, 0.2);
     const sim::RunResult a = sim::simulate(short_run, short_run.run), b = sim::simulate(short_back, short_back.run);
     ASSERT_EQ(a.trajectory.samples.size(), b.trajectory.samples.size()) << name;
     EXPECT_EQ(a.trajectory.samples.back().y, b.trajectory.samples.back().y) << name;
