@@ -445,7 +445,9 @@ bool Dynamics::observe(double t, const double* y, Observation& out) {
         break;
     }
   }
-  out.momentum = system_momentum(model, out.poses, h);
+  std::vector<Vec3> centres(model.size());
+  for (int i = 0; i < model.size(); ++i) centres[i] = sweep_.centre_of_mass(i);
+  out.momentum = system_momentum(model, out.poses, h, centres);
 
   const int n_loops = static_cast<int>(scene_.loops.size());
   out.closure.resize(n_loops);

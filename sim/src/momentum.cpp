@@ -5,13 +5,14 @@
 
 namespace unfurl::sim {
 
-SystemMomentum system_momentum(const Model& model, const std::vector<Pose>& poses, const std::vector<Vec6>& h_body) {
+SystemMomentum system_momentum(const Model& model, const std::vector<Pose>& poses, const std::vector<Vec6>& h_body,
+                               const std::vector<Vec3>& centres) {
   SystemMomentum out;
   double mass = 0;
   Vec3 first_moment = Vec3::Zero();
   for (int i = 0; i < model.size(); ++i) {
     mass += model.bodies[i].mass;
-    first_moment += model.bodies[i].mass * poses[i].to_base(model.bodies[i].com);
+    first_moment += model.bodies[i].mass * poses[i].to_base(centres[i]);
   }
   const Vec3 centre = first_moment / mass;
   for (int i = 0; i < model.size(); ++i) {

@@ -43,11 +43,16 @@ SceneBuilder& SceneBuilder::free_base(const Body& bus, Visual visual) {
   joint.name = bus.name;
   joint.type = JointType::free;
   scene_.model.base_name = kInertialFrame;
-  scene_.model.bodies.push_back(bus);
-  scene_.model.joints.push_back(joint);
-  scene_.model.parent.push_back(kBase);
-  visuals_.bodies.push_back(std::move(visual));
+  append(bus, kBase, std::move(joint), std::move(visual));
   return *this;
+}
+
+void SceneBuilder::append(const Body& body, int parent, Joint joint, Visual visual) {
+  scene_.model.parent.push_back(parent);
+  scene_.model.bodies.push_back(body.flexible ? undeformed(body) : body);
+  scene_.model.joints.push_back(std::move(joint));
+  visuals_.bodies.push_back(std::move(visual));
+  if (body.flexible) scene_.elements.push_back(std::make_shared<Elasticity>(scene_.model.size() - 1, body.flexible));
 }
 
 bool SceneBuilder::has_body(const std::string& name) const { return scene_.model.find_body(name).has_value(); }
@@ -76,11 +81,7 @@ SceneBuilder& SceneBuilder::body(const Body& body, const std::string& parent, Jo
   const int k = body_index(parent, field + ".parent");
   scene_.model.parent_node.resize(scene_.model.size(), -1);
   scene_.model.parent_node.push_back(k == kBase ? -1 : node_at(k, joint.parent_point, field + ".joint.parent_point"));
-  scene_.model.parent.push_back(k);
-  scene_.model.bodies.push_back(body.flexible ? undeformed(body) : body);
-  scene_.model.joints.push_back(std::move(joint));
-  visuals_.bodies.push_back(std::move(visual));
-  if (body.flexible) scene_.elements.push_back(std::make_shared<Elasticity>(scene_.model.size() - 1, body.flexible));
+  append(body, k, std::move(joint), std::move(visual));
   return *this;
 }
 

@@ -303,23 +303,6 @@ void place_sensors_on_nodes(Scene& scene) {
   }
 }
 
-// What flexible bodies (docs/FLEXIBLE.md) do not carry yet is refused
-// rather than computed wrong: their joints are hinges, slides (driven or
-// not) or fixed, not compliant. Elements that push at a flexible body's
-// points check that each point is one of its nodes.
-void check_flexible(const Scene& scene) {
-  const Model& m = scene.model;
-  if (!m.has_flexible_bodies()) return;
-  for (int i = 0; i < m.size(); ++i) {
-    if (!m.flexible(i)) continue;
-    const Joint& j = m.joints[i];
-    const std::string field = "bodies[" + std::to_string(i) + "] (" + m.bodies[i].name + ")";
-    if (!(j.has_free_coordinate() || j.type == JointType::fixed) || j.compliant)
-      throw SceneInvalid(field + ".joint", "a flexible body's joint is a revolute, prismatic or fixed joint, not "
-                                           "compliant (the others are not carried yet)");
-  }
-}
-
 void validate(Scene& scene) {
   // Which joints are driven follows from the drivers alone (the sweep reads
   // it off the model).
@@ -338,7 +321,6 @@ void validate(Scene& scene) {
                            "a loop (the regulator would snap it shut)");
   check_loops(scene);
   check_sensors(scene);
-  check_flexible(scene);
   place_sensors_on_nodes(scene);
   for (const auto& [name, x] : {std::pair{"spring", scene.torque_margin.spring}, {"friction", scene.torque_margin.friction},
                                {"damping", scene.torque_margin.damping}, {"harness", scene.torque_margin.harness},

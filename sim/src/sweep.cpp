@@ -27,10 +27,9 @@ Sweep::Sweep(const Model& model)
       f.m = model.bodies[i].flexible->modes();
       f.d = 6 + f.m;
       f.driven = model.joints[i].driven;
-      f.hinge_free = model.joints[i].dof() == 1 && !f.driven;
-      const int free = f.hinge_free + f.m;
-      f.A_free = flexible::ExtendedMatrix::Zero(f.d, free);
-      if (f.hinge_free) f.A_free.col(0).head<6>() = A_[i];
+      f.joint_free = f.driven ? 0 : model.joints[i].dof();
+      f.A_free = flexible::ExtendedMatrix::Zero(f.d, f.joint_free + f.m);
+      f.A_free.topLeftCorner(6, f.joint_free) = model.joints[i].motion_axes(q_.data()).leftCols(f.joint_free);
       f.A_free.bottomRightCorner(f.m, f.m).setIdentity();
       f.A_driven = flexible::ExtendedVector::Zero(f.d);
       f.M_own.resize(f.d, f.d);
@@ -68,8 +67,8 @@ void Sweep::configure_flexible(int i, const double* joint_diagonal) {
   Flexible& f = flexible_[flex_[i]];
   flexible::ExtendedMatrix K = f.A_free.transpose() * f.M_star * f.A_free;
   if (joint_diagonal) {
-    if (f.hinge_free) K(0, 0) += joint_diagonal[model_.first_velocity[i].value];
-    for (int r = 0; r < f.m; ++r) K(f.hinge_free + r, f.hinge_free + r) += joint_diagonal[model_.first_elastic_velocity[i] + r];
+    for (int r = 0; r < f.joint_free; ++r) K(r, r) += joint_diagonal[model_.first_velocity[i].value + r];
+    for (int r = 0; r < f.m; ++r) K(f.joint_free + r, f.joint_free + r) += joint_diagonal[model_.first_elastic_velocity[i] + r];
   }
   f.D = Eigen::LLT<flexible::ExtendedMatrix>(K).solve(flexible::ExtendedMatrix::Identity(K.rows(), K.cols()));
   f.M_star_A = f.M_star * f.A_free;
@@ -86,6 +85,11 @@ void Sweep::set_configuration(const double* q, const double* joint_diagonal) {
     if (const int a = model_.node_of(i); a >= 0) X_[i].rho -= model_.bodies[model_.parent[i]].flexible->nodes[a].point;
     if (flex_[i] < 0) continue;
     Flexible& f = flexible_[flex_[i]];
+    if (multi_[i] >= 0 && multi_axes_[multi_[i]].varying) {
+      MultiAxis& J = multi_axes_[multi_[i]];
+      J.A = model_.joints[i].motion_axes(q + c);
+      f.A_free.topLeftCorner(6, f.joint_free) = J.A.leftCols(f.joint_free);
+    }
     const double* eta = q + model_.first_elastic_position[i];
     model_.bodies[i].flexible->inertia.mass_matrix(eta, f.M_own);
     f.M_star = f.M_own;
@@ -133,8 +137,8 @@ void Sweep::carry_inertia(int i, const Mat6& HM) {
 
 double Sweep::articulated_inertia(int i, int r) const {
   if (flex_[i] >= 0) {
-    const Flexible& f = flexible_[flex_[i]];
-    return A_[i].dot(f.M_star.topLeftCorner<6, 6>() * A_[i]);
+    const Vec6 A = multi_[i] >= 0 ? Vec6(multi_axes_[multi_[i]].A.col(r)) : A_[i];
+    return A.dot(flexible_[flex_[i]].M_star.topLeftCorner<6, 6>() * A);
   }
   if (driven_[i]) return A_[i].dot(M_star_A_[i]);  // what the driver moves against
   if (multi_[i] < 0) return 1.0 / D_[i];
@@ -169,6 +173,15 @@ void Sweep::velocities_from_rates(const double* dq, std::vector<Vec6>& v) const 
   }
 }
 
+Vec6 Sweep::joint_velocity_product(int i, const std::vector<Vec6>& v, const double* dq) const {
+  if (multi_[i] < 0) return motion_cross(v[i], A_[i] * dq[model_.first_velocity[i].value]);
+  const MultiAxis& J = multi_axes_[multi_[i]];
+  Vec6 c = motion_cross(v[i], J.A * rates_of(i, dq));
+  if (J.varying) c += model_.joints[i].motion_axes_rate(q_.data() + model_.first_position[i].value,
+                                                        dq + model_.first_velocity[i].value) * rates_of(i, dq);
+  return c;
+}
+
 Vec6 Sweep::rates_of(int i, const double* x) const {
   Vec6 w = Vec6::Zero();
   for (int r = 0; r < model_.joints[i].dof(); ++r) w[r] = x[model_.first_velocity[i].value + r];
@@ -181,6 +194,13 @@ flexible::ExtendedVector Sweep::own_momentum(int i, const Vec6& v, const double*
   flexible::ExtendedVector V(f.d);
   V << v, Eigen::Map<const Eigen::VectorXd>(w + model_.first_elastic_velocity[i], f.m);
   return f.M_own * V;
+}
+
+Vec3 Sweep::centre_of_mass(int i) const {
+  if (flex_[i] < 0) return model_.bodies[i].com;
+  const flexible::ExtendedMatrix& M = flexible_[flex_[i]].M_own;
+  const Mat3 mc = M.block<3, 3>(3, 0);  // (m c)~, as the undeformed body's
+  return Vec3(mc(2, 1), mc(0, 2), mc(1, 0)) / M(0, 0);
 }
 
 Vec6 Sweep::node_frame_velocity(int i, int a, const std::vector<Vec6>& v, const double* w) const {
@@ -235,13 +255,13 @@ void Sweep::flexible_accelerations(const std::vector<Vec6>& v, const double* dq,
       const Flexible& f = flexible_[flex_[i]];
       f.b.head<6>() += bias[i];
       f.a_c.setZero(f.d);
-      if (c >= 0) f.a_c.head<6>() = motion_cross(v[i], A_[i] * dq[c]);
+      if (c >= 0) f.a_c.head<6>() = joint_velocity_product(i, v, dq);
       if (f.driven) f.a_c += f.A_driven * (driven ? driven[c] : 0.0);
       if (const int n = model_.node_of(i); n >= 0)
         f.a_c.head<6>() += X_[i].transform_velocity(
             flexible_[flex_[k]].nodes[n].velocity_product(v[k], dq + model_.first_elastic_velocity[k]));
-      flexible::ExtendedVector Q_f(f.hinge_free + f.m);
-      if (f.hinge_free) Q_f[0] = Q[c];
+      flexible::ExtendedVector Q_f(f.joint_free + f.m);
+      Q_f.head(f.joint_free) = Eigen::Map<const Eigen::VectorXd>(Q + std::max(0, c), f.joint_free);
       Q_f.tail(f.m) = Eigen::Map<const Eigen::VectorXd>(Q + model_.first_elastic_velocity[i], f.m);
       f.u = Q_f - f.A_free.transpose() * f.b;
       const flexible::ExtendedVector carried =
@@ -272,7 +292,7 @@ void Sweep::flexible_accelerations(const std::vector<Vec6>& v, const double* dq,
       const flexible::ExtendedVector x = f.D * (f.u - f.M_star_A.transpose() * f.a_hat);
       f.a_hat += f.A_free * x;
       if (f.driven) ddq[c] = driven ? driven[c] : 0.0;
-      if (f.hinge_free) ddq[c] = x[0];
+      Eigen::Map<Eigen::VectorXd>(ddq + std::max(0, c), f.joint_free) = x.head(f.joint_free);
       Eigen::Map<Eigen::VectorXd>(ddq + model_.first_elastic_velocity[i], f.m) = x.tail(f.m);
       a[i] = f.a_hat.head<6>();
       f.wrench = (f.M_star * f.a_hat + f.b).head<6>();
@@ -308,9 +328,7 @@ void Sweep::rigid_joint_backward(int i, const std::vector<Vec6>& v, const double
   a[i].setZero();
   if (multi_[i] >= 0) {
     const MultiAxis& J = multi_axes_[multi_[i]];
-    a[i] = motion_cross(v[i], J.A * rates_of(i, dq));
-    if (J.varying)
-      a[i] += model_.joints[i].motion_axes_rate(q_.data() + model_.first_position[i].value, dq + c) * rates_of(i, dq);
+    a[i] = joint_velocity_product(i, v, dq);
     const Vec6 u = rates_of(i, Q) - J.A.transpose() * bias[i];
     for (int r = 0; r < J.n; ++r) ddq[c + r] = u[r];
   } else if (driven_[i]) {

@@ -19,9 +19,13 @@ struct SystemMomentum {
   double angular_scale = 0;
 };
 
-// From the poses and h: each body's own momentum (linear, angular about its origin) in its
-// frame: M_i v_i, or a flexible body's frame part of M^ (v_i, eta').
-SystemMomentum system_momentum(const Model& model, const std::vector<Pose>& poses, const std::vector<Vec6>& h);
+// From the poses, h: each body's own momentum (linear, angular about its
+// origin) in its frame: M_i v_i, or a flexible body's frame part of M^ (v_i,
+// eta'), and each body's centre of mass in its frame (a flexible body's as
+// deformed: with its undeformed one the centre would wander as the body
+// bends, and the angular momentum about it with it).
+SystemMomentum system_momentum(const Model& model, const std::vector<Pose>& poses, const std::vector<Vec6>& h,
+                               const std::vector<Vec3>& centres);
 
 // The orientation a ball or free joint gives its child, from q and q': the
 // quaternion (w, x, y, z, unit), the rotation vector (angle times axis, the

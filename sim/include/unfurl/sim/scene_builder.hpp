@@ -71,6 +71,9 @@ class SceneBuilder {
   void set_initial(const std::string& joint, std::vector<double> values, int which);
   int node_at(int body, const Vec3& point, const std::string& field) const;
   static Body undeformed(Body body);
+  // The body, its joint to `parent` and its drawing; a flexible body's
+  // mass properties its undeformed shape's, its elasticity an element.
+  void append(const Body& body, int parent, Joint joint, Visual visual);
 
   Scene scene_;
   SceneVisuals visuals_;

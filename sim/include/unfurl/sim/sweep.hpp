@@ -30,6 +30,7 @@
 // were, operation for operation.
 #pragma once
 
+#include <algorithm>
 #include <stdexcept>
 #include <vector>
 
@@ -125,6 +126,8 @@ class Sweep {
   // or for a flexible body M^ (v, eta') (6 + m entries: the frame's, then
   // the elastic momenta's own part).
   flexible::ExtendedVector own_momentum(int i, const Vec6& v, const double* w) const;
+  // Body i's centre of mass in its frame: a flexible body's as deformed.
+  Vec3 centre_of_mass(int i) const;
   // The velocity of the node frame joint i hangs on (flexible parent),
   // from the bodies' velocities v and the rates w.
   Vec6 node_velocity(int i, const std::vector<Vec6>& v, const double* w) const {
@@ -178,13 +181,14 @@ class Sweep {
   void factor_multi_axis(int i, const double* joint_diagonal);
 
   // A flexible body's extended quantities: d = 6 + m; the free axes of its
-  // joint in the extended space (the hinge's unless driven, then eta's);
-  // a driven hinge's axis. phi, F and eta_dot are the passes' scratch.
+  // joint in the extended space (the joint's n_i unless driven, then
+  // eta's); a driven hinge's axis. phi, F and eta_dot are the passes' scratch.
   // All in place (fixed-size storage): the right-hand side allocates
   // nothing; the passes' scratch holds up to kMaxExtended load cases.
   struct Flexible {
     int body = -1, m = 0, d = 6;
-    bool hinge_free = false, driven = false;
+    int joint_free = 0;  // n_i, or 0 for a driven joint
+    bool driven = false;
     flexible::ExtendedMatrix M_star, A_free, D, M_star_A;
     flexible::ExtendedVector A_driven;
     std::vector<flexible::NodeFrame> nodes;
@@ -232,7 +236,7 @@ class Sweep {
   void flexible_bias(int j, const P& p, std::vector<S>& phi, const double* driven) const;
   template <class S, class P, class Pout>
   void flexible_velocity(int i, const P& p, Pout& dq, std::vector<S>& v, const double* driven) const;
-  // The free coordinates' rows of x: the hinge's (if free), then eta's.
+  // The free coordinates' rows of x: the joint's (if free), then eta's.
   template <class P>
   flexible::ExtendedMatrix free_rows(int i, const P& x) const;
   // The passes' number of load cases k, at most kMaxExtended with flexible
@@ -246,6 +250,9 @@ class Sweep {
   }
   // Joint i's entries of a per-velocity-coordinate array, padded to 6.
   Vec6 rates_of(int i, const double* x) const;
+  // c_i = v_i x (A_i q'_i) + (dA_i/dt) q'_i: the velocity-product
+  // acceleration across joint i (rates dq).
+  Vec6 joint_velocity_product(int i, const std::vector<Vec6>& v, const double* dq) const;
 
   const Model& model_;
   std::vector<Vec6> A_;         // A_i (constant), one-coordinate joints
@@ -265,8 +272,8 @@ class Sweep {
 template <class P>
 flexible::ExtendedMatrix Sweep::free_rows(int i, const P& x) const {
   const Flexible& f = flexible_[flex_[i]];
-  flexible::ExtendedMatrix out(f.hinge_free + f.m, x.cols());
-  if (f.hinge_free) out.row(0) = x.row(model_.first_velocity[i].value);
+  flexible::ExtendedMatrix out(f.joint_free + f.m, x.cols());
+  out.topRows(f.joint_free) = x.middleRows(std::max(0, model_.first_velocity[i].value), f.joint_free);
   out.bottomRows(f.m) = x.middleRows(model_.first_elastic_velocity[i], f.m);
   return out;
 }
@@ -296,6 +303,7 @@ void Sweep::carry(int j, const S& carried, std::vector<S>& phi) const {
 template <class S, class P>
 void Sweep::flexible_bias(int j, const P& p, std::vector<S>& phi, const double* driven) const {
   const Flexible& f = flexible_[flex_[j]];
+  f.phi.topRows(6) += phi[j];  // what children hung on the frame itself carried
   f.phi_prime = f.phi;
   if (f.driven && driven) f.phi_prime.col(0) += f.M_star * f.A_driven * driven[model_.first_velocity[j].value];
   const flexible::ExtendedMatrix carried =
@@ -314,8 +322,8 @@ void Sweep::flexible_velocity(int i, const P& p, Pout& dq, std::vector<S>& v, co
   if (f.driven) {
     dq.row(c).setConstant(driven ? driven[c] : 0.0);
     hat += f.A_driven * dq.row(c);
-  } else if (f.hinge_free) {
-    dq.row(c) = x.row(0);
+  } else {
+    dq.middleRows(std::max(0, c), f.joint_free) = x.topRows(f.joint_free);
   }
   dq.middleRows(e, f.m) = x.bottomRows(f.m);
   hat.noalias() += f.A_free * x;
@@ -394,9 +402,9 @@ void Sweep::force_pass(std::vector<S>& F, Pout& Q) const {
       const Flexible& f = flexible_[flex_[i]];
       f.F.topRows(6) += F[i];
       F[i] = f.F.topRows(6);
-      if (c >= 0) Q.row(c).noalias() = A_[i].transpose() * F[i];
       Q.middleRows(model_.first_elastic_velocity[i], f.m) = f.F.bottomRows(f.m);
-    } else if (multi_[i] >= 0) {
+    }
+    if (multi_[i] >= 0) {
       const MultiAxis& J = multi_axes_[multi_[i]];
       const auto Q_i = (J.A.transpose() * F[i]).eval();
       Q.middleRows(c, J.n) = Q_i.topRows(J.n);
