@@ -11,6 +11,7 @@
 
 #include <Eigen/Dense>
 #include <cstdio>
+#include <ostream>
 #include <random>
 
 #include "unfurl/sim/dynamics.hpp"
@@ -309,10 +310,13 @@ TEST_P(FlexibleSweep, ARunKeepsItsEnergyBalance) {
   }
 }
 
-std::string joint_name(const ::testing::TestParamInfo<BoomJoint>& info) {
+const char* kind_name(BoomJoint kind) {
   const char* names[] = {"Revolute", "Universal", "Compliant"};
-  return names[static_cast<int>(info.param)];
+  return names[static_cast<int>(kind)];
 }
+std::string joint_name(const ::testing::TestParamInfo<BoomJoint>& info) { return kind_name(info.param); }
+// How gtest (and ctest's test names) show a kind.
+void PrintTo(BoomJoint kind, std::ostream* os) { *os << kind_name(kind); }
 
 INSTANTIATE_TEST_SUITE_P(BoomJoints, FlexibleSweep,
                          ::testing::Values(BoomJoint::revolute, BoomJoint::universal, BoomJoint::compliant),
@@ -322,7 +326,7 @@ INSTANTIATE_TEST_SUITE_P(BoomJoints, FlexibleSweep,
 // quaternion's): a free-floating flexible boom with a rigid tip on its end
 // node and a rigid body on a ball joint at its root (a child on the frame
 // itself, not on a node: the bias pass once dropped what it carried, and
-// this run lost 1 % of its momentum), and a rigid bus with the flexible
+// this run drifted 1-2 % in momentum), and a rigid bus with the flexible
 // boom on a ball joint. Nothing acts from outside: the momentum holds (about
 // the deformed bodies' centre of mass); undamped, the energy holds while
 // the modes ring.

@@ -4,11 +4,12 @@ The panel is zfold_plates' honeycomb panel (0.9 m x 1.2 m, bending stiffness
 D = 7435 N m, 3.70 kg/m^2 with its cells; assets/scenes/zfold_plates.yaml
 gives the sandwich's source), meshed here with Adini-Clough-Melosh
 rectangles (the 12-term polynomial element: w and its two slopes at each
-corner, consistent masses), a different element from unfurl's own plate
+corner, consistent masses for the modal matrices; the lumped masses give
+the body's inertia), a different element from unfurl's own plate
 (Bogner-Fox-Schmit). The body frame is the hinge's: the root edge (y = 0,
-x from -0.45 to 0.45) is held, as a hinge line fastened along its length
-holds it; the outer edge's corners and middle are the interface nodes where
-a tip fitting, a latch or a sensor attaches. The panel is rigid in its own
+x from -0.45 to 0.45) is held, as a hinge line fastened along its whole
+length holds it; the outer edge's corners and middle are the interface
+nodes where a tip fitting, a latch or a sensor attaches. The panel is rigid in its own
 plane (in-plane stretching is stiffer than bending by (size/thickness)^2),
 so each node's in-plane motions are held.
 

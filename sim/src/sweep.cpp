@@ -227,7 +227,7 @@ void Sweep::carry_bias(int j, const Vec6& carried, std::vector<Vec6>& bias) cons
 
 // The articulated-body recursion with flexible bodies (docs/FLEXIBLE.md):
 // a flexible body's bias is p^A^ = (dM^/dt) V + (Omega(v) (M^ V)_frame,
-// -dT/d eta) - (F, 0), its joint's free coordinates the hinge's and eta's;
+// -dT/d eta) - (F, 0), its joint's free coordinates the joint's and eta's;
 // a child on a node adds the node frame's velocity product to its own.
 void Sweep::flexible_accelerations(const std::vector<Vec6>& v, const double* dq, const std::vector<Vec6>& F,
                                    const double* Q, std::vector<Vec6>& bias, std::vector<Vec6>& a, double* ddq,

@@ -21,8 +21,8 @@
 // pass none: they see the driven joints locked, as the motor holds them.
 //
 // A flexible body (docs/FLEXIBLE.md) is a body of 6 + m velocities: its
-// frame's and its elastic rates eta'. Its own joint then has the hinge's
-// coordinates and the m elastic ones; its articulated inertia M*^ is
+// frame's and its elastic rates eta'. Its own joint then has the joint's
+// n_i coordinates (none when driven) and the m elastic ones; its articulated inertia M*^ is
 // (6 + m) square, and its parent sees the frame's 6 x 6 block of H M*^ as
 // from any body. A child of a flexible body hangs on a node frame that the
 // modes move (flexible::NodeFrame): it is carried to the body's extended
@@ -240,8 +240,8 @@ class Sweep {
   template <class P>
   flexible::ExtendedMatrix free_rows(int i, const P& x) const;
   // The passes' number of load cases k, at most kMaxExtended with flexible
-  // bodies (their scratch is in place; loops, the only source of more, are
-  // refused with flexible bodies).
+  // bodies (their scratch is in place; a mechanism's loops, the only source
+  // of more, are fewer).
   template <class S>
   int load_cases(const std::vector<S>& x) const {
     const int k = x.empty() ? 1 : static_cast<int>(x[0].cols());
