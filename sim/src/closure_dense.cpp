@@ -23,11 +23,14 @@ class DenseClosureSolver : public ClosureSolver {
   }
 
   bool factorize(const Sweep& sweep, const double* delta) override {
-    R_ = mobility_.matrix(sweep);
+    W_ = &mobility_.matrix(sweep);
+    R_ = *W_;
     R_.diagonal() += Eigen::Map<const Eigen::VectorXd>(delta, m_);
     llt_.compute(R_);
     return llt_.info() == Eigen::Success;
   }
+
+  const LoopMatrix* mobility() const override { return W_; }
 
   void solve(const double* B, double* X, int columns, bool) override {
     for (int c = 0; c < columns; ++c)
@@ -37,6 +40,7 @@ class DenseClosureSolver : public ClosureSolver {
  private:
   Mobility mobility_;
   int m_;
+  const LoopMatrix* W_ = nullptr;  // mobility_'s, as the last factorize() formed it
   LoopMatrix R_;
   Eigen::LLT<LoopMatrix> llt_;
 };

@@ -151,7 +151,7 @@ std::vector<double> Dynamics::initial_state() {
 void Dynamics::start_integral_at_rest(double* y) {
   // evaluate() leaves the loops' acceleration d under every other force.
   if (!evaluate(0, y, ydot_.data(), Regulator::Gains::current)) return;
-  const LoopMatrix& W = regulator_->mobility(sweep_);
+  const LoopMatrix& W = regulator_->mobility(sweep_, configuration_key_);
   closure_rank_->compute(W);
   closure_rank_->rigid_loop_forces(d_.data(), lambda_.data());
   regulator_->integral_at_rest(W, lambda_.data(), d_.data(), y + layout_.u());
@@ -345,7 +345,7 @@ bool Dynamics::loads(double t, const double* y, Loads& out, std::vector<ClosureE
       regulator_->residual_rate(a_, d_.data());
       add_element_forces(q, w);
     }
-    closure_rank_->compute(regulator_->mobility(sweep_));
+    closure_rank_->compute(regulator_->mobility(sweep_, configuration_key_));
     // lambda_ holds the regulator's loop forces, which moved the mechanism.
     if (!closure_rank_->loop_forces(d_.data(), lambda_.data(), at == At::step_end))
       out.determinacy = Determinacy::indeterminate;

@@ -29,6 +29,12 @@ bool Regulator::factorize(const Sweep& sweep, long configuration) {
   return factorized_ok_;
 }
 
+const LoopMatrix& Regulator::mobility(const Sweep& sweep, long configuration) {
+  if (solver_ && configuration == factorized_configuration_)
+    if (const LoopMatrix* W = solver_->mobility()) return *W;
+  return mobility_.matrix(sweep);
+}
+
 void Regulator::calibrate(const Sweep& sweep) {
   factorized_configuration_ = -1;  // delta changes
   if (settings_.gains == GainTuning::full) {

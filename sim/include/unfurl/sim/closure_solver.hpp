@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "unfurl/sim/loop_components.hpp"
+#include "unfurl/sim/mobility.hpp"
 #include "unfurl/sim/regulator_settings.hpp"
 #include "unfurl/sim/sweep.hpp"
 
@@ -30,6 +31,9 @@ class ClosureSolver {
   // stops after its first pass (about 1e-5 of B off near a branch point):
   // a smooth, linear stand-in for R^-1, enough for a Jacobian's product.
   virtual void solve(const double* B, double* X, int columns = 1, bool refine = true) = 0;
+  // W of the last factorize() where the solver formed it (the dense one
+  // does), so that an analysis at that configuration need not form it again.
+  virtual const LoopMatrix* mobility() const { return nullptr; }
 };
 
 // automatic: the dense solver while it can (it is the faster up to its

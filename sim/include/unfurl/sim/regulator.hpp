@@ -138,6 +138,9 @@ class Regulator {
   // W at the sweep's configuration (for analysis; at most
   // kMaxDenseComponents components).
   const LoopMatrix& mobility(const Sweep& sweep) { return mobility_.matrix(sweep); }
+  // The same where the sweep's configuration has the key `configuration`:
+  // the W the last factorize() formed if it was for that key.
+  const LoopMatrix& mobility(const Sweep& sweep, long configuration);
 
  private:
   std::vector<Loop> loops_;
