@@ -4,6 +4,8 @@
 #include <sys/wait.h>
 
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "unfurl/sim/elements/all.hpp"
@@ -28,6 +30,14 @@ inline std::string scene_error(const std::string& text) {
     return e.what();
   }
   return "no error";
+}
+
+// A file's whole text ("" where it cannot be read).
+inline std::string text_of(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
 }
 
 struct CommandOutcome {

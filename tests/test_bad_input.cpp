@@ -123,10 +123,7 @@ TEST(Interruption, SigintKeepsCompleteFilesAndSaysWhy) {
     }
     EXPECT_GT(rows, 10) << name;
   }
-  std::ifstream summary(out / "summary.json");
-  std::stringstream text;
-  text << summary.rdbuf();
-  EXPECT_NE(text.str().find("\"status\": \"cancelled\""), std::string::npos);
+  EXPECT_NE(test::text_of(out / "summary.json").find("\"status\": \"cancelled\""), std::string::npos);
 }
 
 }  // namespace

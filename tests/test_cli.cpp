@@ -179,11 +179,9 @@ TEST(Cli, BodiesThatInterpenetrateAreNamed) {
   EXPECT_NE(o.output.find("warning      frame_A and panel_A2 touch or interpenetrate from t = 0.570000 s to 3.590000 s"),
             std::string::npos)
       << o.output;
-  std::ifstream in(dir / "zf" / "summary.json");
-  std::stringstream json;
-  json << in.rdbuf();
-  EXPECT_NE(json.str().find("\"clearance\": {\n    \"clear\": false"), std::string::npos) << json.str();
-  EXPECT_NE(json.str().find("\"clearance\": \"distance m, times s\""), std::string::npos) << json.str();
+  const std::string json = test::text_of(dir / "zf" / "summary.json");
+  EXPECT_NE(json.find("\"clearance\": {\n    \"clear\": false"), std::string::npos) << json;
+  EXPECT_NE(json.find("\"clearance\": \"distance m, times s\""), std::string::npos) << json;
 }
 #else
 TEST(Cli, WithoutAMeshReaderClearanceSaysSoOnce) {
@@ -211,10 +209,8 @@ TEST(Cli, AFlexibleBodyBentFarBeyondItsModelIsWarnedAbout) {
   ASSERT_EQ(o.code, 0) << o.output;
   EXPECT_NE(o.output.find("peak deflection 0.6711 m at panel_A2"), std::string::npos) << o.output;
   EXPECT_NE(o.output.find("warning      panel_A2 deflects 0.671 m at t = 10.0"), std::string::npos) << o.output;
-  std::ifstream in(dir / "soft" / "summary.json");
-  std::stringstream json;
-  json << in.rdbuf();
-  EXPECT_NE(json.str().find("\"peak_deflection\""), std::string::npos) << json.str();
+  const std::string json = test::text_of(dir / "soft" / "summary.json");
+  EXPECT_NE(json.find("\"peak_deflection\""), std::string::npos) << json;
   o = run("simulate zfold_plates --t-end 12 --out " + (dir / "stiff").string());
   ASSERT_EQ(o.code, 0) << o.output;
   EXPECT_NE(o.output.find("peak deflection 0.003987 m at panel_A2"), std::string::npos) << o.output;
@@ -311,12 +307,7 @@ TEST(Cli, ModesWritesItsFilesAndRenderDrawsAMode) {
             "mode,kind,frequency_hz [Hz],damping_ratio,damped_frequency_hz [Hz],shape.j1 [rad],shape.j2 [rad],"
             "shape.j3 [rad],shape.j4 [rad]");
   EXPECT_EQ(row.rfind("1,elastic,0.4131", 0), 0u) << row;
-  const std::string json = [&] {
-    std::ifstream in(dir / "modes.json");
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }();
+  const std::string json = test::text_of(dir / "modes.json");
   EXPECT_NE(json.find("\"kind\": \"elastic\""), std::string::npos) << json;
   EXPECT_NE(json.find("settled to its static equilibrium"), std::string::npos) << json;
 #ifdef UNFURL_WITH_RENDER
@@ -371,10 +362,7 @@ TEST(Cli, SolverFailureReportsWhereAndKeepsResults) {
   EXPECT_EQ(o.code, 1) << o.output;
   EXPECT_TRUE(std::regex_search(o.output, std::regex("check failed at t = [0-9.e-]+ s \\(step"))) << o.output;
   EXPECT_TRUE(fs::exists(dir / "trajectory.csv"));
-  std::ifstream json(dir / "summary.json");
-  std::stringstream text;
-  text << json.rdbuf();
-  EXPECT_NE(text.str().find("\"status\": \"failed\""), std::string::npos);
+  EXPECT_NE(test::text_of(dir / "summary.json").find("\"status\": \"failed\""), std::string::npos);
 }
 
 }  // namespace

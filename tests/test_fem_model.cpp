@@ -11,6 +11,7 @@
 #include <sstream>
 #include <string>
 
+#include "support.hpp"
 #include "unfurl/sim/flexible/fem_model.hpp"
 #include "unfurl/sim/flexible/flexible_body.hpp"
 #include "unfurl/sim/scene_file.hpp"
@@ -22,13 +23,6 @@ namespace {
 
 const std::string kScene = std::string(UNFURL_SOURCE_DIR) + "/examples/fem/magnetometer_boom.yaml";
 const std::string kFem = std::string(UNFURL_SOURCE_DIR) + "/examples/fem/boom.fem";
-
-std::string text_of(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // boom_fem.py's tube: 3 m, 40 mm across, 1 mm wall; E 70 GPa, G 5 GPa,
 // 1600 kg/m^3; 16 elements.
@@ -47,7 +41,7 @@ SceneFile beam_boom(const std::vector<Override>& overrides = {}) {
   beam << "beam: {length: 3, axial_stiffness: " << t.E * t.A << ", bending_stiffness: [" << t.E * t.I << ", "
        << t.E * t.I << "], torsional_stiffness: " << t.G * 2 * t.I << ", mass_per_length: " << t.rho * t.A
        << ", polar_inertia_per_length: " << t.rho * 2 * t.I << ", elements: 16}\n      modes: 4";
-  std::string text = text_of(kScene);
+  std::string text = test::text_of(kScene);
   const std::string fem = "fem: boom.fem";
   text.replace(text.find(fem), fem.size(), beam.str());
   return read_scene_text(text, "beam boom", overrides);
@@ -158,7 +152,7 @@ std::string replaced(std::string text, const std::string& from, const std::strin
 }
 
 TEST(FemModel, ABadFileIsRefusedAtItsLine) {
-  const std::string good = text_of(kFem);
+  const std::string good = test::text_of(kFem);
   EXPECT_EQ(fem_error(good), "");
   EXPECT_NE(fem_error(replaced(good, "** RECORD GROUP 10", "** RECORD GROUP 99")).find("no RECORD GROUP 10"),
             std::string::npos);
@@ -194,7 +188,7 @@ TEST(FemModel, ABadFileIsRefusedAtItsLine) {
 // Rejected modes come first in the mode shapes and are skipped: a file
 // with one more, rejected, reads to the same model.
 TEST(FemModel, RejectedModesAreSkipped) {
-  const std::string good = text_of(kFem);
+  const std::string good = test::text_of(kFem);
   std::string with_rejected = replaced(good, "REV0 17 4 0 6 0", "REV0 17 4 0 7 1");
   const std::string shapes = "** RECORD GROUP 8, MODE SHAPES\n";
   std::string rejected = "**    REJECTED MODE SHAPE # 1\n";

@@ -21,13 +21,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 // A test's scratch directory under /tmp, made empty; removed afterwards
 // unless the test failed (its files are then what to look at).
 struct Scratch {
@@ -50,7 +43,7 @@ std::string gui_session_failure(const fs::path& dir, const std::string& args) {
                               (dir / "log.txt").string() + " 2>&1";
   const int status = std::system(command.c_str());
   if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return "";
-  return "exit status " + std::to_string(status) + ":\n" + slurp(dir / "log.txt");
+  return "exit status " + std::to_string(status) + ":\n" + test::text_of(dir / "log.txt");
 }
 
 // Latch time of `joint` in the report's run `which` ("current"/"previous"):
@@ -129,7 +122,7 @@ TEST(Gui, ScriptedSessionPlaysScrubsChangesAPreloadAndReruns) {
   EXPECT_GT(cell_pixels(view, 0, 0, view.width, view.height), 2000);
 
   // The new run differs from the old: chain A's root latch moved.
-  const std::string report = slurp(dir / "second.json");
+  const std::string report = test::text_of(dir / "second.json");
   const double before = latch_time(report, "previous", "j1"), after = latch_time(report, "current", "j1");
   ASSERT_FALSE(std::isnan(before)) << report;
   ASSERT_FALSE(std::isnan(after)) << report;
@@ -143,7 +136,7 @@ TEST(Gui, ScriptedSessionPlaysScrubsChangesAPreloadAndReruns) {
   ASSERT_TRUE(std::regex_search(report, m, std::regex("\"idle_frames\": ([0-9]+)"))) << report;
   EXPECT_LE(std::stol(m[1]), 10) << report;
   // The first run's report saw one run and no previous.
-  EXPECT_TRUE(std::isnan(latch_time(slurp(dir / "first.json"), "previous", "j1")));
+  EXPECT_TRUE(std::isnan(latch_time(test::text_of(dir / "first.json"), "previous", "j1")));
   std::printf("%s\n", report.c_str());
 }
 
@@ -164,7 +157,7 @@ TEST(Gui, APlatesBendingStiffnessEditsAndReruns) {
                                         "report " << (dir / "report.json").string() << "\n"
                                         "quit\n";
   ASSERT_EQ(gui_session_failure(dir, "zfold_plates"), "");
-  const std::string report = slurp(dir / "report.json");
+  const std::string report = test::text_of(dir / "report.json");
   EXPECT_NE(report.find("bodies.panel_A1.flexible.plate.bending_stiffness=1858.75"), std::string::npos) << report;
   const double before = latch_time(report, "previous", "j2"), after = latch_time(report, "current", "j2");
   ASSERT_FALSE(std::isnan(before)) << report;
@@ -195,7 +188,7 @@ TEST(Gui, OpeningAnotherSceneDropsThePreviousScenesRuns) {
                                         "report " << (dir / "opened.json").string() << "\n"
                                         "quit\n";
   ASSERT_EQ(gui_session_failure(dir, "zfold"), "");
-  const std::string report = slurp(dir / "opened.json");
+  const std::string report = test::text_of(dir / "opened.json");
   EXPECT_FALSE(std::isnan(latch_time(report, "current", "j8"))) << report;  // the pantograph's own run
   EXPECT_TRUE(std::isnan(latch_time(report, "previous", "j1"))) << "the z-fold's run became the ghost: " << report;
 }
@@ -218,7 +211,7 @@ TEST(Gui, AFreeBusHasItsAttitudePlotAndTheCameraRidesWithItOrNot) {
                                         "report " << (dir / "report.json").string() << "\n"
                                         "quit\n";
   ASSERT_EQ(gui_session_failure(dir, "zfold_free"), "");
-  const std::string report = slurp(dir / "report.json");
+  const std::string report = test::text_of(dir / "report.json");
   EXPECT_NE(report.find("\"plot\": \"bus\""), std::string::npos) << report;
   EXPECT_NE(report.find("\"camera_frame\": \"inertial\""), std::string::npos) << report;
   const render::Image riding = test::read_png((dir / "riding.png").string());
@@ -260,12 +253,12 @@ TEST(Gui, EditsUndoRedoAndSaveAsAFileThatReloadsToTheSameRun) {
                                         "save_scene " << (dir / "edited.yaml").string() << "\n"
                                         "quit\n";
   ASSERT_EQ(gui_session_failure(dir, "pantograph --t-end 9"), "");
-  const std::string undone = slurp(dir / "undone.json"), redone = slurp(dir / "redone.json");
+  const std::string undone = test::text_of(dir / "undone.json"), redone = test::text_of(dir / "redone.json");
   EXPECT_NE(undone.find("springs.j1.free_position=1.3"), std::string::npos) << undone;
   EXPECT_EQ(undone.find("latches.j3.stiffness"), std::string::npos) << undone;
   EXPECT_NE(redone.find("latches.j3.stiffness=900"), std::string::npos) << redone;
   // The saved file, simulated on its own, latches j1 when the GUI's run did.
-  const std::string saved = slurp(dir / "edited.yaml");
+  const std::string saved = test::text_of(dir / "edited.yaml");
   EXPECT_NE(saved.find("springs.j1.free_position = 1.3"), std::string::npos) << saved;  // the header
   const test::CommandOutcome run = test::run_command(std::string(UNFURL_BINARY) + " simulate " +
                                                      (dir / "edited.yaml").string() + " --out " + (dir / "run").string());
@@ -304,7 +297,7 @@ TEST(Gui, ContactsAreTheRunsOwnAndTabledWithTheLoads) {
                                         "report " << (dir / "report.json").string() << "\n"
                                         "quit\n";
   ASSERT_EQ(gui_session_failure(dir, "zfold"), "");
-  const std::string report = slurp(dir / "report.json");
+  const std::string report = test::text_of(dir / "report.json");
   const test::CommandOutcome run = test::run_command(std::string(UNFURL_BINARY) + " simulate zfold --out " +
                                                      (dir / "run").string());
   ASSERT_EQ(run.code, 0) << run.output;
@@ -341,13 +334,13 @@ TEST(Gui, HingeForcesTorqueMarginAndSensorsArePlottedAndTabled) {
                                         "quit\n";
   const std::string sensor = " --set 'sensors=[{name: tip, body: panel_A3, point: [0, 0.6, 0]}]'";
   ASSERT_EQ(gui_session_failure(dir, "zfold --t-end 5" + sensor), "");
-  EXPECT_NE(slurp(dir / "forces.json").find("\"plot\": \"hinge forces\""), std::string::npos);
-  const std::string report = slurp(dir / "margin.json");
+  EXPECT_NE(test::text_of(dir / "forces.json").find("\"plot\": \"hinge forces\""), std::string::npos);
+  const std::string report = test::text_of(dir / "margin.json");
   EXPECT_NE(report.find("\"plot\": \"torque margin\""), std::string::npos) << report;
   const test::CommandOutcome run = test::run_command(std::string(UNFURL_BINARY) + " simulate zfold --t-end 5" + sensor +
                                                      " --out " + (dir / "run").string());
   ASSERT_EQ(run.code, 0) << run.output;
-  const std::string summary = slurp(dir / "run" / "summary.json");
+  const std::string summary = test::text_of(dir / "run" / "summary.json");
   std::smatch m;
   ASSERT_TRUE(std::regex_search(summary, m, std::regex("\"peak_acceleration\": \\{\\s*\"tip\": \\{\\s*\"value\": ([-0-9.e]+)")))
       << summary;
@@ -375,7 +368,7 @@ TEST(Gui, LoadArrowsAreToggledOnTheView) {
                                         "report " << (dir / "off.json").string() << "\n"
                                         "quit\n";
   ASSERT_EQ(gui_session_failure(dir, "pantograph --t-end 8"), "");
-  const std::string on = slurp(dir / "on.json"), off = slurp(dir / "off.json");
+  const std::string on = test::text_of(dir / "on.json"), off = test::text_of(dir / "off.json");
   std::smatch m;
   ASSERT_TRUE(std::regex_search(on, m, std::regex("\"load_arrows\": ([0-9]+)"))) << on;
   EXPECT_GE(std::stoi(m[1]), 8) << on;  // a torque at each of the eight latches, just caught
@@ -430,8 +423,8 @@ TEST(Gui, PinnedRunsAreTabledAndDrawnAgainstTheCurrentRun) {
                                         "report " << (dir / "other.json").string() << "\n"
                                         "quit\n";
   ASSERT_EQ(gui_session_failure(dir, "pantograph --t-end 9"), "");
-  const std::string first = slurp(dir / "first.json"), second = slurp(dir / "second.json");
-  const std::string third = slurp(dir / "third.json");
+  const std::string first = test::text_of(dir / "first.json"), second = test::text_of(dir / "second.json");
+  const std::string third = test::text_of(dir / "third.json");
   EXPECT_NE(third.find("\"name\": \"file values\""), std::string::npos) << third;
   EXPECT_NE(third.find("\"name\": \"j1 spring 0.12\""), std::string::npos) << third;
   for (const char* figure : {"deployment time, s", "peak latch torque, N m", "final energy, J", "dissipated, J",
@@ -455,7 +448,7 @@ TEST(Gui, PinnedRunsAreTabledAndDrawnAgainstTheCurrentRun) {
   // The yellow of the second pinned run is in the plot panel (bottom left).
   const render::Image shot = test::read_png((dir / "pins.png").string());
   EXPECT_GT(pinned_yellow_pixels(shot, 0, shot.height * 2 / 3, shot.width * 6 / 10, shot.height - 40), 50);
-  const std::string unpinned = slurp(dir / "unpinned.json"), other = slurp(dir / "other.json");
+  const std::string unpinned = test::text_of(dir / "unpinned.json"), other = test::text_of(dir / "other.json");
   EXPECT_EQ(unpinned.find("\"name\": \"file values\""), std::string::npos) << unpinned;
   EXPECT_EQ(comparison_row(unpinned, "final energy, J").size(), 2u) << unpinned;
   EXPECT_TRUE(std::regex_search(other, std::regex("\"pinned\": \\[\\s*\\]"))) << "another scene's pins were kept: " << other;
@@ -512,7 +505,7 @@ TEST(Gui, TheModesTabAnimatesAModeOfTheDeployedArray) {
                                         "report " << (dir / "rerun.json").string() << "\n"
                                         "quit\n";
   ASSERT_EQ(gui_session_failure(dir, "pantograph_compliant --t-end 12"), "");
-  const std::string shown = slurp(dir / "shown.json"), rerun = slurp(dir / "rerun.json");
+  const std::string shown = test::text_of(dir / "shown.json"), rerun = test::text_of(dir / "rerun.json");
   std::smatch m;
   ASSERT_TRUE(std::regex_search(shown, m, std::regex("\"modes_hz\": \\[\\s*([0-9.eE+-]+)"))) << shown;
   EXPECT_NEAR(std::stod(m[1]), 0.41315, 1e-4);
@@ -556,7 +549,7 @@ TEST(Gui, StudyCasesOpenFromTheStudyTab) {
                                         "quit\n";
   ASSERT_EQ(gui_session_failure(dir, "--study " + study + " --out " + (dir / "study").string()), "");
 
-  const std::string nominal = slurp(dir / "nominal.json"), shown = slurp(dir / "case.json");
+  const std::string nominal = test::text_of(dir / "nominal.json"), shown = test::text_of(dir / "case.json");
   EXPECT_NE(nominal.find("\"study_case\": \"nominal\""), std::string::npos) << nominal;
   EXPECT_NE(shown.find("\"study_case\": \"case-0003\""), std::string::npos) << shown;
   EXPECT_NE(shown.find("\"study_rows\": 6"), std::string::npos) << shown;
@@ -579,7 +572,7 @@ TEST(Gui, StudyCasesOpenFromTheStudyTab) {
   ASSERT_FALSE(j1_time.empty());
   EXPECT_NEAR(latch_time(shown, "current", "j1"), std::stod(j1_time), 1e-9) << shown;
   EXPECT_FALSE(std::isnan(latch_time(shown, "previous", "j1"))) << "the nominal case is the ghost: " << shown;
-  const std::string failure = slurp(dir / "failure.json");
+  const std::string failure = test::text_of(dir / "failure.json");
   EXPECT_NE(failure.find("\"study_case\": \"fail-latch-j3-fails\""), std::string::npos) << failure;
   EXPECT_TRUE(std::isnan(latch_time(failure, "current", "j3"))) << failure;
   // The case shown before stays as the ghost, though this one has a latch
@@ -630,12 +623,12 @@ TEST(Gui, AFailureCasesInjectedElementsAreReadOnly) {
   const std::regex no_edits("\"edits\": \\[\\s*\\]");
   for (const auto& [file, element] : {std::pair{"friction.json", "friction.j4"}, std::pair{"stuck.json", "stops.0"},
                                       std::pair{"spring.json", "springs.j1"}}) {
-    const std::string report = slurp(dir / file);
+    const std::string report = test::text_of(dir / file);
     EXPECT_NE(report.find("belongs to the case's failure"), std::string::npos) << report;
     EXPECT_NE(report.find("\"" + std::string(element) + "\""), std::string::npos) << report;  // failure_elements
     EXPECT_TRUE(std::regex_search(report, no_edits)) << report;
   }
-  const std::string other = slurp(dir / "other.json");
+  const std::string other = test::text_of(dir / "other.json");
   EXPECT_NE(other.find("latches.j3.stiffness=900"), std::string::npos) << other;
   EXPECT_NE(other.find("\"study_case\": \"fail-spring-j1-breaks\""), std::string::npos) << other;
 }
@@ -656,7 +649,7 @@ TEST(Gui, ALongExportCancelsAndLeavesNoPartialVideo) {
                                         "report " << (dir / "report.json").string() << "\n"
                                         "quit\n";
   ASSERT_EQ(gui_session_failure(dir, "pantograph --t-end 9"), "");
-  const std::string report = slurp(dir / "report.json");
+  const std::string report = test::text_of(dir / "report.json");
   std::smatch m;
   ASSERT_TRUE(std::regex_search(report, m, std::regex("export cancelled after ([0-9]+) of 541 frames"))) << report;
   const long written = std::stol(m[1]);
@@ -719,8 +712,8 @@ TEST(Gui, TheFileDialogOpensASceneTypedWithTheKeyboard) {
   const std::string command = "cd " + dir.string() + " && timeout 120 xvfb-run -a -s '-screen 0 1280x800x24' sh " +
                               (dir / "keys.sh").string() + " > " + (dir / "log.txt").string() + " 2>&1";
   const int status = std::system(command.c_str());
-  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << slurp(dir / "log.txt");
-  const std::string report = slurp(dir / "report.json");
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << test::text_of(dir / "log.txt");
+  const std::string report = test::text_of(dir / "report.json");
   EXPECT_NE(report.find("\"scene\": \"fourbar\""), std::string::npos) << report;
 }
 

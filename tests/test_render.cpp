@@ -311,10 +311,7 @@ TEST(FrameTimes, RangeAndRate) {
 
 TEST(Meshes, AssetsAreTheGeneratorsOutput) {
   for (const auto& [name, text] : render::builtin_mesh_files()) {
-    std::ifstream in(test::asset("meshes/" + name));
-    std::stringstream file;
-    file << in.rdbuf();
-    EXPECT_EQ(file.str(), text) << name << " differs from the generator: run build/render/unfurl_meshes assets/meshes";
+    EXPECT_EQ(test::text_of(test::asset("meshes/" + name)), text) << name << " differs from the generator: run build/render/unfurl_meshes assets/meshes";
   }
 }
 

@@ -35,13 +35,6 @@ std::vector<std::string> table_without_wall_time(const fs::path& csv) {
   return rows;
 }
 
-std::string text_of(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 TEST(StudyCommand, WritesTheTablesTheReportAndThePlots) {
   const fs::path out = fresh_dir("tables");
   const test::CommandOutcome o = run_study(kSmall, out, "--jobs 2");
@@ -55,10 +48,10 @@ TEST(StudyCommand, WritesTheTablesTheReportAndThePlots) {
       "python3 -c \"import csv,sys; r=list(csv.reader(open(sys.argv[1]))); "
       "assert all(len(x)==len(r[0]) for x in r), 'ragged'; print(len(r))\" " + (out / "cases.csv").string());
   EXPECT_EQ(py.output, "7\n");
-  const std::string summary = text_of(out / "summary.json");
+  const std::string summary = test::text_of(out / "summary.json");
   EXPECT_NE(summary.find("\"deployed\": 5"), std::string::npos) << summary;
   EXPECT_NE(summary.find("\"not_deployed\": 1"), std::string::npos) << summary;
-  const std::string report = text_of(out / "STUDY.md");
+  const std::string report = test::text_of(out / "STUDY.md");
   EXPECT_NE(report.find("is driven most by `springs."), std::string::npos) << report;
   // The pantograph's latched loops are redundant: every case says so, with
   // the minimum-norm peak beside the determinate ones.
@@ -129,7 +122,7 @@ TEST(StudyCommand, TwoMpiRanksGiveTheSameTableAsOneLocalRun) {
       std::string(UNFURL_BINARY) + " study " + kSmall + " --quiet --out " + ranks.string());
   ASSERT_EQ(o.code, 0) << o.output;
   EXPECT_EQ(table_without_wall_time(ranks / "cases.csv"), table_without_wall_time(local / "cases.csv"));
-  EXPECT_NE(text_of(ranks / "STUDY.md").find("2 processes"), std::string::npos);
+  EXPECT_NE(test::text_of(ranks / "STUDY.md").find("2 processes"), std::string::npos);
 #endif
 }
 
