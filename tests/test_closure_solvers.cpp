@@ -1,6 +1,6 @@
 // The closure solvers (solves with R = W + delta I) against the dense
 // formulation's W: the dense and sparse ones, away from and at the deployed
-// branch point where W loses rank.
+// branch point where W loses rank; the W a factorization formed, reused.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -42,6 +42,27 @@ TEST(ClosureSolver, SparseHoldsAtTheDeployedBranchPoint) {
   const VectorXd q = VectorXd::Zero(scene.model.nq);
   for (const double delta : {1e-3, 1e-5, 1e-7})
     expect_closure_solve_matches_dense(scene, sim::ClosureSolverKind::sparse, q, delta);
+}
+
+TEST(ClosureSolver, TheWOfAFactorizationServesOnlyItsOwnConfiguration) {
+  // The loads' rank analysis reads W from the regulator's dense
+  // factorization where the configuration key is the one factored for, and
+  // forms W anew at any other.
+  const sim::Scene scene = test::scene_file("pantograph");
+  sim::Dynamics dynamics(scene);
+  sim::Regulator& regulator = *dynamics.regulator();
+  sim::Sweep sweep(scene.model);
+  const VectorXd q0 = Eigen::Map<const VectorXd>(scene.q0.data(), scene.model.nq);
+  const VectorXd q1 = 0.7 * q0, q2 = 0.5 * q0;
+  const long key1 = 1000001, key2 = 1000002;  // beyond any the dynamics used
+  sweep.set_configuration(q1.data());
+  ASSERT_TRUE(regulator.factorize(sweep, key1));
+  const Eigen::MatrixXd formed_at_q1 = regulator.mobility(sweep);
+  EXPECT_EQ(Eigen::MatrixXd(regulator.mobility(sweep, key1)), formed_at_q1);
+  sweep.set_configuration(q2.data());
+  const Eigen::MatrixXd at_q2 = regulator.mobility(sweep, key2);
+  EXPECT_EQ(at_q2, Eigen::MatrixXd(regulator.mobility(sweep)));
+  EXPECT_GT((at_q2 - formed_at_q1).norm(), 1e-3 * formed_at_q1.norm());
 }
 
 }  // namespace
