@@ -7,7 +7,6 @@
 
 #include <Eigen/Dense>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 #include <string>
 

@@ -5,9 +5,7 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <set>
-#include <sstream>
 
 #include "unfurl/render/camera_frame.hpp"
 #include "unfurl/render/frame_renderer.hpp"
