@@ -8,6 +8,7 @@
 #include "closure_check.hpp"
 #include "support.hpp"
 #include "unfurl/sim/dynamics.hpp"
+#include "unfurl/sim/elements/bushing.hpp"
 #include "unfurl/sim/summary.hpp"
 #include "unfurl/studies/scene_generators.hpp"
 
@@ -53,6 +54,45 @@ void expect_same_mechanism(const sim::Scene& a, const sim::Scene& b) {
 
 TEST(Generator, ThreeStagePantographIsTheReferenceScene) {
   expect_same_mechanism(studies::generate_pantograph(3).scene, test::scene_file("pantograph"));
+}
+
+TEST(Generator, ThreeStageCompliantPantographIsTheReferenceScene) {
+  const sim::Scene generated = studies::generate_pantograph(3, studies::CrossPivots::compliant).scene;
+  const sim::Scene reference = test::scene_file("pantograph_compliant");
+  expect_same_mechanism(generated, reference);
+  const std::vector<const sim::Bushing*> a = generated.elements_of<sim::Bushing>(),
+                                         b = reference.elements_of<sim::Bushing>();
+  ASSERT_EQ(a.size(), 3u);
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    EXPECT_EQ(a[k]->name, b[k]->name);
+    EXPECT_EQ(a[k]->a.body, b[k]->a.body);
+    EXPECT_EQ(a[k]->b.body, b[k]->b.body);
+    EXPECT_TRUE((a[k]->a.point - b[k]->a.point).norm() < 1e-15) << a[k]->name;
+    EXPECT_TRUE((a[k]->b.point - b[k]->b.point).norm() < 1e-15) << a[k]->name;
+    EXPECT_TRUE((a[k]->stiffness - b[k]->stiffness).norm() == 0) << a[k]->name;
+    EXPECT_TRUE((a[k]->damping - b[k]->damping).norm() == 0) << a[k]->name;
+  }
+}
+
+TEST(Generator, CompliantPantographsAreTreesWithAPinPerStage) {
+  const sim::Scene scene = studies::generate_pantograph(7, studies::CrossPivots::compliant).scene;
+  EXPECT_EQ(scene.model.size(), 2 * 7 + 2);
+  EXPECT_TRUE(scene.loops.empty());
+  EXPECT_EQ(scene.elements_of<sim::Bushing>().size(), 7u);
+  // Every pin starts unloaded: its two points coincide on the stowed
+  // lazy-tongs path.
+  sim::Dynamics dynamics(scene);
+  std::vector<double> y = dynamics.initial_state();
+  sim::Loads loads;
+  ASSERT_TRUE(dynamics.loads(0, y.data(), loads));
+  int pin_columns = 0;
+  for (std::size_t c = 0; c < dynamics.load_columns().size(); ++c)
+    if (dynamics.load_columns()[c].name.rfind("bushing_force.", 0) == 0) {
+      ++pin_columns;
+      EXPECT_LT(std::abs(loads.element[c]), 1e-6) << dynamics.load_columns()[c].name;
+    }
+  EXPECT_EQ(pin_columns, 3 * 7);
 }
 
 TEST(Generator, ThreePanelZfoldIsTheReferenceScene) {

@@ -98,6 +98,26 @@ void chain_latches(sim::SceneBuilder& b, int first, int count, double factor) {
   }
 }
 
+// The compliant cross-link pins of pantograph_compliant.yaml: a bushing at
+// each pivot, from panel A_k to panel B_k, stiff along x, y, z and in the
+// two tilts, free about the hinge axis x. Like the springs and latches they
+// scale with the size, so that every size's pins deflect as the reference's.
+void cross_pins(sim::SceneBuilder& b, int stages, double factor) {
+  const sim::Vec6 stiffness = factor * (sim::Vec6() << 1e6, 1e6, 1e6, 0, 1e4, 1e4).finished();
+  const sim::Vec6 damping = factor * (sim::Vec6() << 100, 100, 100, 0, 3, 3).finished();
+  for (int k = 1; k <= stages; ++k) {
+    auto pin = std::make_shared<sim::Bushing>();
+    pin->name = "A" + std::to_string(k);
+    pin->a.body = b.body_index("panel_A" + std::to_string(k), "bushings");
+    pin->a.point = sim::Vec3(kChainX, 0, pivot_offset(k));
+    pin->b.body = b.body_index("panel_B" + std::to_string(k), "bushings");
+    pin->b.point = sim::Vec3(-kChainX, 0, -pivot_offset(k));
+    pin->stiffness = stiffness.asDiagonal();
+    pin->damping = damping.asDiagonal();
+    b.element(pin);
+  }
+}
+
 sim::RunSettings run(double t_end, double rtol, double atol) {
   sim::RunSettings r;
   r.t_end = t_end;
@@ -113,32 +133,41 @@ void check_count(int n, const char* what) {
 
 }  // namespace
 
-sim::SceneFile generate_pantograph(int stages) {
+sim::SceneFile generate_pantograph(int stages, CrossPivots pivots) {
   check_count(stages, "the number of stages");
   const int N = stages;
-  sim::SceneBuilder b("pantograph_" + std::to_string(N), "The pantograph solar array with " + std::to_string(N) +
-                                                             " panel pairs (" + std::to_string(N) + " loops).");
+  const bool compliant = pivots == CrossPivots::compliant;
+  const std::string count = std::to_string(N);
+  sim::SceneBuilder b(
+      compliant ? "pantograph_compliant_" + count : "pantograph_" + count,
+      compliant ? "The pantograph solar array with " + count + " panel pairs cross-linked on compliant pins."
+                : "The pantograph solar array with " + count + " panel pairs (" + count + " loops).");
   b.source("generated");
   bus(b);
-  chain(b, "A", -kChainX, 1, N, 1, 0.5);
+  chain(b, "A", -kChainX, 1, N, 1, compliant ? 1.0 : 0.5);
   chain(b, "B", kChainX, -1, N, N + 2, 1.0);
-  for (int k = 1; k <= N; ++k) {
-    const double p_child = pivot_offset(k), p_parent = -p_child;
-    b.body(box("image_A" + std::to_string(k), kPanelMass, kPanelInertia, 0.5), "panel_B" + std::to_string(k),
-           sim::joints::revolute(joint_name(2 * N + 2 + k), sim::Vec3::UnitX(), sim::Vec3(-kChainX, 0, p_parent),
-                                 sim::Vec3(kChainX, 0, p_child)));
-  }
+  if (!compliant)
+    for (int k = 1; k <= N; ++k) {
+      const double p_child = pivot_offset(k), p_parent = -p_child;
+      b.body(box("image_A" + std::to_string(k), kPanelMass, kPanelInertia, 0.5), "panel_B" + std::to_string(k),
+             sim::joints::revolute(joint_name(2 * N + 2 + k), sim::Vec3::UnitX(), sim::Vec3(-kChainX, 0, p_parent),
+                                   sim::Vec3(kChainX, 0, p_child)));
+    }
   chain_forces(b, 1, N + 1, -1, size_factor(N));
   chain_forces(b, N + 2, N + 1, 1, size_factor(N));
   chain_latches(b, 1, N + 1, size_factor(N));
   chain_latches(b, N + 2, N + 1, size_factor(N));
-  for (int k = 1; k <= N; ++k)
-    b.loop("A" + std::to_string(k), "panel_A" + std::to_string(k), "image_A" + std::to_string(k));
-  // The reference pantograph's bandwidth (SCENES.md); other sizes, whose
-  // latches ring at other rates, take the automatic one from their own.
-  sim::RegulatorSettings regulator;
-  if (N == 3) regulator.v_max = 2000;
-  b.regulator(regulator);
+  if (compliant) {
+    cross_pins(b, N, size_factor(N));
+  } else {
+    for (int k = 1; k <= N; ++k)
+      b.loop("A" + std::to_string(k), "panel_A" + std::to_string(k), "image_A" + std::to_string(k));
+    // The reference pantograph's bandwidth (SCENES.md); other sizes, whose
+    // latches ring at other rates, take the automatic one from their own.
+    sim::RegulatorSettings regulator;
+    if (N == 3) regulator.v_max = 2000;
+    b.regulator(regulator);
+  }
   // On the lazy-tongs path: chain A (-a, 2a, -2a, ...), chain B its
   // negative, images (2a, -2a, ...).
   auto angle = [&](int j) {  // joint j (1-based) at a = kOpen
@@ -148,7 +177,7 @@ sim::SceneFile generate_pantograph(int stages) {
     if (j <= 2 * N + 2) return ((j - N - 1) % 2 == 0 ? -2 : 2) * kOpen;
     return ((j - 2 * N - 2) % 2 == 1 ? 2 : -2) * kOpen;
   };
-  for (int j = 1; j <= 3 * N + 2; ++j) b.initial_position(joint_name(j), {angle(j)});
+  for (int j = 1; j <= (compliant ? 2 : 3) * N + 2; ++j) b.initial_position(joint_name(j), {angle(j)});
   b.run(run(20, 1e-10, 1e-12));
   return b.build();
 }

@@ -9,10 +9,16 @@
 
 namespace unfurl::studies {
 
+// How the pantograph's cross-links pivot: on rigid pins, each closing a loop
+// through an image body and the regulator, or on compliant pins, bushings
+// between full-mass panels that leave the mechanism a tree.
+enum class CrossPivots { rigid, compliant };
+
 // Two chains of a frame and N panels cross-linked into a lazy-tongs with N
 // loops; N = 3 is the reference `pantograph` (same bodies, joints, forces,
-// numbering and initial state).
-sim::SceneFile generate_pantograph(int stages);
+// numbering and initial state), or with compliant pivots
+// `pantograph_compliant`.
+sim::SceneFile generate_pantograph(int stages, CrossPivots pivots = CrossPivots::rigid);
 
 // Chain A of the pantograph with N panels: a tree; N = 3 is `zfold`.
 sim::SceneFile generate_zfold(int panels);
