@@ -98,6 +98,25 @@ void chain_latches(sim::SceneBuilder& b, int first, int count, double factor) {
   }
 }
 
+// The rigid cross-links: each chain A panel's other half, its image, turns
+// on the chain B panel at the pivot, and a loop closes it on the panel.
+void cross_loops(sim::SceneBuilder& b, int stages) {
+  const int N = stages;
+  for (int k = 1; k <= N; ++k) {
+    const double p_child = pivot_offset(k), p_parent = -p_child;
+    b.body(box("image_A" + std::to_string(k), kPanelMass, kPanelInertia, 0.5), "panel_B" + std::to_string(k),
+           sim::joints::revolute(joint_name(2 * N + 2 + k), sim::Vec3::UnitX(), sim::Vec3(-kChainX, 0, p_parent),
+                                 sim::Vec3(kChainX, 0, p_child)));
+  }
+  for (int k = 1; k <= N; ++k)
+    b.loop("A" + std::to_string(k), "panel_A" + std::to_string(k), "image_A" + std::to_string(k));
+  // The reference pantograph's bandwidth (SCENES.md); other sizes, whose
+  // latches ring at other rates, take the automatic one from their own.
+  sim::RegulatorSettings regulator;
+  if (N == 3) regulator.v_max = 2000;
+  b.regulator(regulator);
+}
+
 // The compliant cross-link pins of pantograph_compliant.yaml: a bushing at
 // each pivot, from panel A_k to panel B_k, stiff along x, y, z and in the
 // two tilts, free about the hinge axis x. Like the springs and latches they
@@ -146,28 +165,14 @@ sim::SceneFile generate_pantograph(int stages, CrossPivots pivots) {
   bus(b);
   chain(b, "A", -kChainX, 1, N, 1, compliant ? 1.0 : 0.5);
   chain(b, "B", kChainX, -1, N, N + 2, 1.0);
-  if (!compliant)
-    for (int k = 1; k <= N; ++k) {
-      const double p_child = pivot_offset(k), p_parent = -p_child;
-      b.body(box("image_A" + std::to_string(k), kPanelMass, kPanelInertia, 0.5), "panel_B" + std::to_string(k),
-             sim::joints::revolute(joint_name(2 * N + 2 + k), sim::Vec3::UnitX(), sim::Vec3(-kChainX, 0, p_parent),
-                                   sim::Vec3(kChainX, 0, p_child)));
-    }
   chain_forces(b, 1, N + 1, -1, size_factor(N));
   chain_forces(b, N + 2, N + 1, 1, size_factor(N));
   chain_latches(b, 1, N + 1, size_factor(N));
   chain_latches(b, N + 2, N + 1, size_factor(N));
-  if (compliant) {
+  if (compliant)
     cross_pins(b, N, size_factor(N));
-  } else {
-    for (int k = 1; k <= N; ++k)
-      b.loop("A" + std::to_string(k), "panel_A" + std::to_string(k), "image_A" + std::to_string(k));
-    // The reference pantograph's bandwidth (SCENES.md); other sizes, whose
-    // latches ring at other rates, take the automatic one from their own.
-    sim::RegulatorSettings regulator;
-    if (N == 3) regulator.v_max = 2000;
-    b.regulator(regulator);
-  }
+  else
+    cross_loops(b, N);
   // On the lazy-tongs path: chain A (-a, 2a, -2a, ...), chain B its
   // negative, images (2a, -2a, ...).
   auto angle = [&](int j) {  // joint j (1-based) at a = kOpen
