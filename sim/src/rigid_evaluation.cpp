@@ -2,11 +2,64 @@
 // with the rigid model's loop forces, an element's generalized forces, the
 // mass matrix, and the loops' gap and its Jacobian (dynamics.hpp).
 #include <cmath>
+#include <numeric>
+#include <utility>
 
 #include "closure_rank.hpp"
 #include "unfurl/sim/dynamics.hpp"
 
 namespace unfurl::sim {
+
+namespace {
+
+// Each body's place in a depth-first order of the tree, and where its
+// subtree's places end: body b is in body i's subtree (moved by joint i)
+// when first[i] <= first[b] < end[i].
+class SubtreeSpans {
+ public:
+  explicit SubtreeSpans(const Model& model) : first_(model.size()), end_(model.size()) {
+    std::vector<std::pair<int, bool>> to_visit;  // (body, whether its subtree is done)
+    for (int i = model.size() - 1; i >= 0; --i)
+      if (model.parent[i] == kBase) to_visit.push_back({i, false});
+    int next = 0;
+    while (!to_visit.empty()) {
+      const auto [i, done] = to_visit.back();
+      to_visit.pop_back();
+      if (done) {
+        end_[i] = next;
+        continue;
+      }
+      first_[i] = next++;
+      to_visit.push_back({i, true});
+      for (int child : model.children[i]) to_visit.push_back({child, false});
+    }
+  }
+  bool contains(int i, int b) const { return first_[i] <= first_[b] && first_[b] < end_[i]; }
+
+ private:
+  std::vector<int> first_, end_;
+};
+
+// A wrench (f, m) at a body's origin in its axes, as the base frame's
+// wrench about the base's origin.
+Vec6 wrench_in_base(const Pose& X, const Vec6& F) {
+  const Vec3 f = X.rotation.transpose() * F.head<3>();
+  Vec6 out;
+  out << f, X.rotation.transpose() * F.tail<3>() + X.position.cross(f);
+  return out;
+}
+
+// A body's velocity (v, omega) at its origin in its axes, as the base
+// frame's velocity of the point at the base's origin: its dot product
+// with wrench_in_base() is the power.
+Vec6 twist_in_base(const Pose& X, const Vec6& V) {
+  const Vec3 omega = X.rotation.transpose() * V.tail<3>();
+  Vec6 out;
+  out << X.rotation.transpose() * V.head<3>() - omega.cross(X.position), omega;
+  return out;
+}
+
+}  // namespace
 
 bool Dynamics::rigid_accelerations(const double* q, const double* w, double* w_dot) {
   if (regulator_ && !closure_rank_) return false;
@@ -30,17 +83,44 @@ bool Dynamics::rigid_accelerations(const double* q, const double* w, double* w_d
   return true;
 }
 
-Eigen::VectorXd Dynamics::element_generalized_forces(std::size_t k, const double* q, const double* w) {
+// Q_c = A_i^T F*_i (the force pass, Sweep::generalized_forces) is the
+// power of the subtree's wrenches at the velocities that a unit rate of
+// coordinate c gives them: with both in the base frame, each wrench on a
+// body of joint i's subtree enters by one dot product.
+Eigen::MatrixXd Dynamics::element_joint_forces(const std::vector<std::size_t>& elements,
+                                               const std::vector<int>& coordinates, const double* q, const double* w) {
   const Model& model = scene_.model;
   configure(q);
   body_velocities(w, true);
   sweep_.poses(poses_);
-  for (Vec6& f : F_) f.setZero();
-  Eigen::VectorXd Q = Eigen::VectorXd::Zero(model.nv);
-  ElementForces out{RatesOut(Q.data()), F_};
-  scene_.elements[k]->add_forces(element_state(k, q, w, poses_, v_, model.base_velocity, &sweep_), out);
-  sweep_.generalized_forces(F_, Q_.data());
-  for (int c = 0; c < model.nv; ++c) Q[c] += Q_[c];
+  const SubtreeSpans spans(model);
+  std::vector<int> joint_of(coordinates.size());
+  std::vector<Vec6> axis(coordinates.size());
+  for (std::size_t j = 0; j < coordinates.size(); ++j) {
+    const int c = coordinates[j], i = model.joint_of_velocity[c];
+    joint_of[j] = i;
+    axis[j] = twist_in_base(poses_[i], sweep_.motion_axes(i).col(c - model.first_velocity[i].value));
+  }
+  std::vector<int> every_body(model.size());
+  std::iota(every_body.begin(), every_body.end(), 0);
+  Eigen::VectorXd direct = Eigen::VectorXd::Zero(model.nv);  // what elements put on coordinates themselves
+  Eigen::MatrixXd Q = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(elements.size()),
+                                            static_cast<Eigen::Index>(coordinates.size()));
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    const ForceElement& element = *scene_.elements[elements[e]];
+    const std::optional<std::vector<int>> listed = element.bodies();
+    const std::vector<int>& bodies = listed ? *listed : every_body;
+    for (int b : bodies) F_[b].setZero();
+    for (int c : coordinates) direct[c] = 0;
+    ElementForces out{RatesOut(direct.data()), F_};
+    element.add_forces(element_state(elements[e], q, w, poses_, v_, model.base_velocity, &sweep_), out);
+    for (int b : bodies) {
+      const Vec6 wrench = wrench_in_base(poses_[b], F_[b]);
+      for (std::size_t j = 0; j < coordinates.size(); ++j)
+        if (spans.contains(joint_of[j], b)) Q(e, j) += axis[j].dot(wrench);
+    }
+    for (std::size_t j = 0; j < coordinates.size(); ++j) Q(e, j) += direct[coordinates[j]];
+  }
   return Q;
 }
 

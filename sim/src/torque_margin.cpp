@@ -40,9 +40,10 @@ class JointMargin {
   }
 
   // The torques at positions q and rates w (w = 0: at rest), `harness`
-  // the generalized forces of harness_elements() there.
+  // the generalized force each of harness_elements() puts on the joint
+  // there.
   TorqueMarginPoint at(double t, const std::vector<double>& q, const std::vector<double>& w,
-                       const std::vector<Eigen::VectorXd>& harness) const {
+                       const Eigen::VectorXd& harness) const {
     TorqueMarginPoint p;
     p.t = t;
     p.q = q[model_.position_of(joint_).value];
@@ -61,7 +62,7 @@ class JointMargin {
         p.spring += std::max(0.0, -s_ * stop->torque(p.q, rate));
       }  // a latch holds nothing before it engages
     }
-    for (const Eigen::VectorXd& Q : harness) p.harness += std::max(0.0, -s_ * Q[model_.velocity_of(joint_).value]);
+    for (const double Q : harness) p.harness += std::max(0.0, -s_ * Q);
     p.inertia = f_.required_acceleration * inertia_;
     const double resisting = f_.spring * p.spring + f_.friction * p.friction + f_.damping * p.damping +
                              f_.harness * p.harness + f_.inertia * p.inertia;
@@ -77,14 +78,6 @@ class JointMargin {
   double inertia_ = 0;
   std::vector<const JointElement*> own_;  // the elements on joint_, in the scene's order
 };
-
-// The harness elements' generalized forces at (q, w).
-std::vector<Eigen::VectorXd> harness_forces(Dynamics& dynamics, const std::vector<std::size_t>& harness,
-                                            const std::vector<double>& q, const std::vector<double>& w) {
-  std::vector<Eigen::VectorXd> Q;
-  for (std::size_t k : harness) Q.push_back(dynamics.element_generalized_forces(k, q.data(), w.data()));
-  return Q;
-}
 
 int worst_of(const std::vector<TorqueMarginPoint>& points) {
   int worst = -1;
@@ -145,7 +138,7 @@ std::vector<JointTorqueMargin> torque_margins(const Scene& scene, const Trajecto
   const Model& model = scene.model;
   const std::vector<const Latch*> latches = scene.latches();
   struct Travel {
-    int c;
+    int c, rate;  // the joint's position and velocity coordinates
     double start, end, s, latched_at;
     JointMargin margin;
   };
@@ -160,19 +153,21 @@ std::vector<JointTorqueMargin> torque_margins(const Scene& scene, const Trajecto
     double latched_at = std::numeric_limits<double>::infinity();
     for (const LatchEvent& e : run.events)
       if (e.latch == l) latched_at = std::min(latched_at, e.t);
-    travels.push_back({c, start, end, s, latched_at, JointMargin(dynamics, j, s, factors)});
+    travels.push_back({c, model.velocity_of(j).value, start, end, s, latched_at, JointMargin(dynamics, j, s, factors)});
     out.emplace_back();
     out.back().joint = model.joints[j].name;
   }
   const std::vector<std::size_t> harness = harness_elements(scene);
+  std::vector<int> rates;
+  for (const Travel& x : travels) rates.push_back(x.rate);
   std::vector<double> w(model.nv);
   for (const Sample& sample : run.samples) {
     if (std::none_of(travels.begin(), travels.end(), [&](const Travel& x) { return sample.t < x.latched_at; })) break;
     const std::vector<double> q(sample.y.begin(), sample.y.begin() + model.nq);
     rates_from_position_rates(model, q.data(), sample.q_dot.data(), w.data());
-    const std::vector<Eigen::VectorXd> Q = harness_forces(dynamics, harness, q, w);
+    const Eigen::MatrixXd Q = dynamics.element_joint_forces(harness, rates, q.data(), w.data());
     for (std::size_t i = 0; i < travels.size(); ++i)
-      if (sample.t < travels[i].latched_at) out[i].run.push_back(travels[i].margin.at(sample.t, q, w, Q));
+      if (sample.t < travels[i].latched_at) out[i].run.push_back(travels[i].margin.at(sample.t, q, w, Q.col(i)));
   }
   const std::vector<double> at_rest(model.nv, 0.0);
   for (std::size_t i = 0; i < travels.size(); ++i) {
@@ -180,7 +175,8 @@ std::vector<JointTorqueMargin> torque_margins(const Scene& scene, const Trajecto
     for (int k = 0; k < kQuasiStaticPoints; ++k) {
       const double target = x.start + (x.end - x.start) * k / (kQuasiStaticPoints - 1);
       const std::vector<double> q = state_at_angle(run, x.c, x.s, x.start, target);
-      out[i].quasi_static.push_back(x.margin.at(std::nan(""), q, at_rest, harness_forces(dynamics, harness, q, at_rest)));
+      const Eigen::MatrixXd Q = dynamics.element_joint_forces(harness, {x.rate}, q.data(), at_rest.data());
+      out[i].quasi_static.push_back(x.margin.at(std::nan(""), q, at_rest, Q.col(0)));
     }
     out[i].worst_run = worst_of(out[i].run);
     out[i].worst_quasi_static = worst_of(out[i].quasi_static);

@@ -153,9 +153,14 @@ class Dynamics {
   //   false where the evaluation failed or the loops have more components
   //   than the dense analysis takes (kMaxDenseComponents);
   bool rigid_accelerations(const double* q, const double* w, double* w_dot);
-  // - the generalized force element k alone puts on every velocity
-  //   coordinate (nv), at rates w;
-  Eigen::VectorXd element_generalized_forces(std::size_t k, const double* q, const double* w);
+  // - the generalized force each of `elements` alone puts on each of the
+  //   joint velocity coordinates `coordinates` (no elastic ones), at
+  //   rates w: entry (e, j). The poses and velocities are formed once and
+  //   each element's wrenches are carried straight to the joints above
+  //   their bodies, so the cost is O(N + elements x coordinates), where a
+  //   force pass per element would be O(N x elements);
+  Eigen::MatrixXd element_joint_forces(const std::vector<std::size_t>& elements, const std::vector<int>& coordinates,
+                                       const double* q, const double* w);
   // - the mass matrix, T = w^T M(q) w / 2 (p = M w but on a driven joint,
   //   whose p is not a state);
   Eigen::MatrixXd mass_matrix(const double* q);

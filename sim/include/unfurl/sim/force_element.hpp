@@ -10,7 +10,9 @@
 // run, not by the element.
 #pragma once
 
+#include <initializer_list>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -74,6 +76,14 @@ struct ElementLink {
   Vec3 axis_a = Vec3::UnitX();  // a bushing's x axis, in body a's frame
 };
 
+// The bodies of `ends` that are not the base, for ForceElement::bodies().
+inline std::vector<int> bodies_off_base(std::initializer_list<int> ends) {
+  std::vector<int> bodies;
+  for (int b : ends)
+    if (b != kBase) bodies.push_back(b);
+  return bodies;
+}
+
 class ForceElement {
  public:
   virtual ~ForceElement() = default;
@@ -94,6 +104,10 @@ class ForceElement {
   virtual void add_forces(const ElementState& s, ElementForces& out) const = 0;
   // Whether it reads poses and body velocities (else they may be stale).
   virtual bool needs_poses() const { return false; }
+  // The bodies it may put wrenches on (never kBase), so that an analysis
+  // of a few joints can take one element's forces without a pass over
+  // every body (torque_margin.cpp); nullopt: any body.
+  virtual std::optional<std::vector<int>> bodies() const { return std::nullopt; }
 
   // Its stored energy, and the store it counts towards.
   virtual double potential_energy(const ElementState&) const { return 0.0; }

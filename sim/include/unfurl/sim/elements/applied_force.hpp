@@ -21,6 +21,7 @@ class AppliedForce : public ForceElement {
   void add_forces(const ElementState& s, ElementForces& out) const override;
   std::shared_ptr<ForceElement> scaled(double L, double M, const Model& model) const override;
   bool needs_poses() const override { return in_base_frame; }
+  std::optional<std::vector<int>> bodies() const override { return bodies_off_base({body}); }
   void validate(const Scene& scene, const std::string& field) const override;
   std::vector<ElementParameter> parameters() const override;
 };

@@ -76,6 +76,7 @@ class Bushing : public ForceElement {
   void add_forces(const ElementState& s, ElementForces& out) const override;
   std::shared_ptr<ForceElement> scaled(double L, double M, const Model& model) const override;
   bool needs_poses() const override { return true; }
+  std::optional<std::vector<int>> bodies() const override { return bodies_off_base({a.body, b.body}); }
   double potential_energy(const ElementState& s) const override;
   double dissipated_power(const ElementState& s) const override;
   bool dissipative() const override { return !damping.isZero(0); }

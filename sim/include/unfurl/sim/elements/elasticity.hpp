@@ -22,6 +22,7 @@ class Elasticity : public ForceElement {
   std::string handle(const Model& model) const override { return model.bodies[body_].name; }
   std::string file_path(const Scene& scene) const override;
   void add_forces(const ElementState& s, ElementForces& out) const override;
+  std::optional<std::vector<int>> bodies() const override { return std::vector<int>{}; }  // generalized forces only
   double potential_energy(const ElementState& s) const override;
   double dissipated_power(const ElementState& s) const override;
   bool dissipative() const override { return true; }

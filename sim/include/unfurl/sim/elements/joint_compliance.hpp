@@ -32,6 +32,7 @@ class JointCompliance : public ForceElement {
   std::string handle(const Model& model) const override { return model.joints[joint].name; }
   std::string file_path(const Scene& scene) const override;
   void add_forces(const ElementState& s, ElementForces& out) const override;
+  std::optional<std::vector<int>> bodies() const override { return std::vector<int>{}; }  // generalized forces only
   double potential_energy(const ElementState& s) const override;
   double dissipated_power(const ElementState& s) const override;
   bool dissipative() const override { return radial_damping > 0 || axial_damping > 0 || tilt_damping > 0; }

@@ -14,6 +14,7 @@ class JointElement : public ForceElement {
   explicit JointElement(int joint) : joint(joint) {}
 
   std::string handle(const Model& model) const override { return model.joints[joint].name; }
+  std::optional<std::vector<int>> bodies() const override { return std::vector<int>{}; }  // generalized forces only
   // Its joint is a revolute or prismatic joint of the scene.
   void validate(const Scene& scene, const std::string& field) const override;
 
