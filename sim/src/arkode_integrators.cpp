@@ -79,6 +79,10 @@ double ArkodeIntegrator::span_end() const {
   return t;
 }
 
+// ARKODE's default interpolant (Hermite) is of degree at most
+// ARK_INTERP_MAX_DEGREE, whichever method it serves.
+int ArkodeIntegrator::interpolation_degree() const { return ARK_INTERP_MAX_DEGREE; }
+
 void ArkodeIntegrator::derivative(double t, int k, double* out) {
   check(api_.get_dky(mem_, t, k, scratch_), "GetDky");
   std::copy(scratch_.data(), scratch_.data() + dynamics_.size(), out);

@@ -23,6 +23,7 @@ class ArkodeIntegrator : public Integrator {
   double span_end() const override;
   void interpolate(double t, double* y) override;
   void interpolate_rate(double t, double* ydot) override;
+  int interpolation_degree() const override;
   void restart(double t, const double* y) override;
   bool set_tolerances(double rtol, double atol) override;
   std::vector<int> roots() override;

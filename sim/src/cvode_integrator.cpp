@@ -12,6 +12,7 @@ using sundials::check;
 CvodeIntegrator::CvodeIntegrator(IntegratorKind kind, Dynamics& dynamics, const RunSettings& settings,
                                  double t0, const std::vector<double>& y0)
     : dynamics_(dynamics),
+      max_order_(kind == IntegratorKind::cvode_bdf ? 5 : 12),
       y_(y0, ctx_),
       rtol_(settings.rtol),
       atol_(absolute_tolerances(dynamics, settings.atol), ctx_),
@@ -24,6 +25,7 @@ CvodeIntegrator::CvodeIntegrator(IntegratorKind kind, Dynamics& dynamics, const 
   check(CVodeSetErrHandlerFn(mem_, sundials::capture_error, &last_error_), "CVodeSetErrHandlerFn");
   check(CVodeSVtolerances(mem_, rtol_, atol_), "CVodeSVtolerances");
   check(CVodeSetMaxNumSteps(mem_, -1), "CVodeSetMaxNumSteps");
+  check(CVodeSetMaxOrd(mem_, max_order_), "CVodeSetMaxOrd");
   if (bdf && uses_krylov(settings, dynamics.size())) {
     krylov_.emplace(y_, ctx_);
     check(CVodeSetLinearSolver(mem_, krylov_->LS, nullptr), "CVodeSetLinearSolver");

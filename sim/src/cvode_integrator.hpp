@@ -21,6 +21,7 @@ class CvodeIntegrator : public Integrator {
   double span_end() const override;
   void interpolate(double t, double* y) override;
   void interpolate_rate(double t, double* ydot) override;
+  int interpolation_degree() const override { return max_order_; }  // CVODE's Nordsieck history's
   void restart(double t, const double* y) override;
   bool set_tolerances(double rtol, double atol) override;
   std::vector<int> roots() override;
@@ -35,6 +36,7 @@ class CvodeIntegrator : public Integrator {
   void derivative(double t, int k, double* out);
 
   Dynamics& dynamics_;
+  int max_order_;  // CVODE's defaults: 5 for BDF, 12 for Adams
   sundials::Context ctx_;
   sundials::Vector y_;
   double rtol_;

@@ -1,13 +1,19 @@
 #include "latch_events.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace unfurl::sim {
 
 namespace {
 constexpr int kBisections = 60;
-}
+// How far above zero, relative to the latch coordinate's size, the bound
+// on s must stay for the graze search to be passed over: a billion times
+// the interpolant's round-off, so that the search, had it run, would have
+// found s > 0 at its minimum and no graze.
+constexpr double kClearOfZero = 1e-9;
+}  // namespace
 
 LatchEvents::LatchEvents(Dynamics& dynamics, double window)
     : dynamics_(dynamics),
@@ -58,6 +64,30 @@ double LatchEvents::graze(Integrator& integrator, int l, double lo, double hi) {
   return bisect(integrator, l, lo, b);
 }
 
+bool LatchEvents::may_reach_zero(Integrator& integrator, int l, double lo, double hi) {
+  const int d = integrator.interpolation_degree();
+  if (!bound_ || bound_->degree() != d) {
+    bound_.emplace(d);
+    nodes_ready_ = false;
+  }
+  if (!nodes_ready_) {
+    at_nodes_.resize(d + 1, std::vector<double>(dynamics_.size()));
+    at_nodes_[0] = y_lo_;
+    at_nodes_[d] = y_hi_;
+    for (int k = 1; k < d; ++k) integrator.interpolate(lo + bound_->node(k) * (hi - lo), at_nodes_[k].data());
+    nodes_ready_ = true;
+  }
+  const Latch& latch = *dynamics_.latches()[l];
+  const int c = dynamics_.layout().q() + dynamics_.model().position_of(latch.joint).value;
+  Eigen::VectorXd s(d + 1);
+  double size = std::abs(latch.position);
+  for (int k = 0; k <= d; ++k) {
+    s[k] = switching(l, at_nodes_[k].data());
+    size = std::max(size, std::abs(at_nodes_[k][c]));
+  }
+  return bound_->lower_bound(s) <= kClearOfZero * size;
+}
+
 LatchGroup LatchEvents::find(Integrator& integrator, const StepOutcome& step) {
   LatchGroup group;
   const LatchState& state = dynamics_.latch_state();
@@ -79,13 +109,15 @@ LatchGroup LatchEvents::find(Integrator& integrator, const StepOutcome& step) {
     integrator.interpolate(hi, y_hi_.data());
     integrator.interpolate_rate(lo, rate_lo_.data());
     integrator.interpolate_rate(hi, rate_hi_.data());
+    nodes_ready_ = false;
     std::vector<LatchRoot> found;
     for (int l = 0; l < n; ++l) {
       if (state.engaged(l) || !(switching(l, y_lo_.data()) > 0)) continue;
       double t = -1;
       if (switching(l, y_hi_.data()) <= 0)
         t = bisect(integrator, l, lo, hi);
-      else if (switching_rate(l, rate_lo_.data()) < 0 && switching_rate(l, rate_hi_.data()) > 0)
+      else if (switching_rate(l, rate_lo_.data()) < 0 && switching_rate(l, rate_hi_.data()) > 0 &&
+               may_reach_zero(integrator, l, lo, hi))
         t = graze(integrator, l, lo, hi);
       if (t >= 0) found.push_back({l, t});
     }

@@ -12,11 +12,17 @@
 //   falling to rising inside the step with s positive at both ends: the
 //   minimum (bisection on ds/dt) is checked, and if s <= 0 there the first
 //   crossing before it is the root. A crossing missed at the very end of a
-//   step (s exactly zero at a stop time) is found the same way.
+//   step (s exactly zero at a stop time) is found the same way. That search
+//   interpolates the whole state some 60 times, so it is made only where a
+//   bound on s over the step (step_polynomial_bound.hpp) lets s come near
+//   zero: with many latches ringing, a search for each on every step would
+//   cost O(latches x state) per step.
 #pragma once
 
+#include <optional>
 #include <vector>
 
+#include "step_polynomial_bound.hpp"
 #include "unfurl/sim/dynamics.hpp"
 #include "unfurl/sim/integrator.hpp"
 
@@ -57,12 +63,18 @@ class LatchEvents {
   double bisect(Integrator& integrator, int l, double lo, double hi);
   // The root of a graze of latch l inside [lo, hi], or a negative value.
   double graze(Integrator& integrator, int l, double lo, double hi);
+  // Whether latch l's s may reach zero inside the step [lo, hi] (false
+  // only where it cannot).
+  bool may_reach_zero(Integrator& integrator, int l, double lo, double hi);
   double latch_torque(int l, double t, const double* y);
 
   Dynamics& dynamics_;
   double window_;
   long grazes_ = 0;
   std::vector<double> y_, ydot_, rate_lo_, rate_hi_, y_lo_, y_hi_;
+  std::optional<StepPolynomialBound> bound_;
+  std::vector<std::vector<double>> at_nodes_;  // the step's states at the bound's nodes, once per step
+  bool nodes_ready_ = false;
 };
 
 }  // namespace unfurl::sim

@@ -19,6 +19,7 @@ class Rk4Integrator : public Integrator {
   double span_end() const override { return t1_; }
   void interpolate(double t, double* y) override;
   void interpolate_rate(double t, double* ydot) override;
+  int interpolation_degree() const override { return 3; }  // the cubic Hermite of each step
   void restart(double t, const double* y) override;
   std::vector<int> roots() override { return roots_; }
   SolverStats stats() const override { return stats_; }

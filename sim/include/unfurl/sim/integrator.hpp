@@ -56,6 +56,9 @@ class Integrator {
   // its time derivative.
   virtual void interpolate(double t, double* y) = 0;
   virtual void interpolate_rate(double t, double* ydot) = 0;
+  // The highest degree of the polynomial in t that the interpolant follows
+  // over a step.
+  virtual int interpolation_degree() const = 0;
   // Restarts cleanly from (t, y): after an event changed the equations.
   virtual void restart(double t, const double* y) = 0;
   // The switching functions that reached zero at the last root.
