@@ -71,7 +71,8 @@ bool LatchEvents::may_reach_zero(Integrator& integrator, int l, double lo, doubl
     nodes_ready_ = false;
   }
   if (!nodes_ready_) {
-    at_nodes_.resize(d + 1, std::vector<double>(dynamics_.size()));
+    if (at_nodes_.size() != static_cast<std::size_t>(d + 1))
+      at_nodes_.assign(d + 1, std::vector<double>(dynamics_.size()));
     at_nodes_[0] = y_lo_;
     at_nodes_[d] = y_hi_;
     for (int k = 1; k < d; ++k) integrator.interpolate(lo + bound_->node(k) * (hi - lo), at_nodes_[k].data());
