@@ -95,6 +95,41 @@ TEST(ElementJointForces, EqualTheForcePassOnEveryBuiltInScene) {
   EXPECT_GE(with_forces, 12);
 }
 
+// One joint at a time, elements whose bodies none of the joint moves are
+// skipped (force_element.hpp): the column asked alone must be the one asked
+// with every joint, to the bit.
+TEST(ElementJointForces, OneJointAtATimeEqualsEveryJointAtOnce) {
+  for (const std::string& name : sim::builtin_scene_names()) {
+    const sim::Scene scene = sim::load_builtin_scene(name);
+    const State s = state_off_start(scene);
+    const std::vector<int> coordinates = joint_coordinates(scene.model);
+    sim::Dynamics dynamics(scene);
+    const Eigen::MatrixXd all = dynamics.element_joint_forces(all_elements(scene), coordinates, s.q.data(), s.w.data());
+    for (std::size_t j = 0; j < coordinates.size(); ++j) {
+      const Eigen::MatrixXd one =
+          dynamics.element_joint_forces(all_elements(scene), {coordinates[j]}, s.q.data(), s.w.data());
+      EXPECT_EQ(one.col(0), all.col(static_cast<Eigen::Index>(j))) << name << ", coordinate " << coordinates[j];
+    }
+  }
+}
+
+// The forces take only the sweep's placements (Sweep::set_placements), not
+// its articulated inertias: a right-hand side after them must still form
+// its own configuration, and give what it gave before.
+TEST(ElementJointForces, LeaveTheRightHandSideAsItWas) {
+  for (const char* name : {"pantograph", "pantograph_compliant", "zfold_flexible"}) {
+    const sim::Scene scene = sim::load_builtin_scene(name);
+    sim::Dynamics dynamics(scene);
+    const std::vector<double> y = dynamics.initial_state();
+    std::vector<double> before(y.size()), after(y.size());
+    ASSERT_TRUE(dynamics.rhs(0, y.data(), before.data())) << name;
+    const State s = state_off_start(scene);
+    dynamics.element_joint_forces(all_elements(scene), joint_coordinates(scene.model), s.q.data(), s.w.data());
+    ASSERT_TRUE(dynamics.rhs(0, y.data(), after.data())) << name;
+    EXPECT_EQ(before, after) << name;
+  }
+}
+
 TEST(ElementJointForces, AreTheFallOfTheBushingsEnergyAsEachHingeTurns) {
   const sim::Scene scene = sim::load_builtin_scene("pantograph_compliant");
   const sim::Model& model = scene.model;

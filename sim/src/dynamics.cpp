@@ -6,6 +6,7 @@
 
 #include "closure_rank.hpp"
 #include "newton_preconditioner.hpp"
+#include "subtree_spans.hpp"
 
 namespace unfurl::sim {
 
@@ -126,6 +127,13 @@ void Dynamics::configure(const double* q) {
   sweep_.set_configuration(q);
   std::copy_n(q, layout_.nq, configured_q_.begin());
   configured_ = true;
+  ++configuration_key_;
+}
+
+void Dynamics::place(const double* q) {
+  if (configured_ && std::equal(configured_q_.begin(), configured_q_.end(), q)) return;
+  sweep_.set_placements(q);
+  configured_ = false;  // its articulated inertias are another configuration's
   ++configuration_key_;
 }
 

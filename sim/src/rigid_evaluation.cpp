@@ -1,44 +1,18 @@
 // Dynamics evaluated without the regulator, for analyses: the accelerations
 // with the rigid model's loop forces, an element's generalized forces, the
 // mass matrix, and the loops' gap and its Jacobian (dynamics.hpp).
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <utility>
 
 #include "closure_rank.hpp"
+#include "subtree_spans.hpp"
 #include "unfurl/sim/dynamics.hpp"
 
 namespace unfurl::sim {
 
 namespace {
-
-// Each body's place in a depth-first order of the tree, and where its
-// subtree's places end: body b is in body i's subtree (moved by joint i)
-// when first[i] <= first[b] < end[i].
-class SubtreeSpans {
- public:
-  explicit SubtreeSpans(const Model& model) : first_(model.size()), end_(model.size()) {
-    std::vector<std::pair<int, bool>> to_visit;  // (body, whether its subtree is done)
-    for (int i = model.size() - 1; i >= 0; --i)
-      if (model.parent[i] == kBase) to_visit.push_back({i, false});
-    int next = 0;
-    while (!to_visit.empty()) {
-      const auto [i, done] = to_visit.back();
-      to_visit.pop_back();
-      if (done) {
-        end_[i] = next;
-        continue;
-      }
-      first_[i] = next++;
-      to_visit.push_back({i, true});
-      for (int child : model.children[i]) to_visit.push_back({child, false});
-    }
-  }
-  bool contains(int i, int b) const { return first_[i] <= first_[b] && first_[b] < end_[i]; }
-
- private:
-  std::vector<int> first_, end_;
-};
 
 // A wrench (f, m) at a body's origin in its axes, as the base frame's
 // wrench about the base's origin.
@@ -90,10 +64,15 @@ bool Dynamics::rigid_accelerations(const double* q, const double* w, double* w_d
 Eigen::MatrixXd Dynamics::element_joint_forces(const std::vector<std::size_t>& elements,
                                                const std::vector<int>& coordinates, const double* q, const double* w) {
   const Model& model = scene_.model;
-  configure(q);
+  place(q);
   body_velocities(w, true);
   sweep_.poses(poses_);
-  const SubtreeSpans spans(model);
+  if (!subtree_spans_) {
+    subtree_spans_ = std::make_unique<SubtreeSpans>(model);
+    every_body_.resize(model.size());
+    std::iota(every_body_.begin(), every_body_.end(), 0);
+  }
+  const SubtreeSpans& spans = *subtree_spans_;
   std::vector<int> joint_of(coordinates.size());
   std::vector<Vec6> axis(coordinates.size());
   for (std::size_t j = 0; j < coordinates.size(); ++j) {
@@ -101,15 +80,19 @@ Eigen::MatrixXd Dynamics::element_joint_forces(const std::vector<std::size_t>& e
     joint_of[j] = i;
     axis[j] = twist_in_base(poses_[i], sweep_.motion_axes(i).col(c - model.first_velocity[i].value));
   }
-  std::vector<int> every_body(model.size());
-  std::iota(every_body.begin(), every_body.end(), 0);
+  const auto moves = [&](int b) {
+    return std::any_of(joint_of.begin(), joint_of.end(), [&](int i) { return spans.contains(i, b); });
+  };
   Eigen::VectorXd direct = Eigen::VectorXd::Zero(model.nv);  // what elements put on coordinates themselves
   Eigen::MatrixXd Q = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(elements.size()),
                                             static_cast<Eigen::Index>(coordinates.size()));
   for (std::size_t e = 0; e < elements.size(); ++e) {
     const ForceElement& element = *scene_.elements[elements[e]];
     const std::optional<std::vector<int>> listed = element.bodies();
-    const std::vector<int>& bodies = listed ? *listed : every_body;
+    // An element that lists its bodies reaches a joint only through their
+    // wrenches (force_element.hpp): none below the joints, no force.
+    if (listed && !listed->empty() && std::none_of(listed->begin(), listed->end(), moves)) continue;
+    const std::vector<int>& bodies = listed ? *listed : every_body_;
     for (int b : bodies) F_[b].setZero();
     for (int c : coordinates) direct[c] = 0;
     ElementForces out{RatesOut(direct.data()), F_};

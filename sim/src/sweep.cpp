@@ -52,7 +52,6 @@ Sweep::Sweep(const Model& model)
 void Sweep::factor_multi_axis(int i, const double* joint_diagonal) {
   MultiAxis& J = multi_axes_[multi_[i]];
   const int c = model_.first_velocity[i].value;
-  if (J.varying) J.A = model_.joints[i].motion_axes(q_.data() + model_.first_position[i].value);
   J.M_star_A.noalias() = M_star_[i] * J.A;
   Mat6 K = J.A.transpose() * J.M_star_A;
   for (int r = 0; r < 6; ++r) K(r, r) += r < J.n ? (joint_diagonal ? joint_diagonal[c + r] : 0.0) : 1.0;
@@ -75,7 +74,7 @@ void Sweep::configure_flexible(int i, const double* joint_diagonal) {
   M_star_[i] = (f.M_star - f.M_star_A * f.D * f.M_star_A.transpose()).topLeftCorner<6, 6>();  // H M*^'s frame block
 }
 
-void Sweep::set_configuration(const double* q, const double* joint_diagonal) {
+void Sweep::set_placements(const double* q) {
   std::copy(q, q + model_.nq, q_.begin());
   const int N = model_.size();
   for (int i = 0; i < N; ++i) {
@@ -83,13 +82,11 @@ void Sweep::set_configuration(const double* q, const double* joint_diagonal) {
     X_[i] = model_.joints[i].placement(c >= 0 ? q + c : nullptr);
     M_star_[i] = M_[i];
     if (const int a = model_.node_of(i); a >= 0) X_[i].rho -= model_.bodies[model_.parent[i]].flexible->nodes[a].point;
+    if (multi_[i] >= 0 && multi_axes_[multi_[i]].varying) multi_axes_[multi_[i]].A = model_.joints[i].motion_axes(q + c);
     if (flex_[i] < 0) continue;
     Flexible& f = flexible_[flex_[i]];
-    if (multi_[i] >= 0 && multi_axes_[multi_[i]].varying) {
-      MultiAxis& J = multi_axes_[multi_[i]];
-      J.A = model_.joints[i].motion_axes(q + c);
-      f.A_free.topLeftCorner(6, f.joint_free) = J.A.leftCols(f.joint_free);
-    }
+    if (multi_[i] >= 0 && multi_axes_[multi_[i]].varying)
+      f.A_free.topLeftCorner(6, f.joint_free) = multi_axes_[multi_[i]].A.leftCols(f.joint_free);
     const double* eta = q + model_.first_elastic_position[i];
     model_.bodies[i].flexible->inertia.mass_matrix(eta, f.M_own);
     f.M_star = f.M_own;
@@ -98,6 +95,11 @@ void Sweep::set_configuration(const double* q, const double* joint_diagonal) {
       f.N[a] << flexible::velocity_matrix(f.nodes[a].placement()), f.nodes[a].rates();
     }
   }
+}
+
+void Sweep::set_configuration(const double* q, const double* joint_diagonal) {
+  set_placements(q);
+  const int N = model_.size();
   for (int i = N - 1; i >= 0; --i) {
     if (flex_[i] >= 0) {
       configure_flexible(i, joint_diagonal);

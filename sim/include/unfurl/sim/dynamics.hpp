@@ -46,6 +46,7 @@ namespace unfurl::sim {
 
 class ClosureRank;
 class NewtonPreconditioner;
+class SubtreeSpans;
 
 // Everything derived from a state at one instant.
 struct Observation {
@@ -189,6 +190,9 @@ class Dynamics {
   // Computes the configuration at q unless it holds q's already; its key
   // changes when it computes.
   void configure(const double* q);
+  // Only the sweep's placements at q (Sweep::set_placements), for analyses
+  // that read poses and element forces but no accelerations.
+  void place(const double* q);
   bool evaluate(double t, const double* y, double* ydot, Regulator::Gains gains);
   // The drivers' rates and accelerations at t into driven_rate_ and
   // driven_acceleration_.
@@ -234,6 +238,11 @@ class Dynamics {
   std::vector<double> configured_q_;
   bool configured_ = false;
   long configuration_key_ = 0;
+
+  // element_joint_forces(): the tree's subtrees and every body, made on
+  // its first call.
+  std::unique_ptr<SubtreeSpans> subtree_spans_;
+  std::vector<int> every_body_;
 
   // Scratch for the evaluations, sized once.
   std::vector<Vec6> phi_, v_, mu_, F_;

@@ -106,7 +106,10 @@ class ForceElement {
   virtual bool needs_poses() const { return false; }
   // The bodies it may put wrenches on (never kBase), so that an analysis
   // of a few joints can take one element's forces without a pass over
-  // every body (torque_margin.cpp); nullopt: any body.
+  // every body (torque_margin.cpp); nullopt: any body. An element that
+  // lists bodies writes no generalized force on a joint's coordinate (at
+  // most on its bodies' elastic ones); an empty list: generalized forces
+  // only.
   virtual std::optional<std::vector<int>> bodies() const { return std::nullopt; }
 
   // Its stored energy, and the store it counts towards.

@@ -52,6 +52,11 @@ class Sweep {
   // a joint's armature enters the articulated inertia. Always computes: what
   // may be reused between calls is the caller's to key (dynamics.hpp).
   void set_configuration(const double* q, const double* joint_diagonal = nullptr);
+  // Only the placements X_i, the node frames of flexible bodies and the
+  // motion axes at q: what poses(), velocities and force elements read.
+  // The articulated quantities are stale until set_configuration; an
+  // analysis that needs no accelerations saves their O(N) 6 x 6 products.
+  void set_placements(const double* q);
 
   // phi*_i of the first backward pass for momenta p (v*_i = 0).
   void bias(const double* p, std::vector<Vec6>& phi, const double* driven = nullptr) const {
