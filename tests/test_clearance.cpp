@@ -92,6 +92,19 @@ TEST(Clearance, SpheresPassAtTheirClosedFormDistanceAndTime) {
   EXPECT_LT(c.distance_queries, 61 + 40);
 }
 
+// A cancel set before the check stops it before any pair is measured (the
+// workbench's superseded run).
+TEST(Clearance, ACancelStopsItBeforeAnyPairIsMeasured) {
+  const sim::SceneFile file =
+      sim::read_scene_text(arm_and_post("[{sphere: 0.1, offset: [0, 1, 0]}]", "[{sphere: 0.2, offset: [0, 0, 1.5]}]"), "arm");
+  const sim::RunResult run = sim::simulate(file.scene, file.scene.run);
+  const studies::BodySolids solids = studies::body_solids(file.scene, file.visuals, nullptr);
+  std::atomic<bool> cancel{true};
+  EXPECT_EQ(studies::check_clearance(file.scene, solids, run.trajectory, &cancel).distance_queries, 0);
+  cancel = false;
+  EXPECT_EQ(studies::check_clearance(file.scene, solids, run.trajectory, &cancel).pairs.size(), 1u);
+}
+
 TEST(Clearance, PairsThatNeverComeNearAreCertifiedWithoutMeasuring) {
   // The far body is 50 m off: its pairs are left out, the arm and post's
   // closest approach stays the closed form's.

@@ -59,6 +59,21 @@ TEST(TorqueMargin, SpringAgainstFrictionMatchesItsClosedForm) {
   EXPECT_TRUE(s.torque_margins_pass());
 }
 
+// The workbench cancels a superseded run's summary: a cancel set before it
+// starts stops it before any joint's margins; one never set changes nothing.
+TEST(TorqueMargin, ACancelStopsItAndAnUnsetOneChangesNothing) {
+  const sim::Scene scene = sim::load_scene_text(hinge(""), "hinge");
+  const sim::RunResult run = sim::simulate(scene, scene.run);
+  std::atomic<bool> cancel{true};
+  EXPECT_TRUE(sim::torque_margins(scene, run.trajectory, &cancel)[0].quasi_static.empty());
+  cancel = false;
+  const std::vector<sim::JointTorqueMargin> with = sim::torque_margins(scene, run.trajectory, &cancel);
+  const std::vector<sim::JointTorqueMargin> without = sim::torque_margins(scene, run.trajectory);
+  ASSERT_EQ(with[0].quasi_static.size(), 101u);
+  EXPECT_EQ(with[0].worst(), without[0].worst());
+  EXPECT_EQ(with[0].run.size(), without[0].run.size());
+}
+
 TEST(TorqueMargin, AHarnessCableThatTightensFailsItAndTheRunSaysSo) {
   // A cable from the base to the panel's tip, slack when stowed, taut from
   // about half the travel, pulling back harder the further it deploys.

@@ -108,13 +108,18 @@ void SimulationWorker::loop() {
       result.status = sim::RunStatus::failed;
       result.failure = {0, 0, "setup", e.what()};
     }
+    // An edit during the summary (a large array's torque margins and
+    // clearance take seconds) cancels it too: its run is superseded.
     std::shared_ptr<const sim::RunSummary> summary;
     if (result.status != sim::RunStatus::cancelled) {
-      sim::RunSummary s = sim::summarize(scene, result);
+      sim::RunSummary s = sim::summarize(scene, result, &cancel_);
       if (solids.bodies.size() == static_cast<std::size_t>(scene.model.size()))
-        s.clearance = studies::check_clearance(scene, solids, result.trajectory);
+        s.clearance = studies::check_clearance(scene, solids, result.trajectory, &cancel_);
       s.unlatched.insert(s.unlatched.end(), failed_latches.begin(), failed_latches.end());
-      summary = std::make_shared<const sim::RunSummary>(std::move(s));
+      if (cancel_)
+        result.status = sim::RunStatus::cancelled;
+      else
+        summary = std::make_shared<const sim::RunSummary>(std::move(s));
     }
     std::lock_guard<std::mutex> lock(mutex_);
     progress_.summary = std::move(summary);

@@ -6,7 +6,7 @@
 
 namespace unfurl::sim {
 
-RunSummary summarize(const Scene& scene, const RunResult& result) {
+RunSummary summarize(const Scene& scene, const RunResult& result, const std::atomic<bool>* cancel) {
   RunSummary s;
   const Model& model = scene.model;
   const Trajectory& tr = result.trajectory;
@@ -40,7 +40,7 @@ RunSummary summarize(const Scene& scene, const RunResult& result) {
   s.indeterminate_spans = p.indeterminate_spans;
   if (p.loads_assessed) s.loads_determinate = p.indeterminate_spans.empty();
   s.torque_margin_factors = scene.torque_margin;
-  s.torque_margins = torque_margins(scene, tr);
+  s.torque_margins = torque_margins(scene, tr, cancel);
   if (!tr.empty()) {
     s.energy_initial = tr.samples.front().energy.total();
     s.energy_final = tr.samples.back().energy.total();

@@ -130,7 +130,9 @@ std::vector<int> driven_joints(const Scene& scene) {
 // Each driven joint's margin at every sample before its latch engages (the
 // samples' rates and harness forces found once for all joints), then at
 // kQuasiStaticPoints angles at rest.
-std::vector<JointTorqueMargin> torque_margins(const Scene& scene, const Trajectory& run) {
+std::vector<JointTorqueMargin> torque_margins(const Scene& scene, const Trajectory& run,
+                                              const std::atomic<bool>* cancel) {
+  const auto cancelled = [cancel] { return cancel && cancel->load(std::memory_order_relaxed); };
   const TorqueMarginFactors& factors = scene.torque_margin;
   std::vector<JointTorqueMargin> out;
   if (run.empty()) return out;
@@ -162,6 +164,7 @@ std::vector<JointTorqueMargin> torque_margins(const Scene& scene, const Trajecto
   for (const Travel& x : travels) rates.push_back(x.rate);
   std::vector<double> w(model.nv);
   for (const Sample& sample : run.samples) {
+    if (cancelled()) return out;
     if (std::none_of(travels.begin(), travels.end(), [&](const Travel& x) { return sample.t < x.latched_at; })) break;
     const std::vector<double> q(sample.y.begin(), sample.y.begin() + model.nq);
     rates_from_position_rates(model, q.data(), sample.q_dot.data(), w.data());
@@ -172,6 +175,7 @@ std::vector<JointTorqueMargin> torque_margins(const Scene& scene, const Trajecto
   const std::vector<double> at_rest(model.nv, 0.0);
   for (std::size_t i = 0; i < travels.size(); ++i) {
     const Travel& x = travels[i];
+    if (cancelled()) return out;
     for (int k = 0; k < kQuasiStaticPoints; ++k) {
       const double target = x.start + (x.end - x.start) * k / (kQuasiStaticPoints - 1);
       const std::vector<double> q = state_at_angle(run, x.c, x.s, x.start, target);

@@ -92,7 +92,7 @@ class ClearanceCheck {
   // from a tenth of the largest body's reach until the closest pair
   // measured lies within it: every pair left out is then farther apart
   // than the margin, and than the closest, throughout.
-  sim::Clearance run() {
+  sim::Clearance run(const std::atomic<bool>* cancel) {
     std::vector<bool> measured(pairs_.size(), false);
     long left = static_cast<long>(pairs_.size());
     double margin = 0.1 * length_;
@@ -102,6 +102,7 @@ class ClearanceCheck {
       for (std::size_t i = 0; i < pairs_.size(); ++i) {
         const auto [a, b] = pairs_[i];
         if (measured[i] || !near.near(a, b)) continue;
+        if (cancel && cancel->load(std::memory_order_relaxed)) return out_;
         scan(a, b);
         measured[i] = true;
         --left;
@@ -382,13 +383,14 @@ class ClearanceCheck {
 
 }  // namespace
 
-sim::Clearance check_clearance(const sim::Scene& scene, const BodySolids& solids, const sim::Trajectory& trajectory) {
+sim::Clearance check_clearance(const sim::Scene& scene, const BodySolids& solids, const sim::Trajectory& trajectory,
+                               const std::atomic<bool>* cancel) {
   if (solids.bodies.size() != static_cast<std::size_t>(scene.model.size()))
     throw std::invalid_argument("check_clearance: solids for " + std::to_string(solids.bodies.size()) +
                                 " bodies, the scene has " + std::to_string(scene.model.size()));
   const auto start = std::chrono::steady_clock::now();
   sim::Clearance out;
-  if (!trajectory.empty()) out = ClearanceCheck(scene, solids, trajectory).run();
+  if (!trajectory.empty()) out = ClearanceCheck(scene, solids, trajectory).run(cancel);
   out.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }

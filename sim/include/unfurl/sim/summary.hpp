@@ -4,6 +4,7 @@
 // samples.
 #pragma once
 
+#include <atomic>
 #include <optional>
 #include <string>
 #include <vector>
@@ -81,6 +82,7 @@ struct RunSummary {
 // The free bus's figures of a trajectory.
 RunSummary::FreeBus summarize_free_bus(const Model& model, const Trajectory& trajectory);
 
-RunSummary summarize(const Scene& scene, const RunResult& result);
+// Stops where *cancel becomes true, incomplete (torque_margins()).
+RunSummary summarize(const Scene& scene, const RunResult& result, const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace unfurl::sim

@@ -34,6 +34,7 @@
 // there, as the run left them).
 #pragma once
 
+#include <atomic>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,9 @@ std::vector<int> driven_joints(const Scene& scene);
 
 // The driven joints' margins (joints with a spring and a latch), from a run
 // of the scene, weighed by the scene's factors (Scene::torque_margin).
-std::vector<JointTorqueMargin> torque_margins(const Scene& scene, const Trajectory& run);
+// Where *cancel becomes true it stops, its result incomplete: for a caller
+// that then discards it (the workbench, whose edit started another run).
+std::vector<JointTorqueMargin> torque_margins(const Scene& scene, const Trajectory& run,
+                                              const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace unfurl::sim

@@ -23,6 +23,8 @@
 // reported; contact is.
 #pragma once
 
+#include <atomic>
+
 #include "unfurl/sim/clearance_result.hpp"
 #include "unfurl/sim/scene.hpp"
 #include "unfurl/sim/trajectory.hpp"
@@ -31,6 +33,9 @@
 namespace unfurl::studies {
 
 // Throws std::invalid_argument when `solids` are not the scene's bodies'.
-sim::Clearance check_clearance(const sim::Scene& scene, const BodySolids& solids, const sim::Trajectory& trajectory);
+// Where *cancel becomes true it stops between pairs, its result incomplete
+// (for a caller that discards it).
+sim::Clearance check_clearance(const sim::Scene& scene, const BodySolids& solids, const sim::Trajectory& trajectory,
+                               const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace unfurl::studies
