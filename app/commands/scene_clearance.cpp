@@ -43,10 +43,10 @@ studies::BodySolids scene_solids(const sim::Scene& scene, const sim::SceneVisual
 }
 
 sim::Clearance run_clearance(const sim::Scene& scene, const sim::SceneVisuals& visuals,
-                             const sim::Trajectory& trajectory) {
+                             const sim::Trajectory& trajectory, const std::atomic<bool>* cancel) {
   std::vector<std::string> unread;
   const studies::BodySolids solids = scene_solids(scene, visuals, &unread);
-  sim::Clearance c = studies::check_clearance(scene, solids, trajectory);
+  sim::Clearance c = studies::check_clearance(scene, solids, trajectory, cancel);
   c.unread = unread;
   return c;
 }

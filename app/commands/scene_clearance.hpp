@@ -3,6 +3,8 @@
 // renderer's mesh reader reads where it is built.
 #pragma once
 
+#include <atomic>
+
 #include "unfurl/sim/clearance_result.hpp"
 #include "unfurl/sim/scene_file.hpp"
 #include "unfurl/sim/trajectory.hpp"
@@ -14,7 +16,8 @@ namespace unfurl::app {
 studies::BodySolids scene_solids(const sim::Scene& scene, const sim::SceneVisuals& visuals,
                                  std::vector<std::string>* unread);
 
+// Stops where *cancel becomes true, incomplete (studies::check_clearance).
 sim::Clearance run_clearance(const sim::Scene& scene, const sim::SceneVisuals& visuals,
-                             const sim::Trajectory& trajectory);
+                             const sim::Trajectory& trajectory, const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace unfurl::app

@@ -66,18 +66,21 @@ void bind_run(py::module_& m) {
         sim::RunObserver observer;
         observer.cancel = &cancel;
         observer.on_progress = [&](const sim::StepProgress& p) { reached = p.t; };
-        sim::RunResult result = run_interruptibly(
-            [&] { return sim::simulate(file.scene, file.scene.run, observer); }, cancel,
+        // The summary too: a large array's torque margins and clearance
+        // take seconds, and Ctrl+C stops them as it stops the run.
+        PyRun run = run_interruptibly(
+            [&] {
+              PyRun r{file, sim::simulate(file.scene, file.scene.run, observer), {}};
+              r.summary = sim::summarize(r.file.scene, r.result, &cancel);
+              if (r.result.status != sim::RunStatus::cancelled)
+                r.summary.clearance = app::run_clearance(r.file.scene, r.file.visuals, r.result.trajectory, &cancel);
+              return r;
+            },
+            cancel,
             [&] {
               if (progress) progress(reached.load());
             });
-        if (progress) progress(result.trajectory.empty() ? 0.0 : result.trajectory.t_end());
-        PyRun run{file, std::move(result), {}};
-        run.summary = sim::summarize(run.file.scene, run.result);
-        if (run.result.status != sim::RunStatus::cancelled) {
-          const py::gil_scoped_release unlocked;
-          run.summary.clearance = app::run_clearance(run.file.scene, run.file.visuals, run.result.trajectory);
-        }
+        if (progress) progress(run.result.trajectory.empty() ? 0.0 : run.result.trajectory.t_end());
         return run;
       },
       py::arg("scene"), py::arg("progress") = nullptr);

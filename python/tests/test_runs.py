@@ -4,6 +4,7 @@ import json
 import os
 import signal
 import threading
+import time
 
 import numpy as np
 import pytest
@@ -76,6 +77,32 @@ def test_ctrl_c_cancels_the_run_and_leaves_no_thread():
         unfurl.simulate("pantograph", t_end=20, rtol=1e-12, set={"run.roundoff_guard": "false"})
     timer.join()
     assert threads() == before
+
+
+def test_ctrl_c_stops_the_summary_too(tmp_path, cli):
+    # A 200-stage compliant array's first millisecond: its integration is
+    # short, its summary (the torque margins of 402 driven joints at 101
+    # angles each, the clearance of 402 panels) takes most of the call.
+    path = tmp_path / "array.yaml"
+    cli("generate", "pantograph", "--stages", "200", "--compliant", "-o", str(path))
+    settings = dict(t_end=0.001, sample=0.001, rtol=1e-7, atol=1e-9)
+    start = time.monotonic()
+    unfurl.simulate(str(path), **settings)
+    whole = time.monotonic() - start
+    # Ctrl+C 50 ms after the integration has reached its end.
+    timers = []
+
+    def interrupt_once_integrated(t):
+        if t >= settings["t_end"] and not timers:
+            timers.append(threading.Timer(0.05, lambda: os.kill(os.getpid(), signal.SIGINT)))
+            timers[0].start()
+
+    start = time.monotonic()
+    with pytest.raises(KeyboardInterrupt):
+        unfurl.simulate(str(path), progress=interrupt_once_integrated, **settings)
+    interrupted = time.monotonic() - start
+    timers[0].join()
+    assert interrupted < 0.5 * whole, (interrupted, whole)
 
 
 def test_a_failed_run_keeps_what_was_computed():

@@ -240,7 +240,7 @@ def simulate(scene, t_end=None, rtol=None, atol=None, integrator=None, sample=No
     "arkode-dirk", "rk4") and sample override the scene's run settings, as
     --t-end, --rtol, ... do; set: more --set overrides. progress: called
     with the simulated time about every 50 ms. The GIL is released while it
-    runs; Ctrl+C stops it and raises KeyboardInterrupt. A failed run is
+    runs; Ctrl+C stops it (or its summary) and raises KeyboardInterrupt. A failed run is
     returned with status "failed" and what was computed up to there.
     """
     if not isinstance(scene, Scene):
