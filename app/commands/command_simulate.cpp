@@ -115,6 +115,7 @@ void print_large_deflections(const sim::Scene& scene, const sim::RunSummary& s) 
 // The driven joints' smallest motorization factor, and every joint short of
 // the required one by name.
 void print_torque_margins(const sim::RunSummary& s) {
+  if (s.interrupted) std::printf("margin       not computed: interrupted (the clearance neither)\n");
   if (s.torque_margins.empty()) return;
   const double required = s.torque_margin_factors.required;
   const sim::JointTorqueMargin* worst = &s.torque_margins.front();
@@ -271,8 +272,17 @@ int command_simulate(const std::vector<std::string>& argv) {
   if (!args.has("--quiet")) observer.on_progress = [&](const sim::StepProgress& p) { progress.update(p.t); };
   const sim::RunResult result = sim::simulate(scene, scene.run, observer);
   progress.finish();
-  sim::RunSummary summary = sim::summarize(scene, result);
-  summary.clearance = run_clearance(scene, file.visuals, result.trajectory);
+  // An interrupt stops the summary too (on a large array its torque
+  // margins and clearance take minutes): its files say what is missing.
+  sim::RunSummary summary = sim::summarize(scene, result, &interrupt.flag());
+  if (!summary.interrupted) {
+    summary.clearance = run_clearance(scene, file.visuals, result.trajectory, &interrupt.flag());
+    if (interrupt.signal() != 0) {
+      summary.interrupted = true;
+      summary.torque_margins.clear();
+      summary.clearance.reset();
+    }
+  }
 
   io::write_trajectory_csv(scene, result.trajectory, dir + "/trajectory.csv");
   io::write_loads_csv(scene, result.trajectory, dir + "/loads.csv");
@@ -288,6 +298,13 @@ int command_simulate(const std::vector<std::string>& argv) {
   if (result.status == sim::RunStatus::cancelled) {
     std::fprintf(stderr, "unfurl simulate: interrupted by %s at t = %g s\n(the results up to there are written)\n",
                  interrupt.signal_name(), summary.t_reached);
+    return interrupt.exit_status();
+  }
+  if (summary.interrupted) {
+    std::fprintf(stderr,
+                 "unfurl simulate: interrupted by %s after the run, in its summary\n(the results are written; the "
+                 "torque margins and clearance were not computed)\n",
+                 interrupt.signal_name());
     return interrupt.exit_status();
   }
   return 0;

@@ -204,8 +204,13 @@ std::vector<std::string> peak_quantities(const std::vector<sim::RunSummary::Elem
 }
 
 // "torque_margin": the factors, and per driven joint the smallest
-// motorization factor along the run and quasi-statically, and where.
+// motorization factor along the run and quasi-statically, and where; null
+// when an interrupt stopped the summary.
 void write_torque_margins(JsonWriter& json, const sim::RunSummary& summary) {
+  if (summary.interrupted) {
+    json.null("torque_margin");
+    return;
+  }
   const sim::TorqueMarginFactors& f = summary.torque_margin_factors;
   json.begin_object("torque_margin");
   json.value("required_motorization_factor", f.required);

@@ -41,6 +41,10 @@ RunSummary summarize(const Scene& scene, const RunResult& result, const std::ato
   if (p.loads_assessed) s.loads_determinate = p.indeterminate_spans.empty();
   s.torque_margin_factors = scene.torque_margin;
   s.torque_margins = torque_margins(scene, tr, cancel);
+  if (cancel && cancel->load()) {
+    s.interrupted = true;
+    s.torque_margins.clear();
+  }
   if (!tr.empty()) {
     s.energy_initial = tr.samples.front().energy.total();
     s.energy_final = tr.samples.back().energy.total();

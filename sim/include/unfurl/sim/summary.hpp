@@ -50,6 +50,9 @@ struct RunSummary {
   // factors they were weighed by.
   std::vector<JointTorqueMargin> torque_margins;
   TorqueMarginFactors torque_margin_factors;
+  // An interrupt stopped the summary (summarize's cancel): its torque
+  // margins and clearance are missing, not partial.
+  bool interrupted = false;
   // The smallest motorization factor over the driven joints (infinite
   // without any), and whether every one reaches the required factor.
   double worst_motorization_factor() const;
