@@ -156,6 +156,18 @@ void bind_builder(py::module_& m) {
              b.element(l);
            },
            py::arg("joint"), py::arg("position"), py::arg("stiffness"), py::arg("damping"), py::arg("free_play") = 0.0)
+      .def("limit",
+           [](B& b, const std::string& joint, double stiffness, std::optional<double> lower,
+              std::optional<double> upper, double damping) {
+             if (!lower && !upper) throw py::value_error("limit: give lower, upper or both");
+             auto l = std::make_shared<sim::JointLimit>(b.joint_index(joint, "limits.joint"));
+             if (lower) l->lower = *lower;
+             if (upper) l->upper = *upper;
+             l->stiffness = stiffness, l->damping = damping;
+             b.element(l);
+           },
+           py::arg("joint"), py::arg("stiffness"), py::arg("lower") = std::nullopt, py::arg("upper") = std::nullopt,
+           py::arg("damping") = 0.0)
       .def("driver",
            [](B& b, const std::string& joint, const std::string& profile, double amount, double duration, double start) {
              auto d = std::make_shared<sim::JointDriver>(b.joint_index(joint, "drivers.joint"));

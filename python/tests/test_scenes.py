@@ -102,6 +102,36 @@ def test_a_driver_moves_the_rod_and_reports_its_torque():
     assert run.loads.unit("drive_torque.h") == "N m"
 
 
+def test_a_limit_stops_the_rod_where_the_closed_form_says():
+    # Released from 0.3 rad, the rod swings through the bottom to -0.3 rad;
+    # a stiff limit at -0.1 rad turns it back there, so it never goes below
+    # -0.1 rad by more than the limit's own deflection, and it leaves the
+    # limit as fast as it came (no damping): it rises again to 0.3 rad.
+    b = pendulum_builder()
+    b.limit("h", stiffness=1e4, lower=-0.1)
+    b.initial("h", q=[0.3])
+    b.run(t_end=1.5, rtol=1e-10, atol=1e-12, sample=0.001)
+    scene = b.build()
+    run = unfurl.simulate(scene)
+    theta = run.trajectory["q.h"]
+    # The rod reaches the limit at speed v: (1/2) I v^2 = m g d (cos 0.1 - cos 0.3).
+    # Past it, I x'' = -k x - tau_g, the weight's moment tau_g = m g d sin 0.1
+    # (nearly constant over the limit's small deflection x) pulling it back
+    # towards the bottom too, so the deepest x is
+    # -tau_g / k + sqrt((tau_g / k)^2 + I v^2 / k).
+    inertia, k = 0.02 + 1.5 * 0.16, 1e4
+    v = math.sqrt(2 * 1.5 * 9.81 * 0.4 * (math.cos(0.1) - math.cos(0.3)) / inertia)
+    static = 1.5 * 9.81 * 0.4 * math.sin(0.1) / k
+    deepest = -static + math.sqrt(static**2 + inertia * v**2 / k)
+    assert abs((-0.1 - theta.min()) - deepest) < 0.01 * deepest
+    assert abs(theta[run.t > 0.5].max() - 0.3) < 1e-6
+    assert run.loads.unit("limit_torque.h") == "N m"
+    assert run.loads["limit_torque.h"].max() > 0 and run.loads["limit_torque.h"].min() == 0
+    assert "limits:" in scene.to_yaml() and "lower: -0.1" in scene.to_yaml()
+    with pytest.raises(ValueError, match="lower, upper or both"):
+        pendulum_builder().limit("h", stiffness=1)
+
+
 def test_the_builder_checks_as_a_file_is_checked():
     b = pendulum_builder()
     b.body("arm", parent="rod", mass=0, inertia=[1, 1, 1], joint=dict(name="k", type="revolute"))

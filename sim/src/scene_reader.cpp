@@ -72,6 +72,7 @@ class SceneReader : private input::YamlFields {
   void read_springs(const YAML::Node& list, SceneBuilder& b) const;
   void read_dampers(const YAML::Node& list, SceneBuilder& b) const;
   void read_stops(const YAML::Node& list, SceneBuilder& b) const;
+  void read_limits(const YAML::Node& list, SceneBuilder& b) const;
   void read_friction(const YAML::Node& list, SceneBuilder& b) const;
   std::shared_ptr<const SpringCurve> spring_curve(const YAML::Node& table, const std::string& field) const;
   void read_point_springs(const YAML::Node& list, SceneBuilder& b) const;
@@ -714,6 +715,19 @@ void SceneReader::read_stops(const YAML::Node& list, SceneBuilder& b) const {
        });
 }
 
+void SceneReader::read_limits(const YAML::Node& list, SceneBuilder& b) const {
+  each(list, "limits", {"joint", "lower", "upper", "stiffness", "damping"},
+       [&](const YAML::Node& l, const std::string& field, std::size_t) {
+         auto limit = std::make_shared<JointLimit>(element_joint(l, b, field));
+         if (!l["lower"] && !l["upper"]) fail(l, field, "give lower, upper or both: the ends of the joint's range");
+         limit->lower = number_or(l, "lower", limit->lower, field);
+         limit->upper = number_or(l, "upper", limit->upper, field);
+         limit->stiffness = number(require(l, "stiffness", field), field + ".stiffness");
+         limit->damping = number_or(l, "damping", 0.0, field);
+         b.element(limit);
+       });
+}
+
 void SceneReader::read_friction(const YAML::Node& list, SceneBuilder& b) const {
   each(list, "friction", {"joint", "coulomb", "viscous", "velocity_scale"},
        [&](const YAML::Node& f, const std::string& field, std::size_t) {
@@ -1014,8 +1028,8 @@ SceneFile SceneReader::read(const std::string& text_in, const std::vector<Overri
   // former are applied_forces since 0.3.
   if (root["loads"]) fail(root["loads"], "loads", "renamed: the constant forces on bodies are `applied_forces:`");
   check_keys(root,
-             {"name", "description", "base", "gravity", "bodies", "springs", "dampers", "stops", "friction", "point_springs",
-              "bushings", "applied_forces", "latches", "drivers", "loops", "sensors", "regulator", "initial",
+             {"name", "description", "base", "gravity", "bodies", "springs", "dampers", "stops", "limits", "friction",
+              "point_springs", "bushings", "applied_forces", "latches", "drivers", "loops", "sensors", "regulator", "initial",
               "closure_tolerance", "torque_margin", "run"},
              "");
   SceneBuilder b(root["name"] ? text(root["name"], "name") : "scene",
@@ -1032,6 +1046,7 @@ SceneFile SceneReader::read(const std::string& text_in, const std::vector<Overri
     if (root["springs"]) read_springs(root["springs"], b);
     if (root["dampers"]) read_dampers(root["dampers"], b);
     if (root["stops"]) read_stops(root["stops"], b);
+    if (root["limits"]) read_limits(root["limits"], b);
     if (root["friction"]) read_friction(root["friction"], b);
     if (root["latches"]) read_latches(root["latches"], b);
     if (root["applied_forces"]) read_applied_forces(root["applied_forces"], b);

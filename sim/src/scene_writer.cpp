@@ -1,6 +1,7 @@
 // A scene as a scene file (assets/scenes/README.md), the reader's inverse:
 // every number in its shortest form that reads back to the same double, so
 // the file reloads to the same run.
+#include <cmath>
 #include <sstream>
 
 #include "unfurl/sim/elements/all.hpp"
@@ -240,6 +241,12 @@ void elements(std::ostream& out, const Scene& scene) {
   list("stops", scene.elements_of<JointStop>(), [&](const JointStop& s) {
     return "joint: " + joint(s.joint) + ", position: " + format_number(s.position) +
            ", stiffness: " + format_number(s.stiffness) + ", damping: " + format_number(s.damping);
+  });
+  list("limits", scene.elements_of<JointLimit>(), [&](const JointLimit& l) {
+    std::string text = "joint: " + joint(l.joint);
+    if (std::isfinite(l.lower)) text += ", lower: " + format_number(l.lower);
+    if (std::isfinite(l.upper)) text += ", upper: " + format_number(l.upper);
+    return text + ", stiffness: " + format_number(l.stiffness) + ", damping: " + format_number(l.damping);
   });
   list("latches", scene.latches(), [&](const Latch& l) {
     return "joint: " + joint(l.joint) + ", position: " + format_number(l.position) +

@@ -60,6 +60,8 @@ class JointMargin {
         p.friction += friction->coulomb + friction->viscous * std::abs(rate);
       } else if (const auto* stop = dynamic_cast<const JointStop*>(e)) {
         p.spring += std::max(0.0, -s_ * stop->torque(p.q, rate));
+      } else if (const auto* limit = dynamic_cast<const JointLimit*>(e)) {
+        p.spring += std::max(0.0, -s_ * limit->torque(p.q, rate));
       }  // a latch holds nothing before it engages
     }
     for (const double Q : harness) p.harness += std::max(0.0, -s_ * Q);

@@ -98,6 +98,16 @@ void chain_latches(sim::SceneBuilder& b, int first, int count, double factor) {
   }
 }
 
+// A snubber under hinge j in the stowed stack: it stops the hinge at its
+// stowed angle, on the side the hinge folds, as stiff as its latch.
+void stowed_snubber(sim::SceneBuilder& b, int j, double stowed, double factor) {
+  auto snubber = std::make_shared<sim::JointLimit>(b.joint_index(joint_name(j), "limits"));
+  (stowed > 0 ? snubber->upper : snubber->lower) = stowed;
+  snubber->stiffness = factor * kLatch;
+  snubber->damping = factor * kLatchDamping;
+  b.element(snubber);
+}
+
 // The rigid cross-links: each chain A panel's other half, its image, turns
 // on the chain B panel at the pivot, and a loop closes it on the panel.
 void cross_loops(sim::SceneBuilder& b, int stages) {
@@ -152,7 +162,7 @@ void check_count(int n, const char* what) {
 
 }  // namespace
 
-sim::SceneFile generate_pantograph(int stages, CrossPivots pivots) {
+sim::SceneFile generate_pantograph(int stages, CrossPivots pivots, Snubbers snubbers) {
   check_count(stages, "the number of stages");
   const int N = stages;
   const bool compliant = pivots == CrossPivots::compliant;
@@ -183,6 +193,8 @@ sim::SceneFile generate_pantograph(int stages, CrossPivots pivots) {
     return ((j - 2 * N - 2) % 2 == 1 ? 2 : -2) * kOpen;
   };
   for (int j = 1; j <= (compliant ? 2 : 3) * N + 2; ++j) b.initial_position(joint_name(j), {angle(j)});
+  if (compliant && snubbers == Snubbers::stowed)
+    for (int j = 1; j <= 2 * N + 2; ++j) stowed_snubber(b, j, angle(j), size_factor(N));
   b.run(run(20, 1e-10, 1e-12));
   return b.build();
 }

@@ -14,11 +14,21 @@ namespace unfurl::studies {
 // between full-mass panels that leave the mechanism a tree.
 enum class CrossPivots { rigid, compliant };
 
+// Whether a compliant array's stowed stack rests on snubbers: each hinge
+// stopped at its stowed angle (a JointLimit as stiff as its latch), so it
+// opens but never folds back into the stack. Without them the pins let the
+// inner panels of a 10-stage array fold through the stowed lazy-tongs'
+// branch point within 2 s and hang up there, folded; the rigid loops hold
+// every hinge on the lazy-tongs' path, which never folds back, so rigid
+// arrays have none.
+enum class Snubbers { stowed, none };
+
 // Two chains of a frame and N panels cross-linked into a lazy-tongs with N
 // loops; N = 3 is the reference `pantograph` (same bodies, joints, forces,
-// numbering and initial state), or with compliant pivots
+// numbering and initial state), or with compliant pivots and no snubbers
 // `pantograph_compliant`.
-sim::SceneFile generate_pantograph(int stages, CrossPivots pivots = CrossPivots::rigid);
+sim::SceneFile generate_pantograph(int stages, CrossPivots pivots = CrossPivots::rigid,
+                                   Snubbers snubbers = Snubbers::stowed);
 
 // Chain A of the pantograph with N panels: a tree; N = 3 is `zfold`.
 sim::SceneFile generate_zfold(int panels);

@@ -9,6 +9,7 @@
 #include "unfurl/sim/elements/joint_damper.hpp"
 #include "unfurl/sim/elements/joint_driver.hpp"
 #include "unfurl/sim/elements/joint_friction.hpp"
+#include "unfurl/sim/elements/joint_limit.hpp"
 #include "unfurl/sim/elements/joint_spring.hpp"
 #include "unfurl/sim/elements/joint_stop.hpp"
 #include "unfurl/sim/elements/latch.hpp"

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "unfurl/sim/elements/joint_element.hpp"
+#include "unfurl/sim/elements/push_only_stop.hpp"
 
 namespace unfurl::sim {
 
@@ -32,10 +33,7 @@ class Latch : public JointElement {
   // play, the penetration with it.
   double torque(double q, double dq) const {
     if (free_play == 0) return -stiffness * (q - position) - damping * dq;
-    const double x = penetration(q);
-    if (x == 0) return 0.0;
-    const double tau = -stiffness * x - damping * dq;
-    return tau * x > 0 ? 0.0 : tau;
+    return push_only_torque(penetration(q), dq, stiffness, damping);
   }
   double energy(double q) const { return 0.5 * stiffness * penetration(q) * penetration(q); }
 
