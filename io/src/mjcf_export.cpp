@@ -22,6 +22,9 @@ std::string num(double x) { return sim::format_number(x); }
 
 std::string vec(const sim::Vec3& v) { return num(v.x()) + " " + num(v.y()) + " " + num(v.z()); }
 
+// Where a limit's open end is written: MJCF's range and numerics are finite.
+constexpr double kOpenEnd = 1e10;
+
 // Text safe inside an XML comment.
 std::string comment_text(std::string s) {
   for (std::size_t at = s.find("--"); at != std::string::npos; at = s.find("--")) s.replace(at, 2, "- -");
@@ -87,7 +90,7 @@ class Writer {
     out_ << "  </worldbody>\n";
     tendons();
     equalities();
-    latches();
+    custom_numerics();
     keyframe();
     out_ << "</mujoco>\n";
     out.xml = out_.str();
@@ -229,8 +232,19 @@ class Writer {
     if (k > 0) out_ << " stiffness=\"" << num(k) << "\" springref=\"" << num(k_free / k) << "\"";
     if (damping > 0) out_ << " damping=\"" << num(damping) << "\"";
     if (frictionloss > 0) out_ << " frictionloss=\"" << num(frictionloss) << "\"";
+    if (const sim::JointLimit* l = limit_of(i))
+      out_ << " limited=\"true\" range=\"" << num(end(l->lower)) << " " << num(end(l->upper)) << "\"";
     out_ << "/>\n";
   }
+
+  // The joint's limits (the first, where it has several), or null.
+  const sim::JointLimit* limit_of(int i) const {
+    for (const sim::JointLimit* l : scene_.elements_of<sim::JointLimit>())
+      if (l->joint == i) return l;
+    return nullptr;
+  }
+  // MJCF's range has two finite ends: an open one as far off as kOpenEnd.
+  static double end(double x) { return std::isfinite(x) ? x : std::copysign(kOpenEnd, x); }
 
   // A compliant hinge's pin: three slides and two hinges before the hinge
   // itself, each with its spring and damper, their axes in the body's
@@ -343,13 +357,45 @@ class Writer {
                 "' became a rigid point constraint: its stiffness, damping, rotational stiffness and preload are lost");
   }
 
-  void latches() {
+  // What MJCF cannot say as unfurl does, as custom numerics for a runner to
+  // apply through mjcb_passive: the latches, and the limits' own law.
+  void custom_numerics() {
     const std::vector<const sim::Latch*> latches = scene_.latches();
+    const std::vector<const sim::JointLimit*> limits = scene_.elements_of<sim::JointLimit>();
+    if (latches.empty() && limits.empty()) return;
+    out_ << "  <custom>\n";
+    this->latches(latches);
+    this->limits(limits);
+    out_ << "  </custom>\n";
+  }
+
+  void limits(const std::vector<const sim::JointLimit*>& limits) {
+    if (limits.empty()) return;
+    out_ << "    <!-- A joint's range is MuJoCo's limit, a soft constraint of MuJoCo's own\n"
+         << "         stiffness (solreflimit). unfurl's: beyond an end, -stiffness x - damping dq\n"
+         << "         (x past it), never pulling the joint back onto it. limit:JOINT = lower,\n"
+         << "         upper (an open end +-" << num(kOpenEnd) << "), stiffness, damping; to reproduce\n"
+         << "         unfurl's, clear jnt_limited and apply them through mjcb_passive. -->\n";
+    for (const sim::JointLimit* l : limits) {
+      const std::string& joint = model_.joints[l->joint].name;
+      if (limit_of(l->joint) != l) {
+        unsupported("a second limit on '" + joint + "' (MJCF has one range per joint)");
+        continue;
+      }
+      out_ << "    <numeric name=\"limit:" << joint << "\" data=\"" << num(end(l->lower)) << " " << num(end(l->upper))
+           << " " << num(l->stiffness) << " " << num(l->damping) << "\"/>\n";
+      unsupported("the limits of '" + joint +
+                  "' became MuJoCo's joint range, its own soft constraint (unfurl's kept as custom numeric limit:" +
+                  joint + ")");
+    }
+  }
+
+  void latches(const std::vector<const sim::Latch*>& latches) {
     if (latches.empty()) return;
-    out_ << "  <!-- Not in MJCF: latches. Joint JOINT latches the first time it reaches its\n"
-         << "       position and from then on feels -stiffness (q - position) - damping dq.\n"
-         << "       latch:JOINT = position, stiffness, damping, side (sign of q0 - position;\n"
-         << "       0: engaged from the start); apply them through mjcb_passive. -->\n  <custom>\n";
+    out_ << "    <!-- Not in MJCF: latches. Joint JOINT latches the first time it reaches its\n"
+         << "         position and from then on feels -stiffness (q - position) - damping dq.\n"
+         << "         latch:JOINT = position, stiffness, damping, side (sign of q0 - position;\n"
+         << "         0: engaged from the start); apply them through mjcb_passive. -->\n";
     for (const sim::Latch* l : latches) {
       const double offset = scene_.q0[model_.position_of(l->joint).value] - l->position;
       const double side = offset > 0 ? 1 : offset < 0 ? -1 : 0;
@@ -359,7 +405,6 @@ class Writer {
                   "' (kept as custom numeric latch:" + model_.joints[l->joint].name + ")");
       if (l->free_play > 0) unsupported("the free play of the latch of '" + model_.joints[l->joint].name + "'");
     }
-    out_ << "  </custom>\n";
   }
 
   void keyframe() {
@@ -396,7 +441,7 @@ class Writer {
            dynamic_cast<const sim::JointFriction*>(&e) || dynamic_cast<const sim::Latch*>(&e) ||
            dynamic_cast<const sim::PointSpring*>(&e) || dynamic_cast<const sim::Gravity*>(&e) ||
            dynamic_cast<const sim::AppliedForce*>(&e) || dynamic_cast<const sim::Bushing*>(&e) ||
-           dynamic_cast<const sim::JointCompliance*>(&e);
+           dynamic_cast<const sim::JointCompliance*>(&e) || dynamic_cast<const sim::JointLimit*>(&e);
   }
 
   void unsupported(const std::string& what) {

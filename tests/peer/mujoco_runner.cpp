@@ -18,14 +18,47 @@ struct Latch {
   double engaged_at = NAN;
 };
 
+// unfurl's joint limits (limit:JOINT), in place of MuJoCo's own.
+struct Limit {
+  int qpos = 0, dof = 0;
+  double lower = 0, upper = 0, stiffness = 0, damping = 0;
+  double penetration(const mjData* d) const {
+    const double q = d->qpos[qpos];
+    return q > upper ? q - upper : q < lower ? q - lower : 0.0;
+  }
+};
+
 // The run in progress: mjcb_passive takes no user data.
 std::vector<Latch> latches;
+std::vector<Limit> limits;
 
-// Engaged latches as joint torques, at every stage of the step.
-void latch_torques(const mjModel*, mjData* d) {
+// Engaged latches and the limits as joint torques, at every stage of the
+// step; a limit pushes and never pulls.
+void passive_torques(const mjModel*, mjData* d) {
   for (const Latch& l : latches)
     if (l.engaged)
       d->qfrc_passive[l.dof] += -l.stiffness * (d->qpos[l.qpos] - l.position) - l.damping * d->qvel[l.dof];
+  for (const Limit& l : limits) {
+    const double x = l.penetration(d);
+    if (x == 0) continue;
+    const double tau = -l.stiffness * x - l.damping * d->qvel[l.dof];
+    if (tau * x < 0) d->qfrc_passive[l.dof] += tau;
+  }
+}
+
+// Reads them and turns MuJoCo's own limits on their joints off.
+std::vector<Limit> read_limits(mjModel* m) {
+  std::vector<Limit> out;
+  for (int i = 0; i < m->nnumeric; ++i) {
+    const std::string name = mj_id2name(m, mjOBJ_NUMERIC, i);
+    if (name.rfind("limit:", 0) != 0 || m->numeric_size[i] != 4) continue;
+    const int joint = mj_name2id(m, mjOBJ_JOINT, name.substr(6).c_str());
+    if (joint < 0) continue;
+    m->jnt_limited[joint] = 0;
+    const mjtNum* data = m->numeric_data + m->numeric_adr[i];
+    out.push_back({m->jnt_qposadr[joint], m->jnt_dofadr[joint], data[0], data[1], data[2], data[3]});
+  }
+  return out;
 }
 
 std::vector<Latch> read_latches(const mjModel* m) {
@@ -47,10 +80,11 @@ std::vector<Latch> read_latches(const mjModel* m) {
   return out;
 }
 
-double latch_energy(const mjData* d) {
+double latch_and_limit_energy(const mjData* d) {
   double e = 0;
   for (const Latch& l : latches)
     if (l.engaged) e += 0.5 * l.stiffness * std::pow(d->qpos[l.qpos] - l.position, 2);
+  for (const Limit& l : limits) e += 0.5 * l.stiffness * std::pow(l.penetration(d), 2);
   return e;
 }
 
@@ -74,7 +108,8 @@ MujocoRun run_mujoco(const std::string& xml_path, double t_end, double dt, doubl
   mjData* d = mj_makeData(m);
   if (m->nkey > 0) mj_resetDataKeyframe(m, d, 0);
   latches = read_latches(m);
-  mjcb_passive = latch_torques;
+  limits = read_limits(m);
+  mjcb_passive = passive_torques;
 
   MujocoRun run;
   // Every entry of qpos, named as unfurl names its q: a hinge or slide by
@@ -98,7 +133,7 @@ MujocoRun run_mujoco(const std::string& xml_path, double t_end, double dt, doubl
     std::vector<double> q;
     for (int a : entry_qpos) q.push_back(d->qpos[a]);
     run.q.push_back(std::move(q));
-    run.energy.push_back(d->energy[0] + d->energy[1] + latch_energy(d));
+    run.energy.push_back(d->energy[0] + d->energy[1] + latch_and_limit_energy(d));
   };
   const long steps = std::lround(t_end / dt), per_sample = std::max(1L, std::lround(sample / dt));
   std::vector<mjtNum> qpos(m->nq), qvel(m->nv);
