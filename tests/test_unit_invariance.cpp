@@ -95,6 +95,28 @@ TEST(UnitInvariance, ADrivenCrankInAnyUnits) {
   }
 }
 
+// A joint limit catches the z-fold's first panel hinge and throws it back
+// (at 8.6 s): the same motion in any units, its torque x M L^2.
+TEST(UnitInvariance, AJointLimitInAnyUnits) {
+  const sim::SceneFile zfold = sim::read_builtin_scene(
+      "zfold", {{"limits", "[{joint: j2, lower: 0.6, stiffness: 20, damping: 0.2}]"}, {"run.t_end", "10"}});
+  const sim::RunResult base = sim::simulate(zfold.scene, zfold.scene.run);
+  ASSERT_EQ(base.status, sim::RunStatus::finished);
+  ASSERT_EQ(base.peaks.element.size(), 1u);
+  ASSERT_GT(base.peaks.element[0].value, 1.0);
+  for (const auto& [L, M] : kUnits) {
+    const sim::SceneFile scaled = studies::scale_scene(zfold, L, M);
+    const sim::RunResult run = sim::simulate(scaled.scene, scaled.scene.run);
+    const std::string units = "L = " + std::to_string(L) + ", M = " + std::to_string(M);
+    ASSERT_EQ(run.status, sim::RunStatus::finished) << units;
+    ASSERT_EQ(run.trajectory.samples.size(), base.trajectory.samples.size()) << units;
+    EXPECT_LT(largest_angle_difference(zfold.scene.model, run, base), 1e-7) << units;
+    EXPECT_NEAR(run.peaks.element[0].value / (M * L * L), base.peaks.element[0].value,
+                1e-4 * base.peaks.element[0].value)
+        << units;
+  }
+}
+
 // Flexible panels: the z-fold with beam panels through its first latch-up.
 // The structure is meshed and reduced again in the new units; its angles,
 // latch time and steps follow the original's and its largest deflection
