@@ -9,6 +9,7 @@
 #include "support.hpp"
 #include "unfurl/sim/dynamics.hpp"
 #include "unfurl/sim/elements/bushing.hpp"
+#include "unfurl/sim/elements/joint_compliance.hpp"
 #include "unfurl/sim/summary.hpp"
 #include "unfurl/studies/scene_generators.hpp"
 
@@ -94,6 +95,72 @@ TEST(Generator, CompliantPantographsAreTreesWithAPinPerStage) {
       EXPECT_LT(std::abs(loads.element[c]), 1e-6) << dynamics.load_columns()[c].name;
     }
   EXPECT_EQ(pin_columns, 3 * 7);
+}
+
+TEST(Generator, ThreeStageFlexiblePantographIsTheReferenceScene) {
+  const sim::Scene generated = studies::generate_flexible_pantograph(3).scene;
+  const sim::Scene reference = test::scene_file("pantograph_flexible");
+  expect_same_mechanism(generated, reference);
+  int plates = 0;
+  for (int i = 0; i < generated.model.size(); ++i) {
+    const auto &a = generated.model.bodies[i].flexible, &b = reference.model.bodies[i].flexible;
+    ASSERT_EQ(a == nullptr, b == nullptr) << generated.model.bodies[i].name;
+    if (!a) continue;
+    ++plates;
+    ASSERT_TRUE(a->plate && b->plate);
+    const sim::flexible::PlateBodySpec &x = *a->plate, &y = *b->plate;
+    EXPECT_EQ(x.plate.length_x, y.plate.length_x);
+    EXPECT_EQ(x.plate.length_y, y.plate.length_y);
+    EXPECT_EQ(x.plate.bending_stiffness, y.plate.bending_stiffness);
+    EXPECT_EQ(x.plate.poisson, y.plate.poisson);
+    EXPECT_DOUBLE_EQ(x.plate.mass_per_area, y.plate.mass_per_area);
+    EXPECT_EQ(x.plate.elements_x, y.plate.elements_x);
+    EXPECT_EQ(x.plate.elements_y, y.plate.elements_y);
+    EXPECT_EQ(x.corner, y.corner);
+    EXPECT_EQ(x.root_edge, y.root_edge);
+    EXPECT_EQ(x.hinge_lines, y.hinge_lines);
+    EXPECT_EQ(x.normal_modes, y.normal_modes);
+    ASSERT_EQ(x.damping.bands.size(), y.damping.bands.size());
+    for (std::size_t k = 0; k < x.damping.bands.size(); ++k) {
+      EXPECT_EQ(x.damping.bands[k].up_to_hz, y.damping.bands[k].up_to_hz);
+      EXPECT_EQ(x.damping.bands[k].ratio, y.damping.bands[k].ratio);
+    }
+    // The same nodes, in the same order: the same reduction.
+    EXPECT_EQ(x.attachments, y.attachments) << generated.model.bodies[i].name;
+    EXPECT_EQ(a->modes(), b->modes());
+    EXPECT_TRUE(a->frequency_hz.isApprox(b->frequency_hz, 1e-12));
+  }
+  EXPECT_EQ(plates, 6);
+  const std::vector<const sim::JointCompliance*> a = generated.elements_of<sim::JointCompliance>(),
+                                                 b = reference.elements_of<sim::JointCompliance>();
+  ASSERT_EQ(a.size(), 3u);
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    EXPECT_EQ(a[k]->joint, b[k]->joint);
+    EXPECT_EQ(a[k]->stiffnesses(), b[k]->stiffnesses());
+    EXPECT_EQ(a[k]->dampings(), b[k]->dampings());
+  }
+  ASSERT_EQ(generated.sensors.size(), 1u);
+  EXPECT_EQ(generated.sensors[0].body, reference.sensors[0].body);
+  EXPECT_EQ(generated.sensors[0].point, reference.sensors[0].point);
+  EXPECT_EQ(generated.regulator.v_max, reference.regulator.v_max);
+}
+
+TEST(Generator, FlexiblePantographsCloseTheirLoopsThroughThePlates) {
+  const sim::Scene scene = studies::generate_flexible_pantograph(6).scene;
+  EXPECT_EQ(scene.model.size(), 4 * 6 + 2);
+  EXPECT_EQ(scene.loops.size(), 6u);
+  EXPECT_EQ(scene.elements_of<sim::JointCompliance>().size(), 6u);
+  int plates = 0;
+  for (const sim::Body& body : scene.model.bodies) plates += body.flexible != nullptr;
+  EXPECT_EQ(plates, 12);
+  // Each panel weighs the rigid array's: chain A's plate and its pin's two
+  // halves, chain B's plate.
+  const sim::Scene rigid = studies::generate_pantograph(6).scene;
+  double mass = 0, rigid_mass = 0;
+  for (const sim::Body& body : scene.model.bodies) mass += body.mass;
+  for (const sim::Body& body : rigid.model.bodies) rigid_mass += body.mass;
+  EXPECT_NEAR(mass, rigid_mass, 1e-12 * rigid_mass);
 }
 
 TEST(Generator, ThreePanelZfoldIsTheReferenceScene) {

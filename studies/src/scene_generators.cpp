@@ -1,10 +1,14 @@
 #include "unfurl/studies/scene_generators.hpp"
 
 #include <cmath>
+#include <functional>
+#include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "unfurl/sim/elements/all.hpp"
+#include "unfurl/sim/flexible/flexible_body.hpp"
 #include "unfurl/sim/scene_builder.hpp"
 
 namespace unfurl::studies {
@@ -44,10 +48,17 @@ void bus(sim::SceneBuilder& b) {
 
 std::string joint_name(int j) { return "j" + std::to_string(j); }
 
+// Panel k (1-based) of a chain, by its name: its body and its drawing.
+using PanelMaker = std::function<std::pair<sim::Body, sim::Visual>(const std::string& name, int k)>;
+
+PanelMaker rigid_panels(double share) {
+  return [share](const std::string& name, int) { return std::pair(box(name, kPanelMass, kPanelInertia, share), mesh("panel")); };
+}
+
 // One chain of a frame and `panels` panels at x; joints named j<first>...
-// mirror = +1 for chain A, -1 for chain B; share: the mass share of panels.
+// mirror = +1 for chain A, -1 for chain B.
 void chain(sim::SceneBuilder& b, const std::string& label, double x, double mirror, int panels, int first_joint,
-           double panel_share) {
+           const PanelMaker& panel) {
   const std::string frame = "frame_" + label;
   b.body(box(frame, kFrameMass, kFrameInertia, 1.0), "bus",
          sim::joints::revolute(joint_name(first_joint), sim::Vec3::UnitX(), sim::Vec3(x, 0.75, 0),
@@ -58,10 +69,11 @@ void chain(sim::SceneBuilder& b, const std::string& label, double x, double mirr
   for (int k = 1; k <= panels; ++k) {
     const double p = mirror * pivot_offset(k);
     const std::string name = "panel_" + label + std::to_string(k);
-    b.body(box(name, kPanelMass, kPanelInertia, panel_share), parent,
+    const auto [body, visual] = panel(name, k);
+    b.body(body, parent,
            sim::joints::revolute(joint_name(first_joint + k), sim::Vec3::UnitX(), sim::Vec3(0, parent_half, parent_p),
                                  sim::Vec3(0, -kPanelHalf, p)),
-           mesh("panel"));
+           visual);
     parent = name;
     parent_half = kPanelHalf;
     parent_p = p;
@@ -147,6 +159,86 @@ void cross_pins(sim::SceneBuilder& b, int stages, double factor) {
   }
 }
 
+// Joint j (1-based) of an N-stage pantograph 0.01 rad off the stowed stack,
+// on the lazy-tongs path: chain A (-a, 2a, -2a, ...), chain B its negative,
+// images (2a, -2a, ...), at a = kOpen.
+double stowed_angle(int N, int j) {
+  if (j == 1) return -kOpen;
+  if (j <= N + 1) return (j % 2 == 0 ? 2 : -2) * kOpen;
+  if (j == N + 2) return kOpen;
+  if (j <= 2 * N + 2) return ((j - N - 1) % 2 == 0 ? -2 : 2) * kOpen;
+  return ((j - 2 * N - 2) % 2 == 1 ? 2 : -2) * kOpen;
+}
+
+// The flexible panels of pantograph_flexible.yaml: zfold_plates.yaml's
+// aluminium honeycomb plate (0.9 x 1.2 m, D = 7435 N m, nu = 0.33, meshed
+// 6 x 8), held along its inboard hinge line with its outboard one tied
+// rigid, four fixed-interface modes, damped by Adams' bands. Panel k of a
+// chain carries its next panel's hinge (k < N) and its cross pivot, a node
+// at the middle of its edge toward the other chain (x = +-kChainX) on a
+// bracket off the mid-plane; the outer chain A panel carries the tip sensor.
+// Each half of a cross pivot's pin (a chain A panel's plate is as much
+// lighter as the pin weighs, so that with it the panel weighs kPanelMass).
+constexpr double kPinHalfMass = 0.01;
+const sim::Vec3 kPinHalfInertia(1e-5, 1e-5, 1e-5);
+
+PanelMaker plate_panels(int stages, double mirror, double mass) {
+  return [=](const std::string& name, int k) {
+    namespace flex = sim::flexible;
+    flex::PlateBodySpec spec;
+    spec.plate.length_x = 2 * kChainX;
+    spec.plate.length_y = 2 * kPanelHalf;
+    spec.plate.bending_stiffness = 7435;
+    spec.plate.poisson = 0.33;
+    spec.plate.mass_per_area = mass / (spec.plate.length_x * spec.plate.length_y);
+    spec.plate.elements_x = 6;
+    spec.plate.elements_y = 8;
+    spec.corner = sim::Vec3(-kChainX, -kPanelHalf, 0);
+    spec.root_edge = flex::PlateEdge::y0;
+    spec.hinge_lines = {flex::PlateEdge::y1};
+    spec.normal_modes = 4;
+    spec.damping.bands = {{100, 0.005}, {1000, 0.1}, {std::numeric_limits<double>::infinity(), 0.5}};
+    const double p = mirror * pivot_offset(k);
+    if (mirror > 0 && k == stages) spec.attachments.emplace_back(0, kPanelHalf, 0);
+    if (k < stages) spec.attachments.emplace_back(0, kPanelHalf, p);
+    spec.attachments.emplace_back(mirror * kChainX, 0, p);
+    sim::Body body;
+    body.name = name;
+    body.flexible = std::make_shared<const flex::FlexibleBody>(flex::plate_body(spec));
+    return std::pair(body, mesh("flexible_panel"));
+  };
+}
+
+// The flexible array's cross pivots: each pin's half on chain A's panel
+// (fixed at its node) and its image turning on chain B's panel on a
+// compliant hinge (pantograph_compliant.yaml's pins, scaled with the size
+// like the springs), a loop closing the two through the plates' bending.
+void flexible_cross_pivots(sim::SceneBuilder& b, int stages, double factor) {
+  const int N = stages;
+  for (int k = 1; k <= N; ++k) {
+    sim::Joint hinge = sim::joints::revolute(joint_name(2 * N + 2 + k), sim::Vec3::UnitX(),
+                                             sim::Vec3(-kChainX, 0, -pivot_offset(k)), sim::Vec3::Zero());
+    hinge.compliant = true;
+    b.body(box("image_A" + std::to_string(k), kPinHalfMass, kPinHalfInertia, 1.0), "panel_B" + std::to_string(k), hinge);
+    auto pin = std::make_shared<sim::JointCompliance>();
+    pin->joint = b.joint_index(hinge.name, "compliance");
+    pin->radial = pin->axial = factor * 1e6;
+    pin->tilt = factor * 1e4;
+    pin->radial_damping = pin->axial_damping = factor * 100;
+    pin->tilt_damping = factor * 3;
+    b.element(pin);
+  }
+  for (int k = 1; k <= N; ++k) {
+    sim::Joint fixed;
+    fixed.name = "p" + std::to_string(k);
+    fixed.type = sim::JointType::fixed;
+    fixed.parent_point = sim::Vec3(kChainX, 0, pivot_offset(k));
+    b.body(box("pivot_A" + std::to_string(k), kPinHalfMass, kPinHalfInertia, 1.0), "panel_A" + std::to_string(k), fixed);
+  }
+  for (int k = 1; k <= N; ++k)
+    b.loop("A" + std::to_string(k), "pivot_A" + std::to_string(k), "image_A" + std::to_string(k));
+}
+
 sim::RunSettings run(double t_end, double rtol, double atol) {
   sim::RunSettings r;
   r.t_end = t_end;
@@ -173,8 +265,8 @@ sim::SceneFile generate_pantograph(int stages, CrossPivots pivots, Snubbers snub
                 : "The pantograph solar array with " + count + " panel pairs (" + count + " loops).");
   b.source("generated");
   bus(b);
-  chain(b, "A", -kChainX, 1, N, 1, compliant ? 1.0 : 0.5);
-  chain(b, "B", kChainX, -1, N, N + 2, 1.0);
+  chain(b, "A", -kChainX, 1, N, 1, rigid_panels(compliant ? 1.0 : 0.5));
+  chain(b, "B", kChainX, -1, N, N + 2, rigid_panels(1.0));
   chain_forces(b, 1, N + 1, -1, size_factor(N));
   chain_forces(b, N + 2, N + 1, 1, size_factor(N));
   chain_latches(b, 1, N + 1, size_factor(N));
@@ -183,19 +275,39 @@ sim::SceneFile generate_pantograph(int stages, CrossPivots pivots, Snubbers snub
     cross_pins(b, N, size_factor(N));
   else
     cross_loops(b, N);
-  // On the lazy-tongs path: chain A (-a, 2a, -2a, ...), chain B its
-  // negative, images (2a, -2a, ...).
-  auto angle = [&](int j) {  // joint j (1-based) at a = kOpen
-    if (j == 1) return -kOpen;
-    if (j <= N + 1) return (j % 2 == 0 ? 2 : -2) * kOpen;
-    if (j == N + 2) return kOpen;
-    if (j <= 2 * N + 2) return ((j - N - 1) % 2 == 0 ? -2 : 2) * kOpen;
-    return ((j - 2 * N - 2) % 2 == 1 ? 2 : -2) * kOpen;
-  };
-  for (int j = 1; j <= (compliant ? 2 : 3) * N + 2; ++j) b.initial_position(joint_name(j), {angle(j)});
+  for (int j = 1; j <= (compliant ? 2 : 3) * N + 2; ++j) b.initial_position(joint_name(j), {stowed_angle(N, j)});
   if (compliant && snubbers == Snubbers::stowed)
-    for (int j = 1; j <= 2 * N + 2; ++j) stowed_snubber(b, j, angle(j), size_factor(N));
+    for (int j = 1; j <= 2 * N + 2; ++j) stowed_snubber(b, j, stowed_angle(N, j), size_factor(N));
   b.run(run(20, 1e-10, 1e-12));
+  return b.build();
+}
+
+sim::SceneFile generate_flexible_pantograph(int stages) {
+  check_count(stages, "the number of stages");
+  const int N = stages;
+  const std::string count = std::to_string(N);
+  sim::SceneBuilder b("pantograph_flexible_" + count, "The pantograph solar array with " + count +
+                                                          " pairs of flexible plate panels, its loops closing "
+                                                          "through their bending at compliant cross pivots.");
+  b.source("generated");
+  bus(b);
+  chain(b, "A", -kChainX, 1, N, 1, plate_panels(N, 1, kPanelMass - 2 * kPinHalfMass));
+  chain(b, "B", kChainX, -1, N, N + 2, plate_panels(N, -1, kPanelMass));
+  flexible_cross_pivots(b, N, size_factor(N));
+  chain_forces(b, 1, N + 1, -1, size_factor(N));
+  chain_forces(b, N + 2, N + 1, 1, size_factor(N));
+  chain_latches(b, 1, N + 1, size_factor(N));
+  chain_latches(b, N + 2, N + 1, size_factor(N));
+  sim::Sensor tip;
+  tip.name = "tip";
+  tip.point = sim::Vec3(0, kPanelHalf, 0);
+  b.sensor(tip, "panel_A" + count);
+  // As the rigid array's (cross_loops).
+  sim::RegulatorSettings regulator;
+  if (N == 3) regulator.v_max = 2000;
+  b.regulator(regulator);
+  for (int j = 1; j <= 3 * N + 2; ++j) b.initial_position(joint_name(j), {stowed_angle(N, j)});
+  b.run(run(20, 1e-8, 1e-10));
   return b.build();
 }
 
@@ -205,7 +317,7 @@ sim::SceneFile generate_zfold(int panels) {
   sim::SceneBuilder b("zfold_" + std::to_string(N), "A Z-folded wing of a frame and " + std::to_string(N) + " panels.");
   b.source("generated");
   bus(b);
-  chain(b, "A", -kChainX, 1, N, 1, 1.0);
+  chain(b, "A", -kChainX, 1, N, 1, rigid_panels(1.0));
   chain_forces(b, 1, N + 1, -1, 1.0);
   chain_latches(b, 1, N + 1, 1.0);
   b.initial_position("j1", {-M_PI / 2});

@@ -30,6 +30,14 @@ enum class Snubbers { stowed, none };
 sim::SceneFile generate_pantograph(int stages, CrossPivots pivots = CrossPivots::rigid,
                                    Snubbers snubbers = Snubbers::stowed);
 
+// The pantograph with N pairs of flexible plate panels, its N loops closing
+// through their bending at compliant cross pivots; N = 3 is the built-in
+// `pantograph_flexible`. Its springs, latches and pins are scaled with the
+// size as the rigid and compliant arrays' are; its plates are the same
+// panels at every size. Its loops hold every hinge on the lazy-tongs'
+// path, as the rigid array's do, so it needs no snubbers.
+sim::SceneFile generate_flexible_pantograph(int stages);
+
 // Chain A of the pantograph with N panels: a tree; N = 3 is `zfold`.
 sim::SceneFile generate_zfold(int panels);
 
