@@ -146,3 +146,32 @@ def test_the_builder_checks_as_a_file_is_checked():
 def test_an_angle_that_looks_like_degrees_is_warned_about():
     with pytest.warns(UserWarning, match=r"initial.q.j1: -90 rad is more than a turn"):
         unfurl.load("zfold", set={"initial.q.j1": -90})
+
+
+def test_generated_scenes_are_the_reference_ones_at_three_stages():
+    zfold = unfurl.generate("zfold", 3)
+    assert zfold.joints == unfurl.load("zfold").joints
+    a = unfurl.simulate(zfold, t_end=2)
+    b = unfurl.simulate("zfold", t_end=2)
+    for j in ("j1", "j2", "j3", "j4"):
+        assert abs(a.trajectory["q." + j][-1] - b.trajectory["q." + j][-1]) < 1e-9
+    flexible = unfurl.generate("pantograph", 3, flexible=True)
+    assert flexible.joints == unfurl.load("pantograph_flexible").joints
+    assert flexible.loops == ["A1", "A2", "A3"]
+    ten = unfurl.generate("pantograph", 10, compliant=True)
+    assert len(ten.bodies) == 22 and ten.loops == []
+    assert "limits:" in ten.to_yaml()
+    assert "limits:" not in unfurl.generate("pantograph", 10, compliant=True, snubbers=False).to_yaml()
+
+
+def test_a_bad_generated_scene_is_refused_by_name():
+    with pytest.raises(ValueError, match="'kite' is not a generated scene"):
+        unfurl.generate("kite", 3)
+    with pytest.raises(ValueError, match="from 1 to 1000000"):
+        unfurl.generate("pantograph", 0)
+    with pytest.raises(TypeError, match="whole number"):
+        unfurl.generate("chain", 2.5)
+    with pytest.raises(ValueError, match="two different arrays"):
+        unfurl.generate("pantograph", 4, compliant=True, flexible=True)
+    with pytest.raises(ValueError, match="pantograph only"):
+        unfurl.generate("zfold", 4, flexible=True)

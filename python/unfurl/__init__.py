@@ -26,7 +26,7 @@ SceneError.__doc__ = ("A scene or study that cannot be read or is not valid: the
 
 __all__ = [
     "SceneError", "Scene", "SceneBuilder", "Table", "Run", "Modes", "Cases",
-    "load", "builtin_scenes", "simulate", "modes", "study", "render_frame", "plots",
+    "load", "builtin_scenes", "generate", "simulate", "modes", "study", "render_frame", "plots",
 ]
 
 
@@ -122,6 +122,24 @@ def load(name="pantograph", set=None):
     if not isinstance(name, (str, os.PathLike)):
         raise TypeError(f"load: expected a path or a built-in name, got {type(name).__name__}")
     return Scene(_unfurl._load(os.fspath(name), _pairs(set)))
+
+
+def generate(kind, n, compliant=False, flexible=False, snubbers=True):
+    """A scene of any size, as `unfurl generate` writes it.
+
+    kind: "pantograph" (n stages: 3n + 2 bodies, n loops; compliant=True
+    for cross-links on bushings, a tree whose hinges stand on snubbers
+    unless snubbers=False; flexible=True for plate panels whose loops close
+    through their bending), "zfold" (n panels), "chain" (n links), "rods"
+    (n parallel rods) or "beam" (n segments). n = 3 gives the built-in
+    pantograph, pantograph_flexible and zfold. Raises ValueError on a bad
+    kind, size or combination.
+    """
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)):
+        raise TypeError(f"generate: the size is a whole number, got {n!r}")
+    if not 1 <= n <= 1_000_000:
+        raise ValueError(f"generate: the size runs from 1 to 1000000, got {n}")
+    return Scene(_unfurl._generate(str(kind), int(n), bool(compliant), bool(flexible), bool(snubbers)))
 
 
 class SceneBuilder:
