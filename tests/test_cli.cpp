@@ -254,6 +254,21 @@ TEST(Cli, GenerateWritesASceneThatSimulates) {
   EXPECT_NE(bad.output.find("--panels"), std::string::npos) << bad.output;
 }
 
+TEST(Cli, GenerateWritesAFlexibleArrayAndRefusesMixedOptions) {
+  const fs::path dir = temp_dir();
+  const fs::path file = dir / "pantograph_flexible_4.yaml";
+  ASSERT_EQ(run("generate pantograph --stages 4 --flexible -o " + file.string()).code, 0);
+  const sim::Scene scene = sim::load_scene_file(file.string());
+  EXPECT_EQ(scene.loops.size(), 4u);
+  EXPECT_EQ(scene.model.size(), 4 * 4 + 2);
+  const Outcome both = run("generate pantograph --stages 4 --flexible --compliant");
+  EXPECT_EQ(both.code, 64);
+  EXPECT_NE(both.output.find("two different arrays"), std::string::npos) << both.output;
+  const Outcome zfold = run("generate zfold --panels 4 --flexible");
+  EXPECT_EQ(zfold.code, 64);
+  EXPECT_NE(zfold.output.find("pantograph only"), std::string::npos) << zfold.output;
+}
+
 // The compliance suite's quick cases: the compliant pantograph's peak
 // hinge force against its pins' stiffness, nominal and off-nominal, and
 // the rigid pantograph's; the off-nominal force grows with the stiffness

@@ -20,24 +20,6 @@ std::vector<std::string> names_of(int n, const std::function<std::string(int)>& 
   return out;
 }
 
-// `unfurl generate`'s scenes, by the same names and sizes.
-sim::SceneFile generated(const std::string& kind, int n, bool compliant, bool flexible, bool snubbers) {
-  if ((compliant || flexible || !snubbers) && kind != "pantograph")
-    throw std::invalid_argument("compliant, flexible and snubbers apply to a pantograph only");
-  if (compliant && flexible)
-    throw std::invalid_argument("compliant and flexible are two different arrays: give one");
-  if (!snubbers && !compliant) throw std::invalid_argument("snubbers=False applies to a compliant pantograph only");
-  if (kind == "pantograph" && flexible) return studies::generate_flexible_pantograph(n);
-  if (kind == "pantograph")
-    return studies::generate_pantograph(n, compliant ? studies::CrossPivots::compliant : studies::CrossPivots::rigid,
-                                        snubbers ? studies::Snubbers::stowed : studies::Snubbers::none);
-  if (kind == "zfold") return studies::generate_zfold(n);
-  if (kind == "chain") return studies::generate_chain(n);
-  if (kind == "rods") return studies::generate_parallel_rods(n);
-  if (kind == "beam") return studies::generate_beam(n);
-  throw std::invalid_argument("'" + kind + "' is not a generated scene: pantograph, zfold, chain, rods or beam");
-}
-
 }  // namespace
 
 void bind_scene(py::module_& m) {
@@ -96,7 +78,7 @@ void bind_scene(py::module_& m) {
   });
   m.def("_builtin_scenes", [] { return sim::builtin_scene_names(); });
   m.def("_generate", [](const std::string& kind, int n, bool compliant, bool flexible, bool snubbers) {
-    return PyScene{generated(kind, n, compliant, flexible, snubbers)};
+    return PyScene{studies::generate_scene(kind, n, {compliant, flexible, snubbers})};
   });
 }
 

@@ -52,7 +52,9 @@ std::string joint_name(int j) { return "j" + std::to_string(j); }
 using PanelMaker = std::function<std::pair<sim::Body, sim::Visual>(const std::string& name, int k)>;
 
 PanelMaker rigid_panels(double share) {
-  return [share](const std::string& name, int) { return std::pair(box(name, kPanelMass, kPanelInertia, share), mesh("panel")); };
+  return [share](const std::string& name, int) {
+    return std::pair(box(name, kPanelMass, kPanelInertia, share), mesh("panel"));
+  };
 }
 
 // One chain of a frame and `panels` panels at x; joints named j<first>...
@@ -120,6 +122,14 @@ void stowed_snubber(sim::SceneBuilder& b, int j, double stowed, double factor) {
   b.element(snubber);
 }
 
+// The reference pantograph's bandwidth (SCENES.md); other sizes, whose
+// latches ring at other rates, take the automatic one from their own.
+sim::RegulatorSettings cross_link_regulator(int stages) {
+  sim::RegulatorSettings regulator;
+  if (stages == 3) regulator.v_max = 2000;
+  return regulator;
+}
+
 // The rigid cross-links: each chain A panel's other half, its image, turns
 // on the chain B panel at the pivot, and a loop closes it on the panel.
 void cross_loops(sim::SceneBuilder& b, int stages) {
@@ -132,11 +142,7 @@ void cross_loops(sim::SceneBuilder& b, int stages) {
   }
   for (int k = 1; k <= N; ++k)
     b.loop("A" + std::to_string(k), "panel_A" + std::to_string(k), "image_A" + std::to_string(k));
-  // The reference pantograph's bandwidth (SCENES.md); other sizes, whose
-  // latches ring at other rates, take the automatic one from their own.
-  sim::RegulatorSettings regulator;
-  if (N == 3) regulator.v_max = 2000;
-  b.regulator(regulator);
+  b.regulator(cross_link_regulator(N));
 }
 
 // The compliant cross-link pins of pantograph_compliant.yaml: a bushing at
@@ -170,6 +176,11 @@ double stowed_angle(int N, int j) {
   return ((j - 2 * N - 2) % 2 == 1 ? 2 : -2) * kOpen;
 }
 
+// Each half of a cross pivot's pin (a chain A panel's plate is as much
+// lighter as the pin weighs, so that with it the panel weighs kPanelMass).
+constexpr double kPinHalfMass = 0.01;
+const sim::Vec3 kPinHalfInertia(1e-5, 1e-5, 1e-5);
+
 // The flexible panels of pantograph_flexible.yaml: zfold_plates.yaml's
 // aluminium honeycomb plate (0.9 x 1.2 m, D = 7435 N m, nu = 0.33, meshed
 // 6 x 8), held along its inboard hinge line with its outboard one tied
@@ -177,11 +188,6 @@ double stowed_angle(int N, int j) {
 // chain carries its next panel's hinge (k < N) and its cross pivot, a node
 // at the middle of its edge toward the other chain (x = +-kChainX) on a
 // bracket off the mid-plane; the outer chain A panel carries the tip sensor.
-// Each half of a cross pivot's pin (a chain A panel's plate is as much
-// lighter as the pin weighs, so that with it the panel weighs kPanelMass).
-constexpr double kPinHalfMass = 0.01;
-const sim::Vec3 kPinHalfInertia(1e-5, 1e-5, 1e-5);
-
 PanelMaker plate_panels(int stages, double mirror, double mass) {
   return [=](const std::string& name, int k) {
     namespace flex = sim::flexible;
@@ -219,7 +225,8 @@ void flexible_cross_pivots(sim::SceneBuilder& b, int stages, double factor) {
     sim::Joint hinge = sim::joints::revolute(joint_name(2 * N + 2 + k), sim::Vec3::UnitX(),
                                              sim::Vec3(-kChainX, 0, -pivot_offset(k)), sim::Vec3::Zero());
     hinge.compliant = true;
-    b.body(box("image_A" + std::to_string(k), kPinHalfMass, kPinHalfInertia, 1.0), "panel_B" + std::to_string(k), hinge);
+    b.body(box("image_A" + std::to_string(k), kPinHalfMass, kPinHalfInertia, 1.0), "panel_B" + std::to_string(k),
+           hinge);
     auto pin = std::make_shared<sim::JointCompliance>();
     pin->joint = b.joint_index(hinge.name, "compliance");
     pin->radial = pin->axial = factor * 1e6;
@@ -233,7 +240,8 @@ void flexible_cross_pivots(sim::SceneBuilder& b, int stages, double factor) {
     fixed.name = "p" + std::to_string(k);
     fixed.type = sim::JointType::fixed;
     fixed.parent_point = sim::Vec3(kChainX, 0, pivot_offset(k));
-    b.body(box("pivot_A" + std::to_string(k), kPinHalfMass, kPinHalfInertia, 1.0), "panel_A" + std::to_string(k), fixed);
+    b.body(box("pivot_A" + std::to_string(k), kPinHalfMass, kPinHalfInertia, 1.0), "panel_A" + std::to_string(k),
+           fixed);
   }
   for (int k = 1; k <= N; ++k)
     b.loop("A" + std::to_string(k), "pivot_A" + std::to_string(k), "image_A" + std::to_string(k));
@@ -302,13 +310,30 @@ sim::SceneFile generate_flexible_pantograph(int stages) {
   tip.name = "tip";
   tip.point = sim::Vec3(0, kPanelHalf, 0);
   b.sensor(tip, "panel_A" + count);
-  // As the rigid array's (cross_loops).
-  sim::RegulatorSettings regulator;
-  if (N == 3) regulator.v_max = 2000;
-  b.regulator(regulator);
+  b.regulator(cross_link_regulator(N));
   for (int j = 1; j <= 3 * N + 2; ++j) b.initial_position(joint_name(j), {stowed_angle(N, j)});
   b.run(run(20, 1e-8, 1e-10));
   return b.build();
+}
+
+sim::SceneFile generate_scene(const std::string& kind, int size, const ArrayOptions& options) {
+  if ((options.compliant || options.flexible || !options.snubbers) && kind != "pantograph")
+    throw std::invalid_argument("the compliant, flexible and snubber options (--compliant, --flexible, "
+                                "--no-snubbers) apply to a pantograph only");
+  if (options.compliant && options.flexible)
+    throw std::invalid_argument("compliant and flexible (--compliant, --flexible) are two different arrays: give one");
+  if (!options.snubbers && !options.compliant)
+    throw std::invalid_argument(
+        "leaving the snubbers out (--no-snubbers, snubbers=False) applies to a compliant pantograph only");
+  if (kind == "pantograph" && options.flexible) return generate_flexible_pantograph(size);
+  if (kind == "pantograph")
+    return generate_pantograph(size, options.compliant ? CrossPivots::compliant : CrossPivots::rigid,
+                               options.snubbers ? Snubbers::stowed : Snubbers::none);
+  if (kind == "zfold") return generate_zfold(size);
+  if (kind == "chain") return generate_chain(size);
+  if (kind == "rods") return generate_parallel_rods(size);
+  if (kind == "beam") return generate_beam(size);
+  throw std::invalid_argument("'" + kind + "' is not a generated scene: pantograph, zfold, chain, rods or beam");
 }
 
 sim::SceneFile generate_zfold(int panels) {

@@ -3,6 +3,7 @@
 // pairs, the z-fold with N panels, and a plain chain of N links.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "unfurl/sim/scene_file.hpp"
@@ -37,6 +38,16 @@ sim::SceneFile generate_pantograph(int stages, CrossPivots pivots = CrossPivots:
 // panels at every size. Its loops hold every hinge on the lazy-tongs'
 // path, as the rigid array's do, so it needs no snubbers.
 sim::SceneFile generate_flexible_pantograph(int stages);
+
+// A generated scene by kind and size, as `unfurl generate` and Python's
+// unfurl.generate name them: "pantograph" (stages; `compliant` or
+// `flexible`, and a compliant one's `snubbers`), "zfold" (panels), "chain"
+// (links), "rods" or "beam" (segments). Throws std::invalid_argument
+// naming a bad kind, size or combination of options.
+struct ArrayOptions {
+  bool compliant = false, flexible = false, snubbers = true;
+};
+sim::SceneFile generate_scene(const std::string& kind, int size, const ArrayOptions& options = {});
 
 // Chain A of the pantograph with N panels: a tree; N = 3 is `zfold`.
 sim::SceneFile generate_zfold(int panels);
