@@ -66,9 +66,16 @@ struct InterruptedOutcome {
 
 // `ready`, when given, is a shell condition polled every 50 ms after that
 // (for up to ten minutes) before the signal: what the command must have
-// done first, however slow the build (a sanitizer's) makes it.
+// done first, however slow the build (a sanitizer's) makes it. The signal
+// also waits until the command catches SIGINT: a background job starts
+// with SIGINT ignored, so one sent before its handler is installed (a
+// loaded machine starting a sanitizer build) would be lost and the
+// command would run to its end.
 inline InterruptedOutcome interrupt_after(const std::string& command, double seconds, const std::string& ready = "") {
-  const std::string wait_ready = ready.empty() ? "" : "; for i in $(seq 12000); do " + ready + " && break; sleep 0.05; done";
+  const std::string catches_sigint = "grep -Eq '^SigCgt:.*[2367abef]$' /proc/$pid/status";
+  const std::string condition = ready.empty() ? catches_sigint : "{ " + ready + "; } && " + catches_sigint;
+  const std::string wait_ready = "; for i in $(seq 12000); do kill -0 $pid 2>/dev/null || break; " + condition +
+                                 " && break; sleep 0.05; done";
   const CommandOutcome o = run_command("{ (" + command + ") & pid=$!; sleep " + std::to_string(seconds) + wait_ready +
                                       "; kill -INT $pid; start=$(date +%s%N); wait $pid; code=$?; "
                                       "echo \"exit $code after $(( ($(date +%s%N) - start) / 1000000 )) ms\"; }");
