@@ -35,7 +35,7 @@ void elements_section(GuiState& state, Requests& requests) {
     for (std::size_t k = 0; k < scene.elements.size(); ++k) {
       const sim::ForceElement& e = *scene.elements[k];
       if (e.list() != lists[n]) continue;
-      const std::vector<sim::ElementParameter> parameters = e.parameters();
+      const std::vector<sim::ElementParameter> parameters = e.parameters(scene.model);
       const std::string path = scene.element_path(k);
       ImGui::PushID(static_cast<int>(k));
       const FailureLock lock(state, path);

@@ -29,7 +29,7 @@ void AppliedForce::add_forces(const ElementState& s, ElementForces& out) const {
                    out);
 }
 
-std::vector<ElementParameter> AppliedForce::parameters() const {
+std::vector<ElementParameter> AppliedForce::parameters(const Model& /*model*/) const {
   std::vector<ElementParameter> p;
   const char* axes[] = {"x", "y", "z"};
   for (int a = 0; a < 3; ++a)

@@ -118,7 +118,7 @@ void Bushing::load_values(const ElementState& s, double* values) const {
   values[6] = 0.5 * d.x.dot(stiffness * d.x) - preload.dot(d.x);
 }
 
-std::vector<ElementParameter> Bushing::parameters() const {
+std::vector<ElementParameter> Bushing::parameters(const Model& /*model*/) const {
   std::vector<ElementParameter> p;
   if (!stiffness.isDiagonal(0) || !damping.isDiagonal(0)) return p;  // the GUI edits the diagonal form
   for (int k = 0; k < 6; ++k) {

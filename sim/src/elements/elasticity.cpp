@@ -58,7 +58,7 @@ void Elasticity::load_values(const ElementState& s, double* values) const {
   values[1] = flexible_of(s.model, body_).largest_deflection(&s.q[PositionIndex{s.model.first_elastic_position[body_]}]);
 }
 
-std::vector<ElementParameter> Elasticity::parameters() const {
+std::vector<ElementParameter> Elasticity::parameters(const Model& /*model*/) const {
   const std::optional<flexible::PlateBodySpec>& plate = flexible_->plate;
   std::vector<ElementParameter> out;
   const std::optional<flexible::FemBodySpec>& fem = flexible_->fem;

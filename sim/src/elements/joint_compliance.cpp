@@ -67,7 +67,7 @@ void JointCompliance::validate(const Scene& scene, const std::string& field) con
     if (!std::isfinite(c) || c < 0) throw SceneInvalid(field + "." + name, "must not be negative");
 }
 
-std::vector<ElementParameter> JointCompliance::parameters() const {
+std::vector<ElementParameter> JointCompliance::parameters(const Model& /*model*/) const {
   return {{"radial", "radial stiffness [N/m]", radial, 0.1 * radial, 0, 1e15, "the pin's stiffness across the axis"},
           {"axial", "axial stiffness [N/m]", axial, 0.1 * axial, 0, 1e15, "the pin's stiffness along the axis"},
           {"tilt", "tilt stiffness [N m/rad]", tilt, 0.1 * tilt, 0, 1e15, "the pin's stiffness against tilting"},

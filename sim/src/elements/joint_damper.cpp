@@ -24,8 +24,9 @@ void JointDamper::load_values(const ElementState& s, double* values) const {
   values[0] = -damping * s.w[w_index(s.model)];
 }
 
-std::vector<ElementParameter> JointDamper::parameters() const {
-  return {{"damping", "damping [N m s/rad]", damping, 0.001, 0, 1e9, "viscous damping c of the hinge"}};
+std::vector<ElementParameter> JointDamper::parameters(const Model& model) const {
+  return {
+      {"damping", "damping [" + damping_unit(model) + "]", damping, 0.001, 0, 1e9, "viscous damping c of the hinge"}};
 }
 
 void JointDamper::validate(const Scene& scene, const std::string& field) const {

@@ -60,9 +60,10 @@ void JointDriver::validate(const Scene& scene, const std::string& field) const {
                          "joint '" + j.name + "' has a latch: a driven joint's motion is the driver's");
 }
 
-std::vector<ElementParameter> JointDriver::parameters() const {
+std::vector<ElementParameter> JointDriver::parameters(const Model& model) const {
   const bool move = profile == Profile::move;
-  return {{"amount", move ? "move by [rad or m]" : "final rate [rad/s or m/s]", amount, 0.01, 0, 0,
+  const std::string unit = angle_unit(model, joint);
+  return {{"amount", move ? "move by [" + unit + "]" : "final rate [" + unit + "/s]", amount, 0.01, 0, 0,
            move ? "how far the driver moves the joint from its initial position"
                 : "the rate the driver spins the joint up to"},
           {"duration", "duration [s]", duration, 0.1, 1e-6, 1e9,

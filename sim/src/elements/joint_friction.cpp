@@ -24,11 +24,12 @@ void JointFriction::load_values(const ElementState& s, double* values) const {
   values[0] = torque(s.w[w_index(s.model)]);
 }
 
-std::vector<ElementParameter> JointFriction::parameters() const {
-  return {{"coulomb", "Coulomb [N m]", coulomb, 0.001, 0, 1e9,
+std::vector<ElementParameter> JointFriction::parameters(const Model& model) const {
+  return {{"coulomb", "Coulomb [" + torque_unit(model, joint) + "]", coulomb, 0.001, 0, 1e9,
            "sliding friction torque T_c: tau = -T_c tanh(dq / v_s) - c_v dq"},
-          {"viscous", "viscous [N m s/rad]", viscous, 0.001, 0, 1e9, "viscous friction coefficient c_v"},
-          {"velocity_scale", "velocity scale [rad/s]", velocity_scale, 1e-4, 1e-9, 1e3,
+          {"viscous", "viscous [" + damping_unit(model) + "]", viscous, 0.001, 0, 1e9,
+           "viscous friction coefficient c_v"},
+          {"velocity_scale", "velocity scale [" + angle_unit(model, joint) + "/s]", velocity_scale, 1e-4, 1e-9, 1e3,
            "v_s: the Coulomb torque ramps through zero speed over about this rate"}};
 }
 

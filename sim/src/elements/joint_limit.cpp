@@ -44,14 +44,16 @@ std::string JointLimit::note() const {
   return text;
 }
 
-std::vector<ElementParameter> JointLimit::parameters() const {
-  std::vector<ElementParameter> p = {{"stiffness", "limit stiffness [N m/rad]", stiffness, 0.1 * stiffness, 1e-9, 1e15,
-                                      "how stiffly each end pushes the joint back: tau = -k x - c dq, x past the end"},
-                                     {"damping", "limit damping [N m s/rad]", damping, 0.1 * std::max(damping, 0.01), 0,
-                                      1e15, "its damping (it never pulls the joint back onto an end)"}};
-  if (std::isfinite(lower)) p.push_back({"lower", "lower end [rad]", lower, 0.01, 0, 0, "the least angle (or length)"});
+std::vector<ElementParameter> JointLimit::parameters(const Model& model) const {
+  const std::string at = " [" + angle_unit(model, joint) + "]";
+  std::vector<ElementParameter> p = {
+      {"stiffness", "limit stiffness [" + stiffness_unit(model) + "]", stiffness, 0.1 * stiffness, 1e-9, 1e15,
+       "how stiffly each end pushes the joint back: tau = -k x - c dq, x past the end"},
+      {"damping", "limit damping [" + damping_unit(model) + "]", damping, 0.1 * std::max(damping, 0.01), 0, 1e15,
+       "its damping (it never pulls the joint back onto an end)"}};
+  if (std::isfinite(lower)) p.push_back({"lower", "lower end" + at, lower, 0.01, 0, 0, "the least angle (or length)"});
   if (std::isfinite(upper))
-    p.push_back({"upper", "upper end [rad]", upper, 0.01, 0, 0, "the greatest angle (or length)"});
+    p.push_back({"upper", "upper end" + at, upper, 0.01, 0, 0, "the greatest angle (or length)"});
   return p;
 }
 

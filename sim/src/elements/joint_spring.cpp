@@ -39,15 +39,17 @@ std::string JointSpring::note() const {
   return curve ? "measured curve, " + std::to_string(curve->angles().size()) + " points (edit the file's table)" : "";
 }
 
-std::vector<ElementParameter> JointSpring::parameters() const {
+std::vector<ElementParameter> JointSpring::parameters(const Model& model) const {
   std::vector<ElementParameter> p;
   if (!curve) {
-    p.push_back({"stiffness", "stiffness [N m/rad]", stiffness, 0.005, 0, 1e9,
+    p.push_back({"stiffness", "stiffness [" + stiffness_unit(model) + "]", stiffness, 0.005, 0, 1e9,
                  "torsion spring rate k: tau = -k (q - free angle) - c dq"});
-    p.push_back({"free_position", "preload: free angle [rad]", free_position, 0.01, 0, 0,
+    const std::string free = slider(model) ? "preload: free length [m]" : "preload: free angle [rad]";
+    p.push_back({"free_position", free, free_position, 0.01, 0, 0,
                  "the angle where the spring is relaxed; the preload at q is k (free angle - q)"});
   }
-  p.push_back({"damping", "damping [N m s/rad]", damping, 0.001, 0, 1e9, "viscous damping c of the hinge"});
+  p.push_back(
+      {"damping", "damping [" + damping_unit(model) + "]", damping, 0.001, 0, 1e9, "viscous damping c of the hinge"});
   return p;
 }
 

@@ -30,9 +30,11 @@ void JointStop::load_values(const ElementState& s, double* values) const {
   values[0] = torque(s.q[q_index(s.model)], s.w[w_index(s.model)]);
 }
 
-std::vector<ElementParameter> JointStop::parameters() const {
-  return {{"stiffness", "stop stiffness [N m/rad]", stiffness, 0.1 * stiffness, 0, 1e15, "how stiffly it holds"},
-          {"damping", "stop damping [N m s/rad]", damping, 0.1 * std::max(damping, 0.01), 0, 1e15, "its damping"}};
+std::vector<ElementParameter> JointStop::parameters(const Model& model) const {
+  return {{"stiffness", "stop stiffness [" + stiffness_unit(model) + "]", stiffness, 0.1 * stiffness, 0, 1e15,
+           "how stiffly it holds"},
+          {"damping", "stop damping [" + damping_unit(model) + "]", damping, 0.1 * std::max(damping, 0.01), 0, 1e15,
+           "its damping"}};
 }
 
 void JointStop::validate(const Scene& scene, const std::string& field) const {

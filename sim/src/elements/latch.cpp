@@ -38,11 +38,11 @@ std::string Latch::note() const {
   return text;
 }
 
-std::vector<ElementParameter> Latch::parameters() const {
-  return {{"stiffness", "stiffness [N m/rad]", stiffness, 10, 1e-9, 1e12,
+std::vector<ElementParameter> Latch::parameters(const Model& model) const {
+  return {{"stiffness", "stiffness [" + stiffness_unit(model) + "]", stiffness, 10, 1e-9, 1e12,
            "k_L of the engaged latch: tau = -k_L (q - position) - c_L dq"},
-          {"damping", "damping [N m s/rad]", damping, 0.1, 0, 1e12, "c_L of the engaged latch"},
-          {"free_play", "free play [rad]", free_play, 1e-4, 0, 1,
+          {"damping", "damping [" + damping_unit(model) + "]", damping, 0.1, 0, 1e12, "c_L of the engaged latch"},
+          {"free_play", "free play [" + angle_unit(model, joint) + "]", free_play, 1e-4, 0, 1,
            "backlash: the latch bites beyond position +- free play / 2"}};
 }
 

@@ -47,7 +47,7 @@ void PointSpring::load_values(const ElementState& s, double* values) const {
   values[0] = tension(g.length, g.rate);
 }
 
-std::vector<ElementParameter> PointSpring::parameters() const {
+std::vector<ElementParameter> PointSpring::parameters(const Model& /*model*/) const {
   return {{"stiffness", "stiffness [N/m]", stiffness, 0.1, 0, 1e12,
            "T = k (L - rest length) + c dL/dt between the two points"},
           {"rest_length", "rest length [m]", rest_length, 0.001, 0, 1e6,

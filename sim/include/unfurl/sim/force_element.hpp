@@ -141,7 +141,9 @@ class ForceElement {
   // value breaks the element's rules in the scene.
   virtual void validate(const Scene& /*scene*/, const std::string& /*field*/) const {}
 
-  virtual std::vector<ElementParameter> parameters() const { return {}; }
+  // Its editable values, labelled in the units they have in `model` (a
+  // joint element's per metre on a slider, per radian on a hinge).
+  virtual std::vector<ElementParameter> parameters(const Model& /*model*/) const { return {}; }
   // A line about it beyond its parameters (a measured curve's size), or "".
   virtual std::string note() const { return ""; }
   virtual std::vector<ElementLink> links() const { return {}; }

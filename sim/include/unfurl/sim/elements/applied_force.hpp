@@ -23,7 +23,7 @@ class AppliedForce : public ForceElement {
   bool needs_poses() const override { return in_base_frame; }
   std::optional<std::vector<int>> bodies() const override { return bodies_off_base({body}); }
   void validate(const Scene& scene, const std::string& field) const override;
-  std::vector<ElementParameter> parameters() const override;
+  std::vector<ElementParameter> parameters(const Model& model) const override;
 };
 
 // (f, m) at a body's origin of a force f at `point` and a torque m.

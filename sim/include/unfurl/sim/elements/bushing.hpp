@@ -91,7 +91,7 @@ class Bushing : public ForceElement {
   // positive semidefinite; the initial tilt inside +-80 degrees.
   void validate(const Scene& scene, const std::string& field) const override;
   // The diagonal of K and C.
-  std::vector<ElementParameter> parameters() const override;
+  std::vector<ElementParameter> parameters(const Model& model) const override;
   std::vector<ElementLink> links() const override {
     return {{a.body, b.body, a.point, b.point, ElementLink::Style::bushing, a.axes().col(0)}};
   }

@@ -39,7 +39,7 @@ class Elasticity : public ForceElement {
   // The damping ratio, and the beam's bending stiffness (when both planes'
   // are equal) and mass per length: edited, the body is meshed and
   // reduced again.
-  std::vector<ElementParameter> parameters() const override;
+  std::vector<ElementParameter> parameters(const Model& model) const override;
   std::string note() const override;  // its coordinates and their frequencies
   // On the model's (already scaled) structure of the body.
   std::shared_ptr<ForceElement> scaled(double L, double M, const Model& model) const override;

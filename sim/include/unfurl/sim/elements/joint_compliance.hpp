@@ -41,7 +41,7 @@ class JointCompliance : public ForceElement {
   // On a compliant revolute joint; stiffness positive, damping not
   // negative (a pin without stiffness is a constraint left out).
   void validate(const Scene& scene, const std::string& field) const override;
-  std::vector<ElementParameter> parameters() const override;
+  std::vector<ElementParameter> parameters(const Model& model) const override;
 };
 
 }  // namespace unfurl::sim

@@ -57,7 +57,7 @@ class JointDriver : public JointElement {
   std::vector<LoadColumn> load_columns(const Model& model) const override;
   std::vector<ElementPeak> peaks() const override { return {{"peak_drive_torque"}}; }
   void validate(const Scene& scene, const std::string& field) const override;
-  std::vector<ElementParameter> parameters() const override;
+  std::vector<ElementParameter> parameters(const Model& model) const override;
   std::string note() const override;
 };
 

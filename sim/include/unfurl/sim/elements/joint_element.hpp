@@ -27,6 +27,10 @@ class JointElement : public ForceElement {
   // "N m" on a hinge, "N" on a slider; "rad" and "m" for its coordinate.
   static std::string torque_unit(const Model& model, int joint);
   static std::string angle_unit(const Model& model, int joint);
+  // Its stiffness's and damping's units: per radian on a hinge, per metre
+  // on a slider.
+  std::string stiffness_unit(const Model& model) const { return slider(model) ? "N/m" : "N m/rad"; }
+  std::string damping_unit(const Model& model) const { return slider(model) ? "N s/m" : "N m s/rad"; }
   // How the joint's torque (or force), stiffness and angle (or length)
   // scale with lengths x L and masses x M (ForceElement::scaled).
   double torque_scale(const Model& model, double L, double M) const { return slider(model) ? M * L : M * L * L; }

@@ -38,7 +38,7 @@ class JointFriction : public JointElement {
   std::vector<LoadColumn> load_columns(const Model& model) const override;  // friction_torque
   void load_values(const ElementState& s, double* values) const override;
   void validate(const Scene& scene, const std::string& field) const override;
-  std::vector<ElementParameter> parameters() const override;
+  std::vector<ElementParameter> parameters(const Model& model) const override;
 };
 
 }  // namespace unfurl::sim

@@ -43,7 +43,7 @@ class JointLimit : public JointElement {
   void load_values(const ElementState& s, double* values) const override;
   std::vector<ElementPeak> peaks() const override { return {{"peak_limit_torque", 0, 1}}; }
   void validate(const Scene& scene, const std::string& field) const override;
-  std::vector<ElementParameter> parameters() const override;
+  std::vector<ElementParameter> parameters(const Model& model) const override;
   std::string note() const override;
 };
 

@@ -39,7 +39,7 @@ class JointSpring : public JointElement {
   std::vector<LoadColumn> load_columns(const Model& model) const override;
   void load_values(const ElementState& s, double* values) const override;
   void validate(const Scene& scene, const std::string& field) const override;
-  std::vector<ElementParameter> parameters() const override;
+  std::vector<ElementParameter> parameters(const Model& model) const override;
   std::string note() const override;
 };
 

@@ -31,7 +31,7 @@ class JointStop : public JointElement {
   void load_values(const ElementState& s, double* values) const override;
   std::vector<ElementPeak> peaks() const override { return {{"peak_stop_torque", 0, 1}}; }
   void validate(const Scene& scene, const std::string& field) const override;
-  std::vector<ElementParameter> parameters() const override;
+  std::vector<ElementParameter> parameters(const Model& model) const override;
 };
 
 }  // namespace unfurl::sim

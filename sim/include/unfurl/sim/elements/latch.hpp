@@ -50,7 +50,7 @@ class Latch : public JointElement {
   std::vector<LoadColumn> load_columns(const Model& model) const override;  // latch_torque
   void load_values(const ElementState& s, double* values) const override;
   void validate(const Scene& scene, const std::string& field) const override;
-  std::vector<ElementParameter> parameters() const override;
+  std::vector<ElementParameter> parameters(const Model& model) const override;
   std::string note() const override;
 };
 

@@ -60,7 +60,7 @@ class PointSpring : public ForceElement {
   // A valid name of its own, two distinct bodies, non-negative values, and
   // two points apart at the initial state (the force needs a direction).
   void validate(const Scene& scene, const std::string& field) const override;
-  std::vector<ElementParameter> parameters() const override;
+  std::vector<ElementParameter> parameters(const Model& model) const override;
   std::vector<ElementLink> links() const override {
     return {{body_a, body_b, point_a, point_b, tension_only ? ElementLink::Style::cable : ElementLink::Style::spring}};
   }
