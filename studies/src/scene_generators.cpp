@@ -180,6 +180,8 @@ double stowed_angle(int N, int j) {
 // lighter as the pin weighs, so that with it the panel weighs kPanelMass).
 constexpr double kPinHalfMass = 0.01;
 const sim::Vec3 kPinHalfInertia(1e-5, 1e-5, 1e-5);
+// The tip sensor on the outer chain A panel: a plate node, so an attachment.
+const sim::Vec3 kTipSensorPoint(0, kPanelHalf, 0);
 
 // The flexible panels of pantograph_flexible.yaml: zfold_plates.yaml's
 // aluminium honeycomb plate (0.9 x 1.2 m, D = 7435 N m, nu = 0.33, meshed
@@ -205,7 +207,7 @@ PanelMaker plate_panels(int stages, double mirror, double mass) {
     spec.normal_modes = 4;
     spec.damping.bands = {{100, 0.005}, {1000, 0.1}, {std::numeric_limits<double>::infinity(), 0.5}};
     const double p = mirror * pivot_offset(k);
-    if (mirror > 0 && k == stages) spec.attachments.emplace_back(0, kPanelHalf, 0);
+    if (mirror > 0 && k == stages) spec.attachments.push_back(kTipSensorPoint);
     if (k < stages) spec.attachments.emplace_back(0, kPanelHalf, p);
     spec.attachments.emplace_back(mirror * kChainX, 0, p);
     sim::Body body;
@@ -308,7 +310,7 @@ sim::SceneFile generate_flexible_pantograph(int stages) {
   chain_latches(b, N + 2, N + 1, size_factor(N));
   sim::Sensor tip;
   tip.name = "tip";
-  tip.point = sim::Vec3(0, kPanelHalf, 0);
+  tip.point = kTipSensorPoint;
   b.sensor(tip, "panel_A" + count);
   b.regulator(cross_link_regulator(N));
   for (int j = 1; j <= 3 * N + 2; ++j) b.initial_position(joint_name(j), {stowed_angle(N, j)});
