@@ -5,6 +5,9 @@
 //   [ G   -eps I   0  ] [r] = [0]      G: N_i^T (v_i - C_i v_k) = 0, the
 //   [ E    0    -delta] [y]   [b]      directions joint i does not move in
 //
+// A flexible body's v is its extended velocity (the frame's 6, then eta'),
+// its block of M its own mass matrix M^(eta), and a child hanging on its
+// node a sees the node's velocity N_a v_k in place of v_k (sweep.hpp).
 // eliminating v and r leaves -(E T A Mtilde^-1 A^T T^T E^T + delta) y = b,
 // i.e. y = -R^-1 b with W = eps T A Mtilde^-1 (eps T A)^T as in (16): the
 // tree's motions are the null space of G, T A. The matrix is sparse with
@@ -56,7 +59,13 @@ class SparseClosureSolver : public ClosureSolver {
     for (const Body& b : model.bodies) total_mass += b.mass;
     eps_ = 1e-10 * N / total_mass;
 
-    int rows = 6 * N;
+    int rows = 0;
+    velocity_row_.resize(N);
+    for (int i = 0; i < N; ++i) {
+      velocity_row_[i] = rows;
+      rows += width(i);
+    }
+    velocity_rows_ = rows;
     joint_row_.resize(N);
     N_.resize(N);
     for (int i = 0; i < N; ++i) {
@@ -70,40 +79,55 @@ class SparseClosureSolver : public ClosureSolver {
     // The lower triangle: every row index below is >= its column index.
     std::vector<Eigen::Triplet<double>> entries;
     for (int i = 0; i < N; ++i) {
-      const Mat6 M = model.bodies[i].spatial_mass();
-      for (int c = 0; c < 6; ++c)
-        for (int r = c; r < 6; ++r) entries.emplace_back(6 * i + r, 6 * i + c, M(r, c));
+      const int v_i = velocity_row_[i];
+      if (model.flexible(i)) {  // M^(eta): set by factorize
+        for (int c = 0; c < width(i); ++c)
+          for (int r = c; r < width(i); ++r) entries.emplace_back(v_i + r, v_i + c, 0.0);
+      } else {
+        const Mat6 M = model.bodies[i].spatial_mass();
+        for (int c = 0; c < 6; ++c)
+          for (int r = c; r < 6; ++r) entries.emplace_back(v_i + r, v_i + c, M(r, c));
+      }
       const int k = model.parent[i];
       for (int r = 0; r < N_[i].cols(); ++r) {
-        for (int c = 0; c < 6; ++c) {
-          entries.emplace_back(joint_row_[i] + r, 6 * i + c, N_[i](c, r));
-          if (k != kBase) entries.emplace_back(joint_row_[i] + r, 6 * k + c, 0.0);
-        }
+        for (int c = 0; c < 6; ++c) entries.emplace_back(joint_row_[i] + r, v_i + c, N_[i](c, r));
+        if (k != kBase)
+          for (int c = 0; c < width(k); ++c) entries.emplace_back(joint_row_[i] + r, velocity_row_[k] + c, 0.0);
         entries.emplace_back(joint_row_[i] + r, joint_row_[i] + r, -eps_);
       }
     }
     for (int c = 0; c < m_; ++c) {
       const LoopComponent& lc = components[c];
-      entries.emplace_back(loop_row_ + c, 6 * loops[lc.loop].body + lc.axis, 1.0);
-      entries.emplace_back(loop_row_ + c, 6 * loops[lc.loop].image + lc.axis, -1.0);
+      entries.emplace_back(loop_row_ + c, velocity_row_[loops[lc.loop].body] + lc.axis, 1.0);
+      entries.emplace_back(loop_row_ + c, velocity_row_[loops[lc.loop].image] + lc.axis, -1.0);
       entries.emplace_back(loop_row_ + c, loop_row_ + c, 0.0);
     }
     K_.resize(rows, rows);
     K_.setFromTriplets(entries.begin(), entries.end());
     K_.makeCompressed();  // the solves read its arrays
 
-    // Where the configuration-dependent values sit: -N_i^T C_i, and -delta.
+    // Where the configuration-dependent values sit: -N_i^T C_i (N_a), -delta
+    // and the flexible bodies' M^.
     for (int i = 0; i < N; ++i) {
-      if (model.parent[i] == kBase) continue;
+      const int k = model.parent[i];
+      if (k == kBase) continue;
       for (int r = 0; r < N_[i].cols(); ++r)
-        for (int c = 0; c < 6; ++c) parent_block_.push_back(&K_.coeffRef(joint_row_[i] + r, 6 * model.parent[i] + c));
+        for (int c = 0; c < width(k); ++c)
+          parent_block_.push_back(&K_.coeffRef(joint_row_[i] + r, velocity_row_[k] + c));
+    }
+    for (int i = 0; i < N; ++i) {
+      if (!model.flexible(i)) continue;
+      flexible_.push_back(i);
+      for (int c = 0; c < width(i); ++c)
+        for (int r = c; r < width(i); ++r)
+          mass_block_.push_back(&K_.coeffRef(velocity_row_[i] + r, velocity_row_[i] + c));
     }
     for (int c = 0; c < m_; ++c) delta_slot_.push_back(&K_.coeffRef(loop_row_ + c, loop_row_ + c));
     for (int i = 0; i < N; ++i) {
       if (!model.joints[i].has_varying_axes()) continue;
       varying_.push_back(i);
       for (int r = 0; r < N_[i].cols(); ++r)
-        for (int c = 0; c < 6; ++c) varying_block_.push_back(&K_.coeffRef(joint_row_[i] + r, 6 * i + c));
+        for (int c = 0; c < 6; ++c) varying_block_.push_back(&K_.coeffRef(joint_row_[i] + r, velocity_row_[i] + c));
     }
 
     ldlt_.analyzePattern(K_);
@@ -118,11 +142,25 @@ class SparseClosureSolver : public ClosureSolver {
     }
     double** slot = parent_block_.data();
     for (int i = 0; i < model_.size(); ++i) {
-      if (model_.parent[i] == kBase) continue;
+      const int k = model_.parent[i];
+      if (k == kBase) continue;
       const Eigen::Matrix<double, Eigen::Dynamic, 6, 0, 6, 6> block =
           -N_[i].transpose() * velocity_transform(sweep.placement(i));
+      if (const int a = model_.node_of(i); a >= 0) {
+        const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, flexible::kMaxExtended> on_node =
+            block * sweep.node_matrix(k, a);
+        for (int r = 0; r < on_node.rows(); ++r)
+          for (int c = 0; c < width(k); ++c) **slot++ = on_node(r, c);
+        continue;
+      }
       for (int r = 0; r < block.rows(); ++r)
-        for (int c = 0; c < 6; ++c) **slot++ = block(r, c);
+        for (int c = 0; c < width(k); ++c) **slot++ = c < 6 ? block(r, c) : 0.0;  // on a flexible body's frame
+    }
+    double** mass = mass_block_.data();
+    for (int i : flexible_) {
+      const flexible::ExtendedMatrix& M = sweep.flexible_mass(i);
+      for (int c = 0; c < width(i); ++c)
+        for (int r = c; r < width(i); ++r) **mass++ = M(r, c);
     }
     for (int c = 0; c < m_; ++c) *delta_slot_[c] = -delta[c];
     ldlt_.factorize(K_);
@@ -131,7 +169,7 @@ class SparseClosureSolver : public ClosureSolver {
   }
 
   void solve(const double* B, double* X, int columns, bool refine) override {
-    const int n = static_cast<int>(K_.rows()), v_rows = 6 * model_.size(), joint_rows = loop_row_ - v_rows;
+    const int n = static_cast<int>(K_.rows()), v_rows = velocity_rows_, joint_rows = loop_row_ - v_rows;
     const int k = columns;
     for (std::vector<double>* a : {&rhs_, &solution_, &residual_, &work_}) a->resize(static_cast<std::size_t>(n) * k);
     std::fill(rhs_.begin(), rhs_.end(), 0.0);
@@ -166,18 +204,24 @@ class SparseClosureSolver : public ClosureSolver {
   const Model& model_;
   int m_;
   double eps_;
-  std::vector<int> joint_row_;
+  std::vector<int> velocity_row_, joint_row_;
+  int velocity_rows_ = 0;
   std::vector<Directions> N_;
   std::vector<int> varying_;            // joints whose A (and N) turn with q: universal
   std::vector<double*> varying_block_;  // their N_i^T entries
   int loop_row_ = 0;
   SparseMatrix K_;
   std::vector<double*> parent_block_, delta_slot_;
+  std::vector<int> flexible_;        // bodies whose block of M is M^(eta)
+  std::vector<double*> mass_block_;  // its lower triangle
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt_;
   // Scratch, n x columns column-major; grown once, never shrunk (the
   // solves allocate nothing after the first).
   std::vector<double> rhs_, solution_, residual_, work_, permuted_;
   Eigen::VectorXd D_;  // the factor's D
+
+  // A body's velocities in v: 6, or a flexible body's 6 + m.
+  int width(int i) const { return model_.flexible(i) ? 6 + model_.bodies[i].flexible->modes() : 6; }
 
   static double norm(const std::vector<double>& x) {
     return Eigen::Map<const Eigen::VectorXd>(x.data(), static_cast<Eigen::Index>(x.size())).norm();

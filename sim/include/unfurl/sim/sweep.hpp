@@ -151,6 +151,11 @@ class Sweep {
   flexible::ExtendedVector node_force(int i, int a, const Vec6& f) const {
     return flexible_[flex_[i]].N[a].transpose() * f;
   }
+  // Flexible body i's N_a = [C_node, A L] (6 x (6 + m)): its extended
+  // velocity to node a's frame velocity, and its own mass matrix M^ at its
+  // eta ((6 + m) square), both as of the last set_placements.
+  const flexible::NodeMatrix& node_matrix(int i, int a) const { return flexible_[flex_[i]].N[a]; }
+  const flexible::ExtendedMatrix& flexible_mass(int i) const { return flexible_[flex_[i]].M_own; }
   // The articulated inertia of joint i's coordinate r, (D_i^-1)_rr: the
   // inertia it moves against with every other joint free but the driven
   // ones (kg m^2 for a turn, kg for a slide); a driven joint's is A_i^T M*_i
