@@ -24,7 +24,7 @@ ArkodeIntegrator::ArkodeIntegrator(IntegratorKind kind, Dynamics& dynamics, cons
   check(api_.set_max_num_steps(mem_, -1), "SetMaxNumSteps");
   if (api_.implicit) {
     if (uses_krylov(settings, dynamics.size())) {
-      krylov_.emplace(y_, ctx_);
+      krylov_.emplace(y_, dynamics_, ctx_);
       check(ARKStepSetLinearSolver(mem_, krylov_->LS, nullptr), "ARKStepSetLinearSolver");
       check(ARKStepSetPreconditioner(mem_, sundials::precondition_setup, sundials::precondition_solve),
             "ARKStepSetPreconditioner");

@@ -27,7 +27,7 @@ CvodeIntegrator::CvodeIntegrator(IntegratorKind kind, Dynamics& dynamics, const 
   check(CVodeSetMaxNumSteps(mem_, -1), "CVodeSetMaxNumSteps");
   check(CVodeSetMaxOrd(mem_, max_order_), "CVodeSetMaxOrd");
   if (bdf && uses_krylov(settings, dynamics.size())) {
-    krylov_.emplace(y_, ctx_);
+    krylov_.emplace(y_, dynamics_, ctx_);
     check(CVodeSetLinearSolver(mem_, krylov_->LS, nullptr), "CVodeSetLinearSolver");
     check(CVodeSetPreconditioner(mem_, sundials::precondition_setup, sundials::precondition_solve),
           "CVodeSetPreconditioner");

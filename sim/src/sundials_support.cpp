@@ -39,7 +39,11 @@ DenseSolver::~DenseSolver() {
   SUNMatDestroy(A);
 }
 
-KrylovSolver::KrylovSolver(N_Vector y, SUNContext ctx) : LS(SUNLinSol_SPGMR(y, SUN_PREC_LEFT, 0, ctx)) {
+int krylov_dimension(int loop_components) { return std::min(2 * loop_components + 5, kMaxKrylovDimension); }
+
+KrylovSolver::KrylovSolver(N_Vector y, const Dynamics& dynamics, SUNContext ctx)
+    : LS(SUNLinSol_SPGMR(y, SUN_PREC_LEFT,
+                         krylov_dimension(dynamics.regulator() ? dynamics.regulator()->size() : 0), ctx)) {
   check_ptr(LS, "SUNLinSol_SPGMR");
 }
 KrylovSolver::~KrylovSolver() { SUNLinSolFree(LS); }

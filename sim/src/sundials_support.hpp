@@ -56,12 +56,24 @@ struct DenseSolver {
 
 // GMRES with left preconditioning by the Dynamics' NewtonPreconditioner.
 struct KrylovSolver {
-  KrylovSolver(N_Vector y, SUNContext ctx);
+  KrylovSolver(N_Vector y, const Dynamics& dynamics, SUNContext ctx);
   ~KrylovSolver();
   KrylovSolver(const KrylovSolver&) = delete;
   KrylovSolver& operator=(const KrylovSolver&) = delete;
   SUNLinearSolver LS = nullptr;
 };
+
+// GMRES's Krylov dimension for a mechanism of m loop components. The
+// preconditioner leaves the loop forces out (newton_preconditioner.hpp):
+// they change the Newton matrix by at most rank 2m (the momenta's rows in
+// the range of the loops' m directions, the integral states' m rows), which
+// a space of 2m + 5 holds, 5 being SUNDIALS' default for the rest. Where a
+// loop closes through compliant pins or plates that part is no longer a
+// tight cluster: with the default alone, Newton failed on 36 % of the
+// flexible 10-stage array's steps. Capped, as the solver keeps that many
+// vectors of the state.
+int krylov_dimension(int loop_components);
+inline constexpr int kMaxKrylovDimension = 300;
 
 // Callbacks, with the Dynamics as user data.
 int rhs(double t, N_Vector y, N_Vector ydot, void* dynamics);
