@@ -5,14 +5,15 @@
 //   [ G   -eps I   0  ] [r] = [0]      G: N_i^T (v_i - C_i v_k) = 0, the
 //   [ E    0    -delta] [y]   [b]      directions joint i does not move in
 //
-// A flexible body's v is its extended velocity (the frame's 6, then eta'),
-// its block of M its own mass matrix M^(eta), and a child hanging on its
-// node a sees the node's velocity N_a v_k in place of v_k (sweep.hpp).
 // eliminating v and r leaves -(E T A Mtilde^-1 A^T T^T E^T + delta) y = b,
 // i.e. y = -R^-1 b with W = eps T A Mtilde^-1 (eps T A)^T as in (16): the
 // tree's motions are the null space of G, T A. The matrix is sparse with
 // the primary graph's pattern, so a fill-reducing ordering factors a chain
 // of loops in O(N).
+//
+// A flexible body's v is its extended velocity (the frame's 6, then eta'),
+// its block of M its own mass matrix M^(eta), and a child hanging on its
+// node a sees the node's velocity N_a v_k in place of v_k (sweep.hpp).
 //
 // With eps > 0 the matrix is quasi-definite and LDL^T needs no pivoting for
 // any ordering; eps itself is removed by refining against eps = 0, which
