@@ -132,6 +132,22 @@ sim::RegulatorSettings cross_link_regulator(int stages) {
   return regulator;
 }
 
+// The flexible arrays' loops close at the rigid array's bandwidth (the
+// reference's at 3 stages). The automatic rule would take the tree's
+// fastest rate, a pin half's tilt on its compliant hinge (10 g, 1e5 rad/s at
+// 10 stages), which the loop's weld removes; measured at 10 stages, 25 times
+// that rate took 14 times the steps and ended 8.7e-4 rad from a tight
+// reference, where the rigid array's 4403 rad/s ended within 1e-8 rad.
+sim::RegulatorSettings flexible_cross_link_regulator(int stages) {
+  sim::RegulatorSettings regulator = cross_link_regulator(stages);
+  if (!regulator.v_max) {
+    const sim::Scene rigid = generate_pantograph(stages).scene;
+    sim::Sweep sweep(rigid.model);
+    regulator.v_max = sim::Regulator::automatic_bandwidth(sim::mechanism_scales(rigid, sweep).rate);
+  }
+  return regulator;
+}
+
 // The rigid cross-links: each chain A panel's other half, its image, turns
 // on the chain B panel at the pivot, and a loop closes it on the panel.
 void cross_loops(sim::SceneBuilder& b, int stages) {
@@ -293,26 +309,6 @@ sim::SceneFile generate_pantograph(int stages, CrossPivots pivots, Snubbers snub
   b.run(run(20, 1e-10, 1e-12));
   return b.build();
 }
-
-namespace {
-
-// The flexible arrays' loops close at the rigid array's bandwidth (the
-// reference's at 3 stages). The automatic rule would take the tree's
-// fastest rate, a pin half's tilt on its compliant hinge (10 g, 1e5 rad/s at
-// 10 stages), which the loop's weld removes; measured at 10 stages, 25 times
-// that rate took 14 times the steps and ended 8.7e-4 rad from a tight
-// reference, where the rigid array's 4403 rad/s ended within 1e-8 rad.
-sim::RegulatorSettings flexible_cross_link_regulator(int stages) {
-  sim::RegulatorSettings regulator = cross_link_regulator(stages);
-  if (!regulator.v_max) {
-    const sim::Scene rigid = generate_pantograph(stages).scene;
-    sim::Sweep sweep(rigid.model);
-    regulator.v_max = sim::Regulator::automatic_bandwidth(sim::mechanism_scales(rigid, sweep).rate);
-  }
-  return regulator;
-}
-
-}  // namespace
 
 sim::SceneFile generate_flexible_pantograph(int stages) {
   check_count(stages, "the number of stages");
