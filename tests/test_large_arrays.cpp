@@ -3,6 +3,9 @@
 // solver and GMRES.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include <Eigen/Dense>
 
 #include "closure_check.hpp"
@@ -10,6 +13,7 @@
 #include "unfurl/sim/dynamics.hpp"
 #include "unfurl/sim/elements/bushing.hpp"
 #include "unfurl/sim/elements/joint_compliance.hpp"
+#include "unfurl/sim/scene_file.hpp"
 #include "unfurl/sim/summary.hpp"
 #include "unfurl/studies/scene_generators.hpp"
 
@@ -170,6 +174,31 @@ TEST(Generator, FlexiblePantographsCloseTheirLoopsThroughThePlates) {
   EXPECT_LT(100 * *scene.regulator.v_max, sim::Dynamics(automatic).regulator()->v_max());
 }
 
+TEST(Generator, LargerArraysRegularizeFinerAndWatchBdfsStabilityLimit) {
+  // The reference size keeps the reference's settings (SCENES.md).
+  const sim::SceneFile reference = studies::generate_pantograph(3);
+  EXPECT_EQ(reference.scene.regulator.regularization, sim::RegulatorSettings{}.regularization);
+  EXPECT_FALSE(reference.scene.run.stability_limit_detection);
+  EXPECT_EQ(sim::write_scene_text(reference).find("stability_limit_detection"), std::string::npos);
+
+  const sim::SceneFile rigid = studies::generate_pantograph(10);
+  EXPECT_EQ(rigid.scene.regulator.regularization, 2e-9);
+  EXPECT_EQ(studies::generate_flexible_pantograph(6).scene.regulator.regularization, 2e-9);
+  EXPECT_TRUE(studies::generate_flexible_pantograph(6).scene.run.stability_limit_detection);
+  EXPECT_TRUE(
+      studies::generate_pantograph(10, studies::CrossPivots::compliant).scene.run.stability_limit_detection);
+  // The setting survives the file.
+  const std::string text = sim::write_scene_text(rigid);
+  EXPECT_NE(text.find("stability_limit_detection: true"), std::string::npos);
+  EXPECT_TRUE(sim::read_scene_text(text, "written").scene.run.stability_limit_detection);
+  try {
+    test::scene_file("pantograph", {{"run.stability_limit_detection", "maybe"}});
+    ADD_FAILURE() << "a setting that is no boolean was accepted";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("run.stability_limit_detection"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Generator, ThreePanelZfoldIsTheReferenceScene) {
   expect_same_mechanism(studies::generate_zfold(3).scene, test::scene_file("zfold"));
 }
@@ -194,6 +223,42 @@ TEST(LargeArray, TwentyStagePantographStaysClosedWithSparseGainsAndKrylov) {
   // The array opens: the root joint has moved toward deployment.
   const sim::Sample& last = run.trajectory.samples.back();
   EXPECT_LT(std::abs(test::q_of(scene, last, "j1")), std::abs(scene.q0[0]) - 1e-4);
+}
+
+// Joint angles at a run's samples, largest difference between two runs.
+double largest_angle_difference(const sim::Scene& scene, const sim::RunResult& a, const sim::RunResult& b) {
+  const int n = static_cast<int>(std::min(a.trajectory.samples.size(), b.trajectory.samples.size()));
+  double largest = 0;
+  for (int s = 0; s < n; ++s)
+    for (int c = 0; c < scene.model.nq; ++c) {
+      const int k = a.trajectory.layout.q() + c;
+      largest = std::max(largest, std::abs(a.trajectory.samples[s].y[k] - b.trajectory.samples[s].y[k]));
+    }
+  return largest;
+}
+
+TEST(LargeArray, ThirtyStageLoopsDoNotHangOnTheRegularization) {
+  // Released 0.01 rad off the stowed stack, the 30-stage array's weakest
+  // loop modes lie at 1.2e-10 of W's largest eigenvalue. At the generated
+  // regularization (2e-9) its angles hardly move when it is a hundredth of
+  // that (3.8e-8 rad over 0.5 s); at the default 2e-6, which softens those
+  // modes, the loops lagged by 1.2e-4 rad.
+  const auto run_at = [](const std::string& regularization) {
+    const sim::Scene scene =
+        sim::apply_overrides(studies::generate_pantograph(30), {{"run.t_end", "0.5"},
+                                                                {"run.rtol", "1e-8"},
+                                                                {"run.atol", "1e-10"},
+                                                                {"regulator.regularization", regularization}})
+            .scene;
+    sim::RunResult run = sim::simulate(scene, scene.run);
+    EXPECT_EQ(run.status, sim::RunStatus::finished) << sim::describe(run.failure);
+    return run;
+  };
+  const sim::Scene scene = studies::generate_pantograph(30).scene;
+  ASSERT_EQ(scene.regulator.regularization, 2e-9);
+  const sim::RunResult generated = run_at("2e-9"), finer = run_at("2e-11"), coarse = run_at("2e-6");
+  EXPECT_LT(largest_angle_difference(scene, generated, finer), 1e-6);
+  EXPECT_GT(largest_angle_difference(scene, coarse, finer), 1e-5);
 }
 
 TEST(LargeArray, KrylovNewtonConvergesThroughCompliantPinsAndPlates) {

@@ -26,6 +26,7 @@ CvodeIntegrator::CvodeIntegrator(IntegratorKind kind, Dynamics& dynamics, const 
   check(CVodeSVtolerances(mem_, rtol_, atol_), "CVodeSVtolerances");
   check(CVodeSetMaxNumSteps(mem_, -1), "CVodeSetMaxNumSteps");
   check(CVodeSetMaxOrd(mem_, max_order_), "CVodeSetMaxOrd");
+  if (bdf && settings.stability_limit_detection) check(CVodeSetStabLimDet(mem_, SUNTRUE), "CVodeSetStabLimDet");
   if (bdf && uses_krylov(settings, dynamics.size())) {
     krylov_.emplace(y_, dynamics_, ctx_);
     check(CVodeSetLinearSolver(mem_, krylov_->LS, nullptr), "CVodeSetLinearSolver");

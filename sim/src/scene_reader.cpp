@@ -983,7 +983,8 @@ TorqueMarginFactors SceneReader::read_torque_margin(const YAML::Node& node) cons
 RunSettings SceneReader::read_run(const YAML::Node& node) const {
   check_keys(node,
              {"t_end", "integrator", "linear_solver", "rtol", "atol", "dt", "sample", "max_closure", "event_window",
-              "max_steps", "max_samples", "max_wall_time", "roundoff_guard"},
+              "max_steps", "max_samples", "max_wall_time", "roundoff_guard",
+              "stability_limit_detection"},
              "run");
   RunSettings run;
   if (const YAML::Node integrator = node["integrator"]) {
@@ -1015,6 +1016,8 @@ RunSettings SceneReader::read_run(const YAML::Node& node) const {
   run.max_wall_time = number_or(node, "max_wall_time", run.max_wall_time, "run");
   if (node["max_steps"]) run.max_steps = count(node["max_steps"], "run.max_steps", 1, kMostSteps);
   if (node["roundoff_guard"]) run.roundoff_guard = flag(node["roundoff_guard"], "run.roundoff_guard");
+  if (node["stability_limit_detection"])
+    run.stability_limit_detection = flag(node["stability_limit_detection"], "run.stability_limit_detection");
   if (node["max_samples"]) run.max_samples = count(node["max_samples"], "run.max_samples", 1, kMostSteps);
   return run;
 }

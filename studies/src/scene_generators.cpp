@@ -124,11 +124,24 @@ void stowed_snubber(sim::SceneBuilder& b, int j, double stowed, double factor) {
   b.element(snubber);
 }
 
-// The reference pantograph's bandwidth (SCENES.md); other sizes, whose
-// latches ring at other rates, take the automatic one from their own.
+// The reference pantograph's bandwidth and regularization (SCENES.md).
+// Other sizes, whose latches ring at other rates, take the automatic
+// bandwidth from their own, and a finer regularization: released 0.01 rad
+// off the stowed stack, next to the lazy-tongs' branch point, their weakest
+// loop modes lie at 1.5e-8 (10 stages) and 1.2e-10 (30 stages) of W's
+// largest eigenvalue, below the default 2e-6, which softens them into a
+// lagging loop. At 30 stages (first 6.2 s, rtol 1e-10) 2e-6 took 36,060
+// steps and ended 1.9e-3 rad from a run at 2e-12, 2e-9 took 4,746 steps
+// and ended 1.8e-6 rad from it; 2e-11 loses a loop at the latch-up, where
+// the deployed branch point's lost modes need the softer control.
+constexpr double kArrayRegularization = 2e-9;
+
 sim::RegulatorSettings cross_link_regulator(int stages) {
   sim::RegulatorSettings regulator;
-  if (stages == 3) regulator.v_max = 2000;
+  if (stages == 3)
+    regulator.v_max = 2000;
+  else
+    regulator.regularization = kArrayRegularization;
   return regulator;
 }
 
@@ -138,6 +151,8 @@ sim::RegulatorSettings cross_link_regulator(int stages) {
 // 10 stages), which the loop's weld removes; measured at 10 stages, 25 times
 // that rate took 14 times the steps and ended 8.7e-4 rad from a tight
 // reference, where the rigid array's 4403 rad/s ended within 1e-8 rad.
+// The rigid array's regularization serves them too: the 10-stage array's
+// first 0.2 s took 1,838 steps at it, 3,528 at the default (rtol 1e-7).
 sim::RegulatorSettings flexible_cross_link_regulator(int stages) {
   sim::RegulatorSettings regulator = cross_link_regulator(stages);
   if (!regulator.v_max) {
@@ -276,6 +291,17 @@ sim::RunSettings run(double t_end, double rtol, double atol) {
   return r;
 }
 
+// The reference pantograph's run (SCENES.md), and for other sizes the same
+// with BDF's stability-limit detection: a latched array rings down lightly
+// damped, where orders 3 to 5 are unstable, and without it the 30-stage
+// array's whole 20 s took 97,948 steps at rtol 1e-7 against 16,683 with it
+// (the compliant one's 84,211 against 61,519).
+sim::RunSettings array_run(int stages, double rtol, double atol) {
+  sim::RunSettings r = run(20, rtol, atol);
+  r.stability_limit_detection = stages != 3;
+  return r;
+}
+
 void check_count(int n, const char* what) {
   if (n < 1) throw std::invalid_argument(std::string(what) + " must be at least 1");
 }
@@ -306,7 +332,7 @@ sim::SceneFile generate_pantograph(int stages, CrossPivots pivots, Snubbers snub
   for (int j = 1; j <= (compliant ? 2 : 3) * N + 2; ++j) b.initial_position(joint_name(j), {stowed_angle(N, j)});
   if (compliant && snubbers == Snubbers::stowed)
     for (int j = 1; j <= 2 * N + 2; ++j) stowed_snubber(b, j, stowed_angle(N, j), size_factor(N));
-  b.run(run(20, 1e-10, 1e-12));
+  b.run(array_run(N, 1e-10, 1e-12));
   return b.build();
 }
 
@@ -332,7 +358,7 @@ sim::SceneFile generate_flexible_pantograph(int stages) {
   b.sensor(tip, "panel_A" + count);
   b.regulator(flexible_cross_link_regulator(N));
   for (int j = 1; j <= 3 * N + 2; ++j) b.initial_position(joint_name(j), {stowed_angle(N, j)});
-  b.run(run(20, 1e-8, 1e-10));
+  b.run(array_run(N, 1e-8, 1e-10));
   return b.build();
 }
 

@@ -51,6 +51,13 @@ struct RunSettings {
   // (roundoff_guard.hpp in the sources); off, it holds them however many
   // steps that takes (a reference solution, a work-precision study).
   bool roundoff_guard = true;
+  // Whether CVODE's BDF watches for its stability limit (CVodeSetStabLimDet)
+  // and lowers its order there: orders 3 to 5 are not stable on lightly
+  // damped modes near the imaginary axis, such as a latched array ringing
+  // down, and stepping under that limit costs steps. Off by default: on a
+  // scene without such modes it can lower the order for nothing (the
+  // spinning beam took 2.6 times the steps). Other integrators ignore it.
+  bool stability_limit_detection = false;
 };
 
 }  // namespace unfurl::sim
