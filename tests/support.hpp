@@ -3,6 +3,8 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -92,6 +94,19 @@ inline double q_of(const sim::Scene& scene, const sim::Sample& s, const std::str
   for (int c = 0; c < scene.model.nq; ++c)
     if (scene.model.position_name(c) == name) return s.y[c];
   throw std::runtime_error("no coordinate " + name);
+}
+
+// The largest difference of an angle (a position in rad) between two runs
+// of one model, over the samples both have.
+inline double largest_angle_difference(const sim::Model& model, const sim::RunResult& a, const sim::RunResult& b) {
+  const std::size_t samples = std::min(a.trajectory.samples.size(), b.trajectory.samples.size());
+  const int q = a.trajectory.layout.q();
+  double largest = 0;
+  for (std::size_t s = 0; s < samples; ++s)
+    for (int c = 0; c < model.nq; ++c)
+      if (model.position_unit(c) == "rad")
+        largest = std::max(largest, std::abs(a.trajectory.samples[s].y[q + c] - b.trajectory.samples[s].y[q + c]));
+  return largest;
 }
 
 // The load column `name` ("latch_torque.j1") of a run's samples, by the

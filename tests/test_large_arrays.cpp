@@ -177,13 +177,16 @@ TEST(Generator, FlexiblePantographsCloseTheirLoopsThroughThePlates) {
 TEST(Generator, LargerArraysRegularizeFinerAndWatchBdfsStabilityLimit) {
   // The reference size keeps the reference's settings (SCENES.md).
   const sim::SceneFile reference = studies::generate_pantograph(3);
-  EXPECT_EQ(reference.scene.regulator.regularization, sim::RegulatorSettings{}.regularization);
+  EXPECT_FALSE(reference.scene.regulator.regularization);
   EXPECT_FALSE(reference.scene.run.stability_limit_detection);
   EXPECT_EQ(sim::write_scene_text(reference).find("stability_limit_detection"), std::string::npos);
 
+  // Rigid arrays take the automatic regularization (test_automatic_regularization.cpp);
+  // flexible ones the finest.
   const sim::SceneFile rigid = studies::generate_pantograph(10);
-  EXPECT_EQ(rigid.scene.regulator.regularization, 2e-9);
-  EXPECT_EQ(studies::generate_flexible_pantograph(6).scene.regulator.regularization, 2e-9);
+  EXPECT_FALSE(rigid.scene.regulator.regularization);
+  EXPECT_EQ(studies::generate_flexible_pantograph(6).scene.regulator.regularization,
+            sim::Regulator::kFinestRegularization);
   EXPECT_TRUE(studies::generate_flexible_pantograph(6).scene.run.stability_limit_detection);
   EXPECT_TRUE(
       studies::generate_pantograph(10, studies::CrossPivots::compliant).scene.run.stability_limit_detection);
@@ -225,24 +228,12 @@ TEST(LargeArray, TwentyStagePantographStaysClosedWithSparseGainsAndKrylov) {
   EXPECT_LT(std::abs(test::q_of(scene, last, "j1")), std::abs(scene.q0[0]) - 1e-4);
 }
 
-// Joint angles at a run's samples, largest difference between two runs.
-double largest_angle_difference(const sim::Scene& scene, const sim::RunResult& a, const sim::RunResult& b) {
-  const int n = static_cast<int>(std::min(a.trajectory.samples.size(), b.trajectory.samples.size()));
-  double largest = 0;
-  for (int s = 0; s < n; ++s)
-    for (int c = 0; c < scene.model.nq; ++c) {
-      const int k = a.trajectory.layout.q() + c;
-      largest = std::max(largest, std::abs(a.trajectory.samples[s].y[k] - b.trajectory.samples[s].y[k]));
-    }
-  return largest;
-}
-
 TEST(LargeArray, ThirtyStageLoopsDoNotHangOnTheRegularization) {
   // Released 0.01 rad off the stowed stack, the 30-stage array's weakest
-  // loop modes lie at 1.2e-10 of W's largest eigenvalue. At the generated
-  // regularization (2e-9) its angles hardly move when it is a hundredth of
-  // that (3.8e-8 rad over 0.5 s); at the default 2e-6, which softens those
-  // modes, the loops lagged by 1.2e-4 rad.
+  // loop modes lie at 1.2e-10 of W's largest eigenvalue. At the automatic
+  // regularization (the finest, 2e-9) its angles hardly move when it is a
+  // hundredth of that (3.8e-8 rad over 0.5 s); at the reference scenes'
+  // 2e-6, which softens those modes, the loops lagged by 1.2e-4 rad.
   const auto run_at = [](const std::string& regularization) {
     const sim::Scene scene =
         sim::apply_overrides(studies::generate_pantograph(30), {{"run.t_end", "0.5"},
@@ -255,10 +246,11 @@ TEST(LargeArray, ThirtyStageLoopsDoNotHangOnTheRegularization) {
     return run;
   };
   const sim::Scene scene = studies::generate_pantograph(30).scene;
-  ASSERT_EQ(scene.regulator.regularization, 2e-9);
-  const sim::RunResult generated = run_at("2e-9"), finer = run_at("2e-11"), coarse = run_at("2e-6");
-  EXPECT_LT(largest_angle_difference(scene, generated, finer), 1e-6);
-  EXPECT_GT(largest_angle_difference(scene, coarse, finer), 1e-5);
+  ASSERT_FALSE(scene.regulator.regularization);
+  EXPECT_EQ(sim::Dynamics(scene).regulator()->regularization(), sim::Regulator::kFinestRegularization);
+  const sim::RunResult automatic = run_at("auto"), finer = run_at("2e-11"), coarse = run_at("2e-6");
+  EXPECT_LT(test::largest_angle_difference(scene.model, automatic, finer), 1e-6);
+  EXPECT_GT(test::largest_angle_difference(scene.model, coarse, finer), 1e-5);
 }
 
 TEST(LargeArray, KrylovNewtonConvergesThroughCompliantPinsAndPlates) {

@@ -22,15 +22,6 @@ namespace {
 // (L, M) spanning 1e-3..1e1 and 1e-6..1e3, corners and a middle.
 const std::pair<double, double> kUnits[] = {{1e-3, 1e-6}, {1e-2, 1e-3}, {1e1, 1e3}, {1e-3, 1e3}, {1e1, 1e-6}};
 
-double largest_angle_difference(const sim::Model& model, const sim::RunResult& a, const sim::RunResult& b) {
-  double worst = 0;
-  for (std::size_t k = 0; k < a.trajectory.samples.size(); ++k)
-    for (int c = 0; c < model.nq; ++c)
-      if (model.position_unit(c) == "rad")
-        worst = std::max(worst, std::abs(a.trajectory.samples[k].y[c] - b.trajectory.samples[k].y[c]));
-  return worst;
-}
-
 // Angles and latch events over the scene's run; step counts up to
 // `steps_until` (the first latch: the latched ring-down's step count moves
 // by up to 2x with a change of 1e-8 in a mass, units or not, as its Newton
@@ -44,7 +35,7 @@ void expect_unit_invariant(const sim::SceneFile& original, double steps_until) {
     const std::string units = "L = " + std::to_string(L) + ", M = " + std::to_string(M);
     ASSERT_EQ(run.status, sim::RunStatus::finished) << units << ": " << sim::describe(run.failure);
     ASSERT_EQ(run.trajectory.samples.size(), base.trajectory.samples.size()) << units;
-    EXPECT_LT(largest_angle_difference(original.scene.model, run, base), 1e-7) << units;
+    EXPECT_LT(test::largest_angle_difference(original.scene.model, run, base), 1e-7) << units;
     sim::RunSettings until = original.scene.run;
     until.t_end = steps_until;
     const double steps = sim::simulate(scaled.scene, until).stats.steps;
@@ -86,7 +77,7 @@ void expect_joint_torque_invariant(const sim::SceneFile& original) {
     const std::string units = "L = " + std::to_string(L) + ", M = " + std::to_string(M);
     ASSERT_EQ(run.status, sim::RunStatus::finished) << units;
     ASSERT_EQ(run.trajectory.samples.size(), base.trajectory.samples.size()) << units;
-    EXPECT_LT(largest_angle_difference(original.scene.model, run, base), 1e-7) << units;
+    EXPECT_LT(test::largest_angle_difference(original.scene.model, run, base), 1e-7) << units;
     EXPECT_NEAR(run.peaks.element[0].value / (M * L * L), base.peaks.element[0].value,
                 1e-4 * base.peaks.element[0].value)
         << units;
@@ -131,7 +122,7 @@ void expect_flexible_invariant(const sim::SceneFile& zfold, const std::string& d
     const std::string units = "L = " + std::to_string(L) + ", M = " + std::to_string(M);
     ASSERT_EQ(run.status, sim::RunStatus::finished) << units << ": " << sim::describe(run.failure);
     ASSERT_EQ(run.trajectory.samples.size(), base.trajectory.samples.size()) << units;
-    EXPECT_LT(largest_angle_difference(zfold.scene.model, run, base), 1e-7) << units;
+    EXPECT_LT(test::largest_angle_difference(zfold.scene.model, run, base), 1e-7) << units;
     ASSERT_EQ(run.trajectory.events.size(), 1u) << units;
     EXPECT_NEAR(run.trajectory.events[0].t, base.trajectory.events[0].t, 1e-7) << units;
     EXPECT_NEAR(largest_deflection(run) / L, largest_deflection(base), 1e-4 * largest_deflection(base)) << units;
@@ -201,7 +192,7 @@ run: {t_end: 1, rtol: 1.0e-10, atol: 1.0e-12, sample: 0.01}
     const std::string units = "L = " + std::to_string(L) + ", M = " + std::to_string(M);
     ASSERT_EQ(run.status, sim::RunStatus::finished) << units << ": " << sim::describe(run.failure);
     ASSERT_EQ(run.trajectory.samples.size(), base.trajectory.samples.size()) << units;
-    EXPECT_LT(largest_angle_difference(file.scene.model, run, base), 1e-7) << units;
+    EXPECT_LT(test::largest_angle_difference(file.scene.model, run, base), 1e-7) << units;
     for (std::size_t k = 0; k < run.trajectory.samples.size(); ++k)
       EXPECT_NEAR(run.trajectory.samples[k].loads.element[deflection] / L,
                   base.trajectory.samples[k].loads.element[deflection], 1e-8)
@@ -245,7 +236,7 @@ TEST(UnitInvariance, AFastMechanismFollowsTheSlowOneInItsOwnTime) {
   ASSERT_EQ(run.trajectory.samples.size(), base.trajectory.samples.size());
   ASSERT_TRUE(run.closure && base.closure);
   EXPECT_NEAR(run.closure->rate, s * base.closure->rate, 1e-9 * s * base.closure->rate);
-  EXPECT_LT(largest_angle_difference(original.scene.model, run, base), 1e-7);
+  EXPECT_LT(test::largest_angle_difference(original.scene.model, run, base), 1e-7);
 }
 
 }  // namespace

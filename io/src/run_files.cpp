@@ -390,7 +390,8 @@ std::string summary_json(const sim::Scene& scene, const sim::RunResult& result, 
     json.begin_object("closure");
     json.value("length", c->length).value("rate", c->rate);
     json.value("v_max", c->v_max).value("v_max_source", c->v_max_automatic ? "automatic" : "scene");
-    json.value("regularization", c->regularization);
+    json.value("regularization", c->regularization)
+        .value("regularization_source", c->regularization_automatic ? "automatic" : "scene");
     const sim::RunPeaks& p = result.peaks;
     if (p.closure_rank_at_start >= 0) {
       json.value("rank", p.closure_rank_at_start);

@@ -1,5 +1,6 @@
 #include "unfurl/sim/mobility.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -71,6 +72,20 @@ double Mobility::largest_eigenvalue(const Sweep& sweep, const Eigen::VectorXd& s
     lambda = next;
   }
   return lambda;
+}
+
+Eigen::VectorXd Mobility::spectrum(const Sweep& sweep, const Eigen::VectorXd& scale) {
+  const int m = size();
+  Eigen::MatrixXd SWS(m, m);
+  Eigen::VectorXd unit = Eigen::VectorXd::Zero(m), column(m);
+  for (int c = 0; c < m; ++c) {
+    unit[c] = scale[c];
+    product(sweep, unit.data(), column.data());
+    SWS.col(c) = scale.cwiseProduct(column);
+    unit[c] = 0;
+  }
+  // Symmetric up to the passes' round-off; the solver reads one triangle.
+  return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(SWS, Eigen::EigenvaluesOnly).eigenvalues();
 }
 
 }  // namespace unfurl::sim

@@ -40,7 +40,9 @@ void Regulator::calibrate(const Sweep& sweep) {
   if (settings_.gains == GainTuning::full) {
     Eigen::VectorXd scale(size());
     for (int c = 0; c < size(); ++c) scale[c] = 1 / component_scale(c);
-    delta_ = settings_.regularization * mobility_.largest_eigenvalue(sweep, scale);
+    regularization_ = settings_.regularization.value_or(0);
+    if (!settings_.regularization) regularization_ = automatic_regularization(weakest_mode(sweep, scale));
+    delta_ = regularization_ * mobility_.largest_eigenvalue(sweep, scale);
     for (int c = 0; c < size(); ++c) Delta_[c] = delta_ * component_scale(c) * component_scale(c);
     return;
   }
@@ -51,6 +53,16 @@ void Regulator::calibrate(const Sweep& sweep) {
     diagonal_W0_[c] = column[c];
     unit[c] = 0;
   }
+}
+
+double Regulator::weakest_mode(const Sweep& sweep, const Eigen::VectorXd& scale) {
+  if (size() == 0) return 1;
+  if (size() > kMaxSpectrumComponents) return 0;
+  const Eigen::VectorXd w = mobility_.spectrum(sweep, scale);
+  const double largest = w[size() - 1];
+  for (const double w_i : w)
+    if (w_i > kRedundantMode * largest) return w_i / largest;
+  return 1;  // W = 0: nothing to close
 }
 
 void Regulator::residual_rate(const std::vector<Vec6>& v, double* g_dot) const {

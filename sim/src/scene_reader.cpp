@@ -927,7 +927,8 @@ RegulatorSettings SceneReader::read_regulator(const YAML::Node& node) const {
     r.v_max = number(v, "regulator.v_max");
   r.p0 = number_or(node, "p0", r.p0, "regulator");
   r.p1 = number_or(node, "p1", r.p1, "regulator");
-  r.regularization = number_or(node, "regularization", r.regularization, "regulator");
+  if (const YAML::Node v = node["regularization"]; v && !(v.IsScalar() && v.Scalar() == "auto"))
+    r.regularization = number(v, "regulator.regularization");
   if (node["feedforward"]) r.feedforward = flag(node["feedforward"], "regulator.feedforward");
   if (const YAML::Node solver = node["solver"]) {
     const std::string name = text(solver, "regulator.solver");

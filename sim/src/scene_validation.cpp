@@ -182,7 +182,7 @@ void check_regulator(const RegulatorSettings& r) {
   if (r.v_max) check_positive(*r.v_max, "regulator.v_max");
   check_positive(r.p0, "regulator.p0");
   check_positive(r.p1, "regulator.p1");
-  check_positive(r.regularization, "regulator.regularization");
+  if (r.regularization) check_positive(*r.regularization, "regulator.regularization");
   if (r.p1 >= 1) throw SceneInvalid("regulator.p1", "must be below 1 (b1 = p1 v_max < v_max)");
 }
 

@@ -316,7 +316,7 @@ void regulator(std::ostream& out, const RegulatorSettings& r) {
   out << "\nregulator: {gains: " << (r.gains == GainTuning::full ? "full" : "paper")
       << (r.v_max ? ", v_max: " + format_number(*r.v_max) : "") << ", p0: " << format_number(r.p0)
       << ", p1: " << format_number(r.p1)
-      << ", regularization: " << format_number(r.regularization)
+      << (r.regularization ? ", regularization: " + format_number(*r.regularization) : "")
       << ", feedforward: " << (r.feedforward ? "true" : "false") << ", solver: " << solver << "}\n";
 }
 

@@ -76,7 +76,8 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
   if (const Regulator* regulator = dynamics.regulator()) {
     trajectory.loop_components = regulator->components();
     result.closure = ClosureTuning{dynamics.scales().length, dynamics.scales().rate, regulator->v_max(),
-                                   !scene.regulator.v_max.has_value(), scene.regulator.regularization};
+                                   !scene.regulator.v_max.has_value(), regulator->regularization(),
+                                   !scene.regulator.regularization.has_value()};
   }
   trajectory.load_columns = dynamics.load_columns();
   trajectory.sensor_columns = dynamics.sensor_columns();

@@ -124,24 +124,14 @@ void stowed_snubber(sim::SceneBuilder& b, int j, double stowed, double factor) {
   b.element(snubber);
 }
 
-// The reference pantograph's bandwidth and regularization (SCENES.md).
-// Other sizes, whose latches ring at other rates, take the automatic
-// bandwidth from their own, and a finer regularization: released 0.01 rad
-// off the stowed stack, next to the lazy-tongs' branch point, their weakest
-// loop modes lie at 1.5e-8 (10 stages) and 1.2e-10 (30 stages) of W's
-// largest eigenvalue, below the default 2e-6, which softens them into a
-// lagging loop. At 30 stages (first 6.2 s, rtol 1e-10) 2e-6 took 36,060
-// steps and ended 1.9e-3 rad from a run at 2e-12, 2e-9 took 4,746 steps
-// and ended 1.8e-6 rad from it; 2e-11 loses a loop at the latch-up, where
-// the deployed branch point's lost modes need the softer control.
-constexpr double kArrayRegularization = 2e-9;
-
+// The reference pantograph's bandwidth (SCENES.md). Other sizes, whose
+// latches ring at other rates, take the automatic bandwidth from their own.
+// Every size takes the automatic regularization (Regulator), which for the
+// arrays released next to the lazy-tongs' branch point is finer than the
+// reference's.
 sim::RegulatorSettings cross_link_regulator(int stages) {
   sim::RegulatorSettings regulator;
-  if (stages == 3)
-    regulator.v_max = 2000;
-  else
-    regulator.regularization = kArrayRegularization;
+  if (stages == 3) regulator.v_max = 2000;
   return regulator;
 }
 
@@ -151,11 +141,16 @@ sim::RegulatorSettings cross_link_regulator(int stages) {
 // 10 stages), which the loop's weld removes; measured at 10 stages, 25 times
 // that rate took 14 times the steps and ended 8.7e-4 rad from a tight
 // reference, where the rigid array's 4403 rad/s ended within 1e-8 rad.
-// The rigid array's regularization serves them too: the 10-stage array's
-// first 0.2 s took 1,838 steps at it, 3,528 at the default (rtol 1e-7).
+// Their panels' loop forces follow the panels' vibration, which the
+// regulator lags by delta's share even where W(0) has no weak mode (the
+// 10-stage array's weakest lies at 1.3e-3 of its largest, where the
+// automatic rule keeps 2e-6): its first 0.2 s at rtol 1e-10 ended 2.3e-6
+// rad from a run at 2e-11 at 2e-6, 2.1e-9 rad at 2e-9 (at rtol 1e-7:
+// 3,528 and 1,838 steps), so sizes other than the reference's take the finest.
 sim::RegulatorSettings flexible_cross_link_regulator(int stages) {
   sim::RegulatorSettings regulator = cross_link_regulator(stages);
   if (!regulator.v_max) {
+    regulator.regularization = sim::Regulator::kFinestRegularization;
     const sim::Scene rigid = generate_pantograph(stages).scene;
     sim::Sweep sweep(rigid.model);
     regulator.v_max = sim::Regulator::automatic_bandwidth(sim::mechanism_scales(rigid, sweep).rate);

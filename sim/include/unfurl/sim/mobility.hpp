@@ -36,6 +36,10 @@ class Mobility {
   // regulator's regularization is measured against.
   double largest_eigenvalue(const Sweep& sweep, const Eigen::VectorXd& scale);
 
+  // Every eigenvalue of S W S, ascending: W formed from m products (O(N m))
+  // and decomposed densely (O(m^3)), so for analysis at the start only.
+  Eigen::VectorXd spectrum(const Sweep& sweep, const Eigen::VectorXd& scale);
+
  private:
   using Spatial = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, kMaxDenseComponents>;
   using Coordinates = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, Eigen::Dynamic, kMaxDenseComponents>;

@@ -44,6 +44,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <memory>
 #include <vector>
 
@@ -70,6 +71,36 @@ class Regulator {
   static double automatic_bandwidth(double rate) { return kBandwidthPerRate * rate; }
   static constexpr double kBandwidthPerRate = 25;
 
+  // The regularization chosen for a mechanism whose weakest loop mode at
+  // the start (an eigenvalue of S W(0) S over the largest, round-off's
+  // zeros of exactly redundant equations left out) is `weakest_mode`:
+  // delta closes a mode of eigenvalue w with the gain w / (w + delta), and
+  // a loop released next to a branch point moves along modes that vanish
+  // there (the generated lazy-tongs' weakest: 1.7e-6 at 3 stages, 1.5e-8
+  // at 10, 1.2e-10 at 30, 1.8e-13 at 100). Far above it the loop lags the
+  // rigid mechanism's: 30 stages at 2e-6 (17,000 times its weakest) ended
+  // 1.9e-3 rad from a run at 2e-12 after 6.2 s, at 2e-8 (170 times)
+  // 1.4e-6 rad; 10 stages' first 6 s at 2e-6 (130 times) 1.5e-7 rad from
+  // a run at 2e-11, at ten times its weakest 5.4e-9 (rtol 1e-10). It is kept
+  // between kFinestRegularization, below which a latch-up at the deployed
+  // branch point loses its loop (30 stages at 2e-11) and the right-hand
+  // side's round-off floor passes 1e-10 (2.2e-10 at 2e-9, 30 stages), and
+  // kCoarsestRegularization, the reference scenes' (SCENES.md).
+  static double automatic_regularization(double weakest_mode) {
+    return std::clamp(kRegularizationPerWeakestMode * weakest_mode, kFinestRegularization, kCoarsestRegularization);
+  }
+  static constexpr double kRegularizationPerWeakestMode = 10;
+  static constexpr double kFinestRegularization = 2e-9;
+  static constexpr double kCoarsestRegularization = 2e-6;
+  // Eigenvalues of S W S at or below this share of the largest are the
+  // round-off of exact zeros (measured: below 1e-16 on redundant rods and
+  // at the stowed pantograph's branch point, where the weakest real mode of
+  // a 100-stage array lies at 1.8e-13).
+  static constexpr double kRedundantMode = 1e-14;
+  // Beyond this many components W's spectrum costs more than a run (O(m^3))
+  // and the finest regularization is taken.
+  static constexpr int kMaxSpectrumComponents = 1200;
+
   int size() const { return static_cast<int>(components_.size()); }
   const std::vector<LoopComponent>& components() const { return components_; }
   const RegulatorSettings& settings() const { return settings_; }
@@ -80,6 +111,9 @@ class Regulator {
   double k_v() const { return 2 * settings_.p0 * settings_.p1; }
   // delta (1 / (kg m^2)): regularization x the largest eigenvalue of S W S at the start.
   double delta() const { return delta_; }
+  // The regularization in use (the settings' or automatic_regularization()),
+  // dimensionless; known after calibrate().
+  double regularization() const { return regularization_; }
   // What a component's gap is measured against: the mechanism's length for
   // a linear one, 1 for an angular one.
   double component_scale(int c) const { return components_[c].axis < 3 ? length_ : 1.0; }
@@ -143,6 +177,11 @@ class Regulator {
   const LoopMatrix& mobility(const Sweep& sweep, long configuration);
 
  private:
+  // The weakest eigenvalue of S W S at the sweep's configuration over the
+  // largest, exactly redundant directions left out (0 beyond
+  // kMaxSpectrumComponents).
+  double weakest_mode(const Sweep& sweep, const Eigen::VectorXd& scale);
+
   std::vector<Loop> loops_;
   std::vector<LoopComponent> components_;
   RegulatorSettings settings_;
@@ -150,6 +189,7 @@ class Regulator {
   double length_;
   Mobility mobility_;
   std::unique_ptr<ClosureSolver> solver_;  // the full tuning's solves with R
+  double regularization_ = 0;
   double delta_ = 0;
   Eigen::VectorXd Delta_;  // delta S^-2, per component
   Eigen::VectorXd diagonal_W0_;  // paper tuning: diag W(0)

@@ -22,8 +22,9 @@ struct RegulatorSettings {
   double p0 = 1.0;
   double p1 = 0.5;
   // delta relative to the largest eigenvalue of W(0) in the closure's
-  // metric (linear components over the mechanism's length): dimensionless.
-  double regularization = 2e-6;
+  // metric (linear components over the mechanism's length): dimensionless;
+  // unset: chosen from W(0)'s weakest mode (Regulator::automatic_regularization).
+  std::optional<double> regularization;
   bool feedforward = true;  // full gains: cancel the residual's acceleration d
   ClosureSolverKind solver = ClosureSolverKind::automatic;
 };

@@ -38,6 +38,7 @@ struct ClosureTuning {
   double v_max = 0;           // rad/s, the bandwidth in use
   bool v_max_automatic = true;  // chosen from `rate`, not set by the scene
   double regularization = 0;  // dimensionless: delta over W's largest eigenvalue at the start
+  bool regularization_automatic = true;  // chosen from W's weakest mode, not set by the scene
 };
 
 struct RunResult {
