@@ -40,8 +40,8 @@ void Regulator::calibrate(const Sweep& sweep) {
   if (settings_.gains == GainTuning::full) {
     Eigen::VectorXd scale(size());
     for (int c = 0; c < size(); ++c) scale[c] = 1 / component_scale(c);
-    regularization_ = settings_.regularization.value_or(0);
-    if (!settings_.regularization) regularization_ = automatic_regularization(weakest_mode(sweep, scale));
+    regularization_ = settings_.regularization ? *settings_.regularization
+                                               : automatic_regularization(weakest_mode(sweep, scale));
     delta_ = regularization_ * mobility_.largest_eigenvalue(sweep, scale);
     for (int c = 0; c < size(); ++c) Delta_[c] = delta_ * component_scale(c) * component_scale(c);
     return;
