@@ -52,8 +52,8 @@ struct Case {
 // that every array deploys in about 7 s, and sets BDF's stability-limit
 // detection; these comparisons predate that, and the stiffer arrays'
 // tight-tolerance references are slow below their round-off floor), at the
-// given regularization: the reference, unfurl's own run at rtol 1e-12, must
-// follow the rigid mechanism, and at the default 2e-6 the 30-stage array's
+// given regularization: the reference, unfurl's own tight run, must follow
+// the rigid mechanism, and at the reference's 2e-6 the 30-stage array's
 // first 2 s lag a run at 2e-11 by 5.3e-5 rad (2e-9: 8.9e-9 rad), where the
 // 10-stage one's 20 s (no latch) move by 1.6e-8 rad (rtol 1e-10).
 sim::Scene reference_springs(int stages, const std::string& t_end, const std::string& regularization) {

@@ -17,10 +17,11 @@ namespace {
 double chosen(const sim::Scene& scene) { return sim::Dynamics(scene).regulator()->regularization(); }
 
 TEST(AutomaticRegularization, TheReferenceScenesKeepTheCoarsest) {
-  // Their weakest modes lie at 1.7e-6 (pantograph) and above of the largest.
-  // The stowed pantograph starts at its branch point, where three modes are
-  // zeros at round-off (1e-17): lost, not weak, so they do not count.
-  for (const char* name : {"pantograph", "pantograph_free", "pantograph_stowed", "fourbar"})
+  // Their weakest modes lie at 1.7e-6 (pantograph) and above of the largest
+  // (1.4e-3 on pantograph_flexible). The stowed pantograph starts at its
+  // branch point, where three modes are zeros at round-off (1e-17): lost,
+  // not weak, so they do not count.
+  for (const char* name : {"pantograph", "pantograph_free", "pantograph_stowed", "pantograph_flexible", "fourbar"})
     EXPECT_EQ(chosen(test::scene_file(name)), sim::Regulator::kCoarsestRegularization) << name;
 }
 
@@ -64,6 +65,8 @@ TEST(AutomaticRegularization, ASceneKeepsItsOwnAndTheRunSaysWhich) {
   ASSERT_TRUE(automatic_run.closure);
   EXPECT_EQ(automatic_run.closure->regularization, sim::Regulator::kCoarsestRegularization);
   EXPECT_TRUE(automatic_run.closure->regularization_automatic);
+  const sim::Scene paper = test::scene_file("pantograph", {{"regulator.gains", "paper"}, {"run.t_end", "0.01"}});
+  EXPECT_EQ(chosen(paper), 0);  // the paper's diagonal gains have no delta
 }
 
 }  // namespace

@@ -36,9 +36,9 @@ void expect_same_hinge_peaks(const sim::RunSummary& reference, const sim::RunSum
 }
 
 TEST(LoadDeterminacy, DeterminateHingePeaksDoNotDependOnTheRegulatorsSettings) {
-  // Two decades of regularization up to the default (at 2e-5, ten times
-  // the default, the weak direction at the latch-up, 1e-6 of the strongest,
-  // is held ten times softer and the motion itself moves the peaks by up to
+  // Two decades of regularization up to the pantograph's automatic 2e-6
+  // (at 2e-5, ten times that, the weak direction at the latch-up, 1e-6 of
+  // the strongest, is held ten times softer and the motion itself moves the peaks by up to
   // 1.3e-4); two decades of bandwidth about the file's v_max of 2000 rad/s,
   // from 19 times the mechanism's fastest rate (53 rad/s, the latches'): at
   // 700 (13 times) the softer regulator moves the latch-up itself and the

@@ -37,6 +37,7 @@ const LoopMatrix& Regulator::mobility(const Sweep& sweep, long configuration) {
 
 void Regulator::calibrate(const Sweep& sweep) {
   factorized_configuration_ = -1;  // delta changes
+  regularization_ = 0;  // the paper's gains use none
   if (settings_.gains == GainTuning::full) {
     Eigen::VectorXd scale(size());
     for (int c = 0; c < size(); ++c) scale[c] = 1 / component_scale(c);

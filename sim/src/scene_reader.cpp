@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include "scene_overrides.hpp"
@@ -922,13 +923,17 @@ RegulatorSettings SceneReader::read_regulator(const YAML::Node& node) const {
     else
       fail(gains, "regulator.gains", "expected 'full' or 'paper', got '" + g + "'");
   }
-  // "auto" (or absent): chosen from the mechanism's own rate.
-  if (const YAML::Node v = node["v_max"]; v && !(v.IsScalar() && v.Scalar() == "auto"))
-    r.v_max = number(v, "regulator.v_max");
+  // "auto" (or absent): the regulator chooses (from the mechanism's own
+  // rate; from W's weakest mode).
+  const auto number_or_auto = [&](const char* key) -> std::optional<double> {
+    const YAML::Node v = node[key];
+    if (!v || (v.IsScalar() && v.Scalar() == "auto")) return std::nullopt;
+    return number(v, std::string("regulator.") + key);
+  };
+  r.v_max = number_or_auto("v_max");
   r.p0 = number_or(node, "p0", r.p0, "regulator");
   r.p1 = number_or(node, "p1", r.p1, "regulator");
-  if (const YAML::Node v = node["regularization"]; v && !(v.IsScalar() && v.Scalar() == "auto"))
-    r.regularization = number(v, "regulator.regularization");
+  r.regularization = number_or_auto("regularization");
   if (node["feedforward"]) r.feedforward = flag(node["feedforward"], "regulator.feedforward");
   if (const YAML::Node solver = node["solver"]) {
     const std::string name = text(solver, "regulator.solver");

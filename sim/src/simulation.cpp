@@ -77,7 +77,7 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
     trajectory.loop_components = regulator->components();
     result.closure = ClosureTuning{dynamics.scales().length, dynamics.scales().rate, regulator->v_max(),
                                    !scene.regulator.v_max.has_value(), regulator->regularization(),
-                                   !scene.regulator.regularization.has_value()};
+                                   !scene.regulator.regularization && scene.regulator.gains == GainTuning::full};
   }
   trajectory.load_columns = dynamics.load_columns();
   trajectory.sensor_columns = dynamics.sensor_columns();
