@@ -161,7 +161,8 @@ std::vector<Case> cases(const std::vector<std::string>& names) {
       // within 1.8e-9 rad of the rtol 1e-11 run that the guard raises to 2e-11.
       c.scene = reference_springs(30, "2", "2e-9");
       c.reference_rtol = 1e-11;
-      c.description = "generated 30-stage pantograph with the reference's springs, first 2 s, against unfurl at rtol 1e-11";
+      c.description =
+          "generated 30-stage pantograph with the reference's springs, first 2 s, against unfurl at rtol 1e-11";
     } else {
       throw std::runtime_error("unknown scene '" + name + "'");
     }
@@ -185,7 +186,8 @@ std::vector<Row> compare(const Case& c, double target, std::string& summary) {
   // The reference holds its tolerance (no round-off guard), whatever the steps.
   sim::Scene held = scene;
   held.run.roundoff_guard = false;
-  const Angles reference = c.reduction ? reduction_angles(t_end) : unfurl_angles(scene, run_unfurl(held, c.reference_rtol));
+  const Angles reference =
+      c.reduction ? reduction_angles(t_end) : unfurl_angles(scene, run_unfurl(held, c.reference_rtol));
   std::vector<Row> rows;
   // unfurl: every tolerance; the cheapest within the target is chosen.
   for (double rtol = 1e-5; rtol >= 10 * c.reference_rtol * 0.99; rtol /= 10) {

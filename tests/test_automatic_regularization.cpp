@@ -60,7 +60,8 @@ TEST(AutomaticRegularization, ASceneKeepsItsOwnAndTheRunSaysWhich) {
   ASSERT_TRUE(run.closure);
   EXPECT_EQ(run.closure->regularization, 3e-7);
   EXPECT_FALSE(run.closure->regularization_automatic);
-  const sim::Scene automatic = test::scene_file("pantograph", {{"regulator.regularization", "auto"}, {"run.t_end", "0.01"}});
+  const sim::Scene automatic =
+      test::scene_file("pantograph", {{"regulator.regularization", "auto"}, {"run.t_end", "0.01"}});
   const sim::RunResult automatic_run = sim::simulate(automatic, automatic.run);
   ASSERT_TRUE(automatic_run.closure);
   EXPECT_EQ(automatic_run.closure->regularization, sim::Regulator::kCoarsestRegularization);
