@@ -7,10 +7,8 @@ namespace unfurl::sim {
 
 RunMonitor::RunMonitor(Dynamics& dynamics) : dynamics_(dynamics) {
   peaks_.latch_torque.resize(dynamics.latch_count());
-  peaks_.hinge_force.resize(dynamics.model().size());
-  peaks_.hinge_moment.resize(dynamics.model().size());
-  peaks_.hinge_force_indeterminate.resize(dynamics.model().size());
-  peaks_.hinge_moment_indeterminate.resize(dynamics.model().size());
+  hinge_force_.resize(dynamics.model().size());
+  hinge_moment_.resize(dynamics.model().size());
   peaks_.element.resize(dynamics.element_peaks().size());
   sensor_peaks_ = dynamics.scene().sensor_peaks();
   peaks_.sensor.resize(sensor_peaks_.size());
@@ -33,12 +31,15 @@ std::optional<double> RunMonitor::observe(double t, const double* y) {
   }
   const bool determinate = loads_.determinacy != Determinacy::indeterminate;
   if (loads_.determinacy == Determinacy::not_assessed) peaks_.loads_assessed = false;
-  std::vector<Peak>& force = determinate ? peaks_.hinge_force : peaks_.hinge_force_indeterminate;
-  std::vector<Peak>& moment = determinate ? peaks_.hinge_moment : peaks_.hinge_moment_indeterminate;
   for (std::size_t j = 0; j < loads_.reaction.size(); ++j) {
     const Vec6& r = loads_.reaction[j];
-    force[j].update(r.head<3>().norm(), t);
-    moment[j].update(r.tail<3>().norm(), t);
+    if (determinate) {
+      hinge_force_[j].determinate(r.head<3>().norm(), t);
+      hinge_moment_[j].determinate(r.tail<3>().norm(), t);
+    } else {
+      hinge_force_[j].indeterminate(r.head<3>().norm(), t);
+      hinge_moment_[j].indeterminate(r.tail<3>().norm(), t);
+    }
   }
   if (!determinate) {
     if (!in_indeterminate_span_) peaks_.indeterminate_spans.push_back({t, t});
@@ -62,6 +63,19 @@ std::optional<double> RunMonitor::observe(double t, const double* y) {
     largest = std::max({largest, dynamics_.scales().relative_length(c.distance), c.angle});
   }
   return largest;
+}
+
+RunPeaks RunMonitor::peaks() const {
+  RunPeaks peaks = peaks_;
+  for (const DeterminatePeak& p : hinge_force_) {
+    peaks.hinge_force.push_back(p.settled());
+    peaks.hinge_force_indeterminate.push_back(p.over_indeterminate_steps());
+  }
+  for (const DeterminatePeak& p : hinge_moment_) {
+    peaks.hinge_moment.push_back(p.settled());
+    peaks.hinge_moment_indeterminate.push_back(p.over_indeterminate_steps());
+  }
+  return peaks;
 }
 
 void RunMonitor::step_taken(double h) {

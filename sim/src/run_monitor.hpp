@@ -9,6 +9,7 @@
 #include <optional>
 #include <vector>
 
+#include "determinate_peak.hpp"
 #include "unfurl/sim/dynamics.hpp"
 #include "unfurl/sim/loads.hpp"
 
@@ -28,7 +29,7 @@ class RunMonitor {
   void step_taken(double h);
   void restarted() { ramping_ = true, last_h_ = 0; }
 
-  const RunPeaks& peaks() const { return peaks_; }
+  RunPeaks peaks() const;
   double min_step() const { return min_step_; }
   double min_step_after_restart() const { return min_step_after_restart_; }
 
@@ -36,6 +37,7 @@ class RunMonitor {
   Dynamics& dynamics_;
   RunPeaks peaks_;
   std::vector<TrackedPeak> sensor_peaks_;
+  std::vector<DeterminatePeak> hinge_force_, hinge_moment_;  // per joint
   Loads loads_;
   std::vector<ClosureError> closure_;
   bool in_indeterminate_span_ = false;
