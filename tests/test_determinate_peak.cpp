@@ -1,6 +1,7 @@
 // The determinate peak keeps only maxima the rigid model reaches
 // (determinate_peak.hpp): a load rising into an indeterminate span, or
-// falling out of one, counts with the indeterminate peak.
+// falling out of one, counts with the indeterminate peak, unless a latch
+// engaged where the run-up ends.
 #include <gtest/gtest.h>
 
 #include <utility>
@@ -49,6 +50,17 @@ TEST(DeterminatePeak, ALoadFallingOutOfAnIndeterminateSpanCountsThereUntilItRise
   EXPECT_EQ(peak.settled().value, 4);
   EXPECT_EQ(peak.settled().t, 6);
   EXPECT_EQ(peak.over_indeterminate_steps().value, 8);
+}
+
+TEST(DeterminatePeak, ALatchEngagingEndsTheRunUpBeforeIt) {
+  // The load rises to the latch's engagement, where the steps turn
+  // indeterminate: the model changed there, so 9 is the rigid model's.
+  sim::DeterminatePeak peak = observe({{4, true}, {3, true}, {6, true}, {9, true}});
+  peak.latched();
+  peak.indeterminate(20, 4);
+  EXPECT_EQ(peak.settled().value, 9);
+  EXPECT_EQ(peak.settled().t, 3);
+  EXPECT_EQ(peak.over_indeterminate_steps().value, 20);
 }
 
 TEST(DeterminatePeak, ARunThatEndsRisingKeepsItsLastLoadsAsDeterminate) {

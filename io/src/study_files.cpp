@@ -335,10 +335,11 @@ void write_indeterminate_loads(const StudyReport& report, std::ostream& md) {
   md << "\n## Loads that rigid mechanics cannot determine\n\n**Warning:** in " << indeterminate << " of " << assessed
      << " cases the hinge loads are indeterminate over part of the run: the rigid loops are redundant there (as at "
         "a deployed branch point), or so near it that the regulator's forces depart from the rigid ones. The "
-        "peak hinge forces and moments above and in cases.csv cover only the determinate steps; inside the spans "
-        "the reactions are the minimum-norm ones (peak_hinge_force_indeterminate), and compliance in the loops "
-        "determines them.\n\n| case | status | indeterminate for, s | first from, s | minimum-norm peak hinge "
-        "force, N |\n|---|---|---:|---:|---:|\n";
+        "peak hinge forces and moments above and in cases.csv cover only the determinate steps, and only maxima "
+        "the rigid model reaches there (a load still rising into a span, as a toggle's does, has no rigid bound); "
+        "inside the spans the reactions are the minimum-norm ones (peak_hinge_force_indeterminate, with the rigid "
+        "loads running into and out of the spans), and compliance in the loops determines them.\n\n| case | status "
+        "| indeterminate for, s | first from, s | indeterminate peak hinge force, N |\n|---|---|---:|---:|---:|\n";
   for (const studies::CaseResult& r : report.results) {
     if (value(r, "loads_determinate") != 0) continue;
     md << "| " << r.id << " | " << studies::case_status_name(r.status) << " | " << fmt(value(r, "indeterminate_time"))

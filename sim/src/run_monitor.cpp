@@ -65,6 +65,11 @@ std::optional<double> RunMonitor::observe(double t, const double* y) {
   return largest;
 }
 
+void RunMonitor::latched() {
+  for (DeterminatePeak& p : hinge_force_) p.latched();
+  for (DeterminatePeak& p : hinge_moment_) p.latched();
+}
+
 RunPeaks RunMonitor::peaks() const {
   RunPeaks peaks = peaks_;
   for (const DeterminatePeak& p : hinge_force_) {

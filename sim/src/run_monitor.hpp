@@ -28,6 +28,8 @@ class RunMonitor {
   // first step; until it stops growing the steps count as restart steps.
   void step_taken(double h);
   void restarted() { ramping_ = true, last_h_ = 0; }
+  // Latches engaged at the step's end, before it is observed.
+  void latched();
 
   RunPeaks peaks() const;
   double min_step() const { return min_step_; }

@@ -167,6 +167,7 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
       for (const LatchRoot& r : roots) recorder.event({r.t, r.latch, dynamics.latches()[r.latch]->joint});
       integrator->restart(t_done, y.data());
       monitor.restarted();
+      monitor.latched();
       ++restarts;
     }
     t = t_done;
