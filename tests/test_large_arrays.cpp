@@ -175,10 +175,11 @@ TEST(Generator, FlexiblePantographsCloseTheirLoopsThroughThePlates) {
 }
 
 TEST(Generator, LargerArraysRegularizeFinerAndWatchBdfsStabilityLimit) {
+  using Detection = sim::StabilityLimitDetection;
   // The reference size keeps the reference's settings (SCENES.md).
   const sim::SceneFile reference = studies::generate_pantograph(3);
   EXPECT_FALSE(reference.scene.regulator.regularization);
-  EXPECT_FALSE(reference.scene.run.stability_limit_detection);
+  EXPECT_EQ(reference.scene.run.stability_limit_detection, Detection::off);
   EXPECT_EQ(sim::write_scene_text(reference).find("stability_limit_detection"), std::string::npos);
 
   // Rigid arrays take the automatic regularization (test_automatic_regularization.cpp);
@@ -187,18 +188,25 @@ TEST(Generator, LargerArraysRegularizeFinerAndWatchBdfsStabilityLimit) {
   EXPECT_FALSE(rigid.scene.regulator.regularization);
   EXPECT_EQ(studies::generate_flexible_pantograph(6).scene.regulator.regularization,
             sim::Regulator::kFinestRegularization);
-  EXPECT_TRUE(studies::generate_flexible_pantograph(6).scene.run.stability_limit_detection);
-  EXPECT_TRUE(
-      studies::generate_pantograph(10, studies::CrossPivots::compliant).scene.run.stability_limit_detection);
+  EXPECT_EQ(studies::generate_flexible_pantograph(6).scene.run.stability_limit_detection, Detection::on);
+  EXPECT_EQ(studies::generate_pantograph(10, studies::CrossPivots::compliant).scene.run.stability_limit_detection,
+            Detection::on);
+  // The 3-stage flexible array is pantograph_flexible, which watches from its latch-up on.
+  EXPECT_EQ(studies::generate_flexible_pantograph(3).scene.run.stability_limit_detection, Detection::after_latch);
+  EXPECT_EQ(test::scene_file("pantograph_flexible").run.stability_limit_detection, Detection::after_latch);
   // The setting survives the file.
-  const std::string text = sim::write_scene_text(rigid);
-  EXPECT_NE(text.find("stability_limit_detection: true"), std::string::npos);
-  EXPECT_TRUE(sim::read_scene_text(text, "written").scene.run.stability_limit_detection);
+  for (const sim::SceneFile& file : {rigid, studies::generate_flexible_pantograph(3)}) {
+    const std::string text = sim::write_scene_text(file);
+    EXPECT_EQ(sim::read_scene_text(text, "written").scene.run.stability_limit_detection,
+              file.scene.run.stability_limit_detection);
+  }
+  EXPECT_NE(sim::write_scene_text(rigid).find("stability_limit_detection: true"), std::string::npos);
   try {
     test::scene_file("pantograph", {{"run.stability_limit_detection", "maybe"}});
-    ADD_FAILURE() << "a setting that is no boolean was accepted";
+    ADD_FAILURE() << "a setting that is no boolean nor after_latch was accepted";
   } catch (const std::exception& e) {
     EXPECT_NE(std::string(e.what()).find("run.stability_limit_detection"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("after_latch"), std::string::npos) << e.what();
   }
 }
 

@@ -26,7 +26,7 @@ CvodeIntegrator::CvodeIntegrator(IntegratorKind kind, Dynamics& dynamics, const 
   check(CVodeSVtolerances(mem_, rtol_, atol_), "CVodeSVtolerances");
   check(CVodeSetMaxNumSteps(mem_, -1), "CVodeSetMaxNumSteps");
   check(CVodeSetMaxOrd(mem_, max_order_), "CVodeSetMaxOrd");
-  if (bdf && settings.stability_limit_detection) check(CVodeSetStabLimDet(mem_, SUNTRUE), "CVodeSetStabLimDet");
+  if (settings.stability_limit_detection == StabilityLimitDetection::on) watch_stability_limit();
   if (bdf && uses_krylov(settings, dynamics.size())) {
     krylov_.emplace(y_, dynamics_, ctx_);
     check(CVodeSetLinearSolver(mem_, krylov_->LS, nullptr), "CVodeSetLinearSolver");
@@ -103,6 +103,10 @@ void CvodeIntegrator::restart(double t, const double* y) {
   check(CVodeReInit(mem_, t, y_), "CVodeReInit");
   t_stop_set_ = -1;
   choose_jacobian();
+}
+
+void CvodeIntegrator::watch_stability_limit() {
+  if (max_order_ == 5) check(CVodeSetStabLimDet(mem_, SUNTRUE), "CVodeSetStabLimDet");  // BDF's
 }
 
 bool CvodeIntegrator::set_tolerances(double rtol, double atol) {

@@ -24,6 +24,7 @@ class CvodeIntegrator : public Integrator {
   int interpolation_degree() const override { return max_order_; }  // CVODE's Nordsieck history's
   void restart(double t, const double* y) override;
   bool set_tolerances(double rtol, double atol) override;
+  void watch_stability_limit() override;
   std::vector<int> roots() override;
   SolverStats stats() const override;
   double current_step() const override;

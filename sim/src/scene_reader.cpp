@@ -1022,8 +1022,17 @@ RunSettings SceneReader::read_run(const YAML::Node& node) const {
   run.max_wall_time = number_or(node, "max_wall_time", run.max_wall_time, "run");
   if (node["max_steps"]) run.max_steps = count(node["max_steps"], "run.max_steps", 1, kMostSteps);
   if (node["roundoff_guard"]) run.roundoff_guard = flag(node["roundoff_guard"], "run.roundoff_guard");
-  if (node["stability_limit_detection"])
-    run.stability_limit_detection = flag(node["stability_limit_detection"], "run.stability_limit_detection");
+  if (const YAML::Node detection = node["stability_limit_detection"]) {
+    const std::string name = text(detection, "run.stability_limit_detection");
+    if (name == "true")
+      run.stability_limit_detection = StabilityLimitDetection::on;
+    else if (name == "false")
+      run.stability_limit_detection = StabilityLimitDetection::off;
+    else if (name == "after_latch")
+      run.stability_limit_detection = StabilityLimitDetection::after_latch;
+    else
+      fail(detection, "run.stability_limit_detection", "expected true, false or after_latch, got '" + name + "'");
+  }
   if (node["max_samples"]) run.max_samples = count(node["max_samples"], "run.max_samples", 1, kMostSteps);
   return run;
 }

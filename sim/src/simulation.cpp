@@ -166,6 +166,8 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
       std::stable_sort(roots.begin(), roots.end(), [](const LatchRoot& a, const LatchRoot& b) { return a.t < b.t; });
       for (const LatchRoot& r : roots) recorder.event({r.t, r.latch, dynamics.latches()[r.latch]->joint});
       integrator->restart(t_done, y.data());
+      if (settings.stability_limit_detection == StabilityLimitDetection::after_latch)
+        integrator->watch_stability_limit();
       monitor.restarted();
       monitor.latched();
       ++restarts;

@@ -70,6 +70,9 @@ class Integrator {
   // only when it starts). False for a method without error control (the
   // fixed-step RK4).
   virtual bool set_tolerances(double /*rtol*/, double /*atol*/) { return false; }
+  // From now on, lower the order where it would step beyond its stability
+  // limit (RunSettings::stability_limit_detection; only BDF has one to watch).
+  virtual void watch_stability_limit() {}
   // The step it will try next, and the one just taken.
   virtual double current_step() const = 0;
   virtual double last_step() const = 0;

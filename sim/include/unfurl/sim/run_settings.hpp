@@ -15,6 +15,8 @@ enum class IntegratorKind { cvode_bdf, cvode_adams, arkode_erk, arkode_dirk, rk4
 // O(N) preconditioner (newton_preconditioner.hpp). automatic: dense up to
 // kDenseStatesUpTo states.
 enum class LinearSolverKind { automatic, dense, krylov };
+// When CVODE's BDF watches for its stability limit (RunSettings).
+enum class StabilityLimitDetection { off, on, after_latch };
 inline constexpr int kDenseStatesUpTo = 100;
 
 const char* integrator_name(IntegratorKind kind);
@@ -56,8 +58,10 @@ struct RunSettings {
   // damped modes near the imaginary axis, such as a latched array ringing
   // down, and stepping under that limit costs steps. Off by default: on a
   // scene without such modes it can lower the order for nothing (the
-  // spinning beam took 2.6 times the steps). Other integrators ignore it.
-  bool stability_limit_detection = false;
+  // spinning beam took 2.6 times the steps). after_latch watches from the
+  // first latch's engagement on, so the deployment is stepped as without
+  // it and only the ring-down is watched. Other integrators ignore it.
+  StabilityLimitDetection stability_limit_detection = StabilityLimitDetection::off;
 };
 
 }  // namespace unfurl::sim
