@@ -1,7 +1,7 @@
 // The determinate peak keeps only maxima the rigid model reaches
 // (determinate_peak.hpp): a load rising into an indeterminate span, or
 // falling out of one, counts with the indeterminate peak, unless a latch
-// engaged where the run-up ends.
+// engaged where the run-up or the fall ends.
 #include <gtest/gtest.h>
 
 #include <utility>
@@ -12,61 +12,75 @@
 namespace unfurl {
 namespace {
 
-// (value, determinate) at t = 0, 1, 2, ...
-sim::DeterminatePeak observe(const std::vector<std::pair<double, bool>>& steps) {
+// (value, determinate) at t = 0, 1, 2, ... after those already observed.
+void observe(sim::DeterminatePeak& peak, const std::vector<std::pair<double, bool>>& steps, double t = 0) {
+  for (const auto& [x, determinate] : steps) peak.observe(x, t++, determinate);
+}
+
+sim::DeterminatePeak observed(const std::vector<std::pair<double, bool>>& steps) {
   sim::DeterminatePeak peak;
-  double t = 0;
-  for (const auto& [x, determinate] : steps) {
-    if (determinate)
-      peak.determinate(x, t);
-    else
-      peak.indeterminate(x, t);
-    t += 1;
-  }
+  observe(peak, steps);
   return peak;
 }
 
 TEST(DeterminatePeak, AMaximumBetweenDeterminateStepsIsKept) {
-  const sim::DeterminatePeak peak = observe({{1, true}, {5, true}, {2, true}, {3, true}});
-  EXPECT_EQ(peak.settled().value, 5);
-  EXPECT_EQ(peak.settled().t, 1);
-  EXPECT_EQ(peak.over_indeterminate_steps().value, 0);
+  const sim::DeterminatePeak peak = observed({{1, true}, {5, true}, {2, true}, {3, true}});
+  EXPECT_EQ(peak.settled(true).value, 5);
+  EXPECT_EQ(peak.settled(true).t, 1);
+  EXPECT_EQ(peak.over_indeterminate_steps(true).value, 0);
 }
 
 TEST(DeterminatePeak, ALoadRisingIntoAnIndeterminateSpanIsNotADeterminatePeak) {
   // A toggle: 4 is a maximum; 6, 9 run up to the span, where the rigid
   // load has no bound.
-  const sim::DeterminatePeak peak = observe({{4, true}, {3, true}, {6, true}, {9, true}, {20, false}, {30, false}});
-  EXPECT_EQ(peak.settled().value, 4);
-  EXPECT_EQ(peak.over_indeterminate_steps().value, 30);
-  const sim::DeterminatePeak cut = observe({{4, true}, {3, true}, {6, true}, {9, true}, {2, false}});
-  EXPECT_EQ(cut.over_indeterminate_steps().value, 9);
-  EXPECT_EQ(cut.over_indeterminate_steps().t, 3);
+  const sim::DeterminatePeak peak = observed({{4, true}, {3, true}, {6, true}, {9, true}, {20, false}, {30, false}});
+  EXPECT_EQ(peak.settled(true).value, 4);
+  EXPECT_EQ(peak.over_indeterminate_steps(true).value, 30);
+  const sim::DeterminatePeak cut = observed({{4, true}, {3, true}, {6, true}, {9, true}, {2, false}});
+  EXPECT_EQ(cut.over_indeterminate_steps(true).value, 9);
+  EXPECT_EQ(cut.over_indeterminate_steps(true).t, 3);
+}
+
+TEST(DeterminatePeak, ALoadFallingOrFlatIntoASpanStaysDeterminate) {
+  const sim::DeterminatePeak falling = observed({{5, true}, {3, true}, {1, false}});
+  EXPECT_EQ(falling.settled(true).value, 5);
+  EXPECT_EQ(falling.over_indeterminate_steps(true).value, 1);
+  const sim::DeterminatePeak flat = observed({{2, true}, {4, true}, {4, true}, {1, false}});
+  EXPECT_EQ(flat.settled(true).value, 4);
+  EXPECT_EQ(flat.over_indeterminate_steps(true).value, 1);
 }
 
 TEST(DeterminatePeak, ALoadFallingOutOfAnIndeterminateSpanCountsThereUntilItRises) {
-  const sim::DeterminatePeak peak = observe({{2, true}, {1, true}, {7, false}, {8, true}, {5, true}, {3, true}, {4, true},
-                                             {1, true}});
-  EXPECT_EQ(peak.settled().value, 4);
-  EXPECT_EQ(peak.settled().t, 6);
-  EXPECT_EQ(peak.over_indeterminate_steps().value, 8);
+  const sim::DeterminatePeak peak =
+      observed({{2, true}, {1, true}, {7, false}, {8, true}, {5, true}, {3, true}, {4, true}, {1, true}});
+  EXPECT_EQ(peak.settled(true).value, 4);
+  EXPECT_EQ(peak.settled(true).t, 6);
+  EXPECT_EQ(peak.over_indeterminate_steps(true).value, 8);
 }
 
-TEST(DeterminatePeak, ALatchEngagingEndsTheRunUpBeforeIt) {
+TEST(DeterminatePeak, ALatchEngagingEndsTheRunUpOrTheFallBeforeIt) {
   // The load rises to the latch's engagement, where the steps turn
   // indeterminate: the model changed there, so 9 is the rigid model's.
-  sim::DeterminatePeak peak = observe({{4, true}, {3, true}, {6, true}, {9, true}});
-  peak.latched();
-  peak.indeterminate(20, 4);
-  EXPECT_EQ(peak.settled().value, 9);
-  EXPECT_EQ(peak.settled().t, 3);
-  EXPECT_EQ(peak.over_indeterminate_steps().value, 20);
+  sim::DeterminatePeak rising = observed({{4, true}, {3, true}, {6, true}, {9, true}});
+  rising.latched();
+  observe(rising, {{20, false}}, 4);
+  EXPECT_EQ(rising.settled(true).value, 9);
+  EXPECT_EQ(rising.settled(true).t, 3);
+  EXPECT_EQ(rising.over_indeterminate_steps(true).value, 20);
+  // Falling out of a span, a latch's impact is the rigid model's.
+  sim::DeterminatePeak falling = observed({{20, false}, {8, true}});
+  falling.latched();
+  observe(falling, {{6, true}, {3, true}}, 2);
+  EXPECT_EQ(falling.settled(true).value, 6);
+  EXPECT_EQ(falling.over_indeterminate_steps(true).value, 20);
 }
 
-TEST(DeterminatePeak, ARunThatEndsRisingKeepsItsLastLoadsAsDeterminate) {
-  const sim::DeterminatePeak peak = observe({{1, true}, {2, true}, {3, true}});
-  EXPECT_EQ(peak.settled().value, 3);
-  EXPECT_EQ(peak.settled().t, 2);
+TEST(DeterminatePeak, ARunThatEndsRisingKeepsItsLastLoadsUnlessItFailedThere) {
+  const sim::DeterminatePeak peak = observed({{1, true}, {2, true}, {3, true}});
+  EXPECT_EQ(peak.settled(true).value, 3);
+  EXPECT_EQ(peak.settled(true).t, 2);
+  EXPECT_EQ(peak.settled(false).value, 0);
+  EXPECT_EQ(peak.over_indeterminate_steps(false).value, 3);
 }
 
 }  // namespace

@@ -72,8 +72,8 @@ void print_hinge_force_peaks(const sim::RunSummary& s) {
               s.indeterminate_spans.front()[0], s.indeterminate_spans.back()[1], s.indeterminate_spans.size(),
               sim::total_time(s.indeterminate_spans));
   if (const auto* p = largest(s.peak_hinge_force_indeterminate))
-    std::printf("             peak minimum-norm hinge force %.4g N at %s, t = %.6f s\n", p->peak.value, p->joint.c_str(),
-                p->peak.t);
+    std::printf("             indeterminate peak hinge force %.4g N at %s, t = %.6f s\n", p->peak.value,
+                p->joint.c_str(), p->peak.t);
 }
 
 // Each element peak quantity's largest (a bushing's force), by name.

@@ -160,7 +160,7 @@ void write_compliance_markdown(const ComplianceReport& report, const std::vector
       std::snprintf(buf, sizeof buf, "%.1f (%s)", p.peak_hinge_force, p.peak_hinge_joint.c_str());
       std::string hinge = buf;
       if (p.loads_determinate && !*p.loads_determinate) {
-        std::snprintf(buf, sizeof buf, " where determinate; where indeterminate, minimum-norm %.1f",
+        std::snprintf(buf, sizeof buf, " where determinate; indeterminate %.1f",
                       p.peak_hinge_force_indeterminate);
         hinge += buf;
       }

@@ -336,7 +336,8 @@ void write_indeterminate_loads(const StudyReport& report, std::ostream& md) {
      << " cases the hinge loads are indeterminate over part of the run: the rigid loops are redundant there (as at "
         "a deployed branch point), or so near it that the regulator's forces depart from the rigid ones. The "
         "peak hinge forces and moments above and in cases.csv cover only the determinate steps, and only maxima "
-        "the rigid model reaches there (a load still rising into a span, as a toggle's does, has no rigid bound); "
+        "the rigid model reaches there (a load still rising into a span, as a toggle's does, has no rigid bound, "
+        "unless a latch engages where it ends); "
         "inside the spans the reactions are the minimum-norm ones (peak_hinge_force_indeterminate, with the rigid "
         "loads running into and out of the spans), and compliance in the loops determines them.\n\n| case | status "
         "| indeterminate for, s | first from, s | indeterminate peak hinge force, N |\n|---|---|---:|---:|---:|\n";

@@ -12,13 +12,13 @@ using sundials::check;
 CvodeIntegrator::CvodeIntegrator(IntegratorKind kind, Dynamics& dynamics, const RunSettings& settings,
                                  double t0, const std::vector<double>& y0)
     : dynamics_(dynamics),
-      max_order_(kind == IntegratorKind::cvode_bdf ? 5 : 12),
+      bdf_(kind == IntegratorKind::cvode_bdf),
+      max_order_(bdf_ ? 5 : 12),
       y_(y0, ctx_),
       rtol_(settings.rtol),
       atol_(absolute_tolerances(dynamics, settings.atol), ctx_),
       scratch_(y0, ctx_) {
-  const bool bdf = kind == IntegratorKind::cvode_bdf;
-  mem_ = CVodeCreate(bdf ? CV_BDF : CV_ADAMS, ctx_);
+  mem_ = CVodeCreate(bdf_ ? CV_BDF : CV_ADAMS, ctx_);
   sundials::check_ptr(mem_, "CVodeCreate");
   check(CVodeInit(mem_, sundials::rhs, t0, y_), "CVodeInit");
   check(CVodeSetUserData(mem_, &dynamics_), "CVodeSetUserData");
@@ -27,13 +27,13 @@ CvodeIntegrator::CvodeIntegrator(IntegratorKind kind, Dynamics& dynamics, const 
   check(CVodeSetMaxNumSteps(mem_, -1), "CVodeSetMaxNumSteps");
   check(CVodeSetMaxOrd(mem_, max_order_), "CVodeSetMaxOrd");
   if (settings.stability_limit_detection == StabilityLimitDetection::on) watch_stability_limit();
-  if (bdf && uses_krylov(settings, dynamics.size())) {
+  if (bdf_ && uses_krylov(settings, dynamics.size())) {
     krylov_.emplace(y_, dynamics_, ctx_);
     check(CVodeSetLinearSolver(mem_, krylov_->LS, nullptr), "CVodeSetLinearSolver");
     check(CVodeSetPreconditioner(mem_, sundials::precondition_setup, sundials::precondition_solve),
           "CVodeSetPreconditioner");
     check(CVodeSetJacTimes(mem_, nullptr, sundials::jacobian_times), "CVodeSetJacTimes");
-  } else if (bdf) {
+  } else if (bdf_) {
     dense_.emplace(dynamics.size(), y_, ctx_);
     check(CVodeSetLinearSolver(mem_, dense_->LS, dense_->A), "CVodeSetLinearSolver");
     choose_jacobian();
@@ -106,7 +106,8 @@ void CvodeIntegrator::restart(double t, const double* y) {
 }
 
 void CvodeIntegrator::watch_stability_limit() {
-  if (max_order_ == 5) check(CVodeSetStabLimDet(mem_, SUNTRUE), "CVodeSetStabLimDet");  // BDF's
+  // Only BDF has the limit; the setting persists through CVodeReInit.
+  if (bdf_) check(CVodeSetStabLimDet(mem_, SUNTRUE), "CVodeSetStabLimDet");
 }
 
 bool CvodeIntegrator::set_tolerances(double rtol, double atol) {

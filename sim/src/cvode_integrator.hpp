@@ -37,6 +37,7 @@ class CvodeIntegrator : public Integrator {
   void derivative(double t, int k, double* out);
 
   Dynamics& dynamics_;
+  bool bdf_;
   int max_order_;  // CVODE's defaults: 5 for BDF, 12 for Adams
   sundials::Context ctx_;
   sundials::Vector y_;

@@ -14,10 +14,13 @@
 // regulator departs after (an asymmetric latch-up next to the deployed
 // branch point: 117.80 / 117.72 / 117.59 N at regularization 2e-7 / 2e-6 /
 // 2e-5 on a Monte Carlo draw, against 56.10 / 56.10 / 51.22 N left if it
-// counted as a run-up). A run that ends still rising ends on determinate
-// loads, and keeps them.
+// counted as a run-up); it also ends a fall out of a span, the latch's
+// impact being the rigid model's. A run that ends still rising keeps that
+// run-up as determinate; one that failed there (the regulator lost a loop
+// closing on a toggle) does not.
 #pragma once
 
+#include <cmath>
 #include <limits>
 
 #include "unfurl/sim/loads.hpp"
@@ -26,36 +29,50 @@ namespace unfurl::sim {
 
 class DeterminatePeak {
  public:
-  void determinate(double x, double t) {
-    if (leaving_ && x < previous_) {
-      indeterminate_.update(x, t);
-      previous_ = x;
-      return;
+  // A step's load x at t, and whether the rigid model determined it there.
+  void observe(double x, double t, bool determinate) {
+    if (!determinate) {
+      merge(indeterminate_, run_up_);
+      merge(indeterminate_, {x, t});
+      run_up_ = {}, leaving_ = true, previous_ = std::numeric_limits<double>::infinity();
+    } else if (leaving_ && x < previous_) {
+      merge(indeterminate_, {x, t});
+    } else if (x > previous_) {
+      leaving_ = false;
+      merge(run_up_, {x, t});
+    } else {  // flat or falling: what rose before it is a maximum, and so is x
+      leaving_ = false;
+      settle();
+      merge(settled_, {x, t});
     }
-    leaving_ = false;
-    if (x < previous_) settled_.update(run_up_.value, run_up_.t), run_up_ = {};
-    run_up_.update(x, t);
-    previous_ = x;
-  }
-  void indeterminate(double x, double t) {
-    indeterminate_.update(run_up_.value, run_up_.t);
-    indeterminate_.update(x, t);
-    run_up_ = {}, leaving_ = true, previous_ = std::numeric_limits<double>::infinity();
+    if (determinate) previous_ = x;
   }
   // A latch engaged: the loads since the last fall are a maximum.
   void latched() {
-    settled_.update(run_up_.value, run_up_.t);
-    run_up_ = {}, leaving_ = false, previous_ = 0;
+    settle();
+    leaving_ = false, previous_ = 0;
   }
-  // Over the whole run, the run-up it ends on counted as determinate.
-  Peak settled() const {
+  // Over the whole run; `completed`: whether it went on to its end, so that
+  // a run-up it ends on is the rigid model's.
+  Peak settled(bool completed) const {
     Peak peak = settled_;
-    peak.update(run_up_.value, run_up_.t);
+    if (completed) merge(peak, run_up_);
     return peak;
   }
-  const Peak& over_indeterminate_steps() const { return indeterminate_; }
+  Peak over_indeterminate_steps(bool completed) const {
+    Peak peak = indeterminate_;
+    if (!completed) merge(peak, run_up_);
+    return peak;
+  }
 
  private:
+  static void merge(Peak& into, const Peak& peak) {
+    if (!std::isnan(peak.t)) into.update(peak.value, peak.t);
+  }
+  void settle() {
+    merge(settled_, run_up_);
+    run_up_ = {};
+  }
   Peak settled_, run_up_, indeterminate_;
   double previous_ = 0;
   bool leaving_ = false;  // falling out of an indeterminate span

@@ -33,13 +33,8 @@ std::optional<double> RunMonitor::observe(double t, const double* y) {
   if (loads_.determinacy == Determinacy::not_assessed) peaks_.loads_assessed = false;
   for (std::size_t j = 0; j < loads_.reaction.size(); ++j) {
     const Vec6& r = loads_.reaction[j];
-    if (determinate) {
-      hinge_force_[j].determinate(r.head<3>().norm(), t);
-      hinge_moment_[j].determinate(r.tail<3>().norm(), t);
-    } else {
-      hinge_force_[j].indeterminate(r.head<3>().norm(), t);
-      hinge_moment_[j].indeterminate(r.tail<3>().norm(), t);
-    }
+    hinge_force_[j].observe(r.head<3>().norm(), t, determinate);
+    hinge_moment_[j].observe(r.tail<3>().norm(), t, determinate);
   }
   if (!determinate) {
     if (!in_indeterminate_span_) peaks_.indeterminate_spans.push_back({t, t});
@@ -70,15 +65,15 @@ void RunMonitor::latched() {
   for (DeterminatePeak& p : hinge_moment_) p.latched();
 }
 
-RunPeaks RunMonitor::peaks() const {
+RunPeaks RunMonitor::peaks(bool completed) const {
   RunPeaks peaks = peaks_;
   for (const DeterminatePeak& p : hinge_force_) {
-    peaks.hinge_force.push_back(p.settled());
-    peaks.hinge_force_indeterminate.push_back(p.over_indeterminate_steps());
+    peaks.hinge_force.push_back(p.settled(completed));
+    peaks.hinge_force_indeterminate.push_back(p.over_indeterminate_steps(completed));
   }
   for (const DeterminatePeak& p : hinge_moment_) {
-    peaks.hinge_moment.push_back(p.settled());
-    peaks.hinge_moment_indeterminate.push_back(p.over_indeterminate_steps());
+    peaks.hinge_moment.push_back(p.settled(completed));
+    peaks.hinge_moment_indeterminate.push_back(p.over_indeterminate_steps(completed));
   }
   return peaks;
 }

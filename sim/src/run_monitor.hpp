@@ -31,7 +31,9 @@ class RunMonitor {
   // Latches engaged at the step's end, before it is observed.
   void latched();
 
-  RunPeaks peaks() const;
+  // completed: the run went on to its end (not failed), so the loads it ends
+  // on are as determinate as they were flagged (DeterminatePeak).
+  RunPeaks peaks(bool completed) const;
   double min_step() const { return min_step_; }
   double min_step_after_restart() const { return min_step_after_restart_; }
 

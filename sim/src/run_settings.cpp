@@ -26,4 +26,20 @@ std::optional<IntegratorKind> parse_integrator(const std::string& name) {
   return std::nullopt;
 }
 
+const char* stability_limit_detection_name(StabilityLimitDetection detection) {
+  switch (detection) {
+    case StabilityLimitDetection::off: return "false";
+    case StabilityLimitDetection::on: return "true";
+    case StabilityLimitDetection::after_latch: return "after_latch";
+  }
+  return "?";
+}
+
+std::optional<StabilityLimitDetection> parse_stability_limit_detection(const std::string& name) {
+  for (StabilityLimitDetection detection :
+       {StabilityLimitDetection::off, StabilityLimitDetection::on, StabilityLimitDetection::after_latch})
+    if (name == stability_limit_detection_name(detection)) return detection;
+  return std::nullopt;
+}
+
 }  // namespace unfurl::sim

@@ -1024,14 +1024,10 @@ RunSettings SceneReader::read_run(const YAML::Node& node) const {
   if (node["roundoff_guard"]) run.roundoff_guard = flag(node["roundoff_guard"], "run.roundoff_guard");
   if (const YAML::Node detection = node["stability_limit_detection"]) {
     const std::string name = text(detection, "run.stability_limit_detection");
-    if (name == "true")
-      run.stability_limit_detection = StabilityLimitDetection::on;
-    else if (name == "false")
-      run.stability_limit_detection = StabilityLimitDetection::off;
-    else if (name == "after_latch")
-      run.stability_limit_detection = StabilityLimitDetection::after_latch;
-    else
+    const auto parsed = parse_stability_limit_detection(name);
+    if (!parsed)
       fail(detection, "run.stability_limit_detection", "expected true, false or after_latch, got '" + name + "'");
+    run.stability_limit_detection = *parsed;
   }
   if (node["max_samples"]) run.max_samples = count(node["max_samples"], "run.max_samples", 1, kMostSteps);
   return run;

@@ -331,9 +331,8 @@ void run(std::ostream& out, const RunSettings& r) {
       << ", max_steps: " << r.max_steps << ", max_samples: " << r.max_samples;
   if (r.max_wall_time > 0) out << ", max_wall_time: " << format_number(r.max_wall_time);
   if (!r.roundoff_guard) out << ", roundoff_guard: false";
-  if (r.stability_limit_detection == StabilityLimitDetection::on) out << ", stability_limit_detection: true";
-  if (r.stability_limit_detection == StabilityLimitDetection::after_latch)
-    out << ", stability_limit_detection: after_latch";
+  if (r.stability_limit_detection != StabilityLimitDetection::off)
+    out << ", stability_limit_detection: " << stability_limit_detection_name(r.stability_limit_detection);
   out << "}\n";
 }
 

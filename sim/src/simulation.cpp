@@ -111,6 +111,13 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
   } catch (const std::exception& e) {
     fail(t0, 0, "integrator", e.what());
   }
+  // after_latch: from the first engaged latch on, one engaged at the start too.
+  auto watch_after_latch = [&] {
+    if (settings.stability_limit_detection == StabilityLimitDetection::after_latch &&
+        dynamics.latch_state().engaged_count() > 0)
+      integrator->watch_stability_limit();
+  };
+  if (integrator) watch_after_latch();
   LatchEvents events(dynamics, settings.event_window);
   RunMonitor monitor(dynamics);
   long restarts = 0;
@@ -166,8 +173,7 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
       std::stable_sort(roots.begin(), roots.end(), [](const LatchRoot& a, const LatchRoot& b) { return a.t < b.t; });
       for (const LatchRoot& r : roots) recorder.event({r.t, r.latch, dynamics.latches()[r.latch]->joint});
       integrator->restart(t_done, y.data());
-      if (settings.stability_limit_detection == StabilityLimitDetection::after_latch)
-        integrator->watch_stability_limit();
+      watch_after_latch();
       monitor.restarted();
       monitor.latched();
       ++restarts;
@@ -199,7 +205,7 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
   result.stats.min_step = monitor.min_step();
   result.stats.min_step_after_restart = monitor.min_step_after_restart();
   result.stats.grazes = events.grazes();
-  result.peaks = monitor.peaks();
+  result.peaks = monitor.peaks(result.status != RunStatus::failed);
   result.rhs_calls = dynamics.rhs_calls();
   result.jacobian_product_evals = dynamics.jacobian_product_evals();
   result.wall_time_s =

@@ -32,7 +32,8 @@ void record_overlay(const Study& study, const sim::Scene& scene, const sim::Traj
 
 // loads_determinate (1, 0, or NaN where not assessed), the time inside
 // indeterminate spans, where the first begins, and the largest
-// minimum-norm hinge force there (RunPeaks).
+// indeterminate hinge force (RunPeaks: the minimum-norm ones in the spans,
+// the rigid ones running into and out of them).
 void append_determinacy(const sim::RunPeaks& peaks, double peak_indeterminate_force, std::vector<double>& outputs) {
   const auto& spans = peaks.indeterminate_spans;
   outputs.push_back(!peaks.loads_assessed ? kNaN : spans.empty() ? 1.0 : 0.0);

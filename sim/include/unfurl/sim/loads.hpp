@@ -83,12 +83,14 @@ struct Peak {
 // Peaks over every step the integrator took (not only the samples: a latch's
 // shock lasts milliseconds), and the largest geometric loop gap. The
 // reactions' peaks are kept apart where the loads are determinate and where
-// they are not (Loads::determinacy): there they are the minimum-norm ones.
+// they are not (Loads::determinacy): there they are the minimum-norm ones,
+// with the rigid loads running into and out of those spans, which the rigid
+// model does not bound (determinate_peak.hpp in the sources).
 struct RunPeaks {
   std::vector<Peak> latch_torque;   // per latch, |tau_L|
-  std::vector<Peak> hinge_force;    // per joint, |f| of the reaction, determinate steps
-  std::vector<Peak> hinge_moment;   // per joint, |m| about the hinge point, determinate steps
-  std::vector<Peak> hinge_force_indeterminate;  // the same over the indeterminate steps
+  std::vector<Peak> hinge_force;    // per joint, |f| of the reaction, maxima over determinate steps
+  std::vector<Peak> hinge_moment;   // per joint, |m| about the hinge point, likewise
+  std::vector<Peak> hinge_force_indeterminate;  // the same over the indeterminate steps and run-ups
   std::vector<Peak> hinge_moment_indeterminate;
   // [t0, t1]: from the first to the last step of each run of indeterminate
   // steps.

@@ -22,6 +22,9 @@ inline constexpr int kDenseStatesUpTo = 100;
 const char* integrator_name(IntegratorKind kind);
 // Parses "cvode-bdf" etc.; nullopt for an unknown name.
 std::optional<IntegratorKind> parse_integrator(const std::string& name);
+// As a scene file spells it: false, true, after_latch.
+const char* stability_limit_detection_name(StabilityLimitDetection detection);
+std::optional<StabilityLimitDetection> parse_stability_limit_detection(const std::string& name);
 const std::vector<IntegratorKind>& all_integrators();
 
 struct RunSettings {

@@ -40,8 +40,8 @@ struct RunSummary {
   std::vector<ElementPeakValue> sensor_peaks;
   // Whether the motion determined every load (nullopt: not assessed, a
   // scene with more loop components than the analysis takes); where it did
-  // not, from when to when, and the minimum-norm reactions' peaks there
-  // (the peaks above are over the rest of the run).
+  // not, from when to when, and the peaks there (RunPeaks: the minimum-norm
+  // reactions, and the rigid ones running into and out of the spans).
   std::optional<bool> loads_determinate;
   std::vector<std::array<double, 2>> indeterminate_spans;
   std::vector<NamedPeak> peak_hinge_force_indeterminate;

@@ -30,7 +30,7 @@ struct PinLoads {
   std::string peak_hinge_joint;
   double peak_pin_force = 0;            // the largest over the bushings, N (compliant runs)
   std::optional<bool> loads_determinate;
-  double peak_hinge_force_indeterminate = 0;  // rigid runs: the minimum-norm peak where indeterminate
+  double peak_hinge_force_indeterminate = 0;  // rigid runs: the indeterminate peak (RunPeaks)
   long steps = 0;
   double wall_time_s = 0;
 };
