@@ -46,6 +46,30 @@ TEST(Handover, SamplesStreamToTheReader) {
   EXPECT_EQ(direct.trajectory.samples.back().y, copy.samples.back().y);
 }
 
+TEST(Handover, AnIntegratedRunHasAllItsSamplesBeforeItsSummary) {
+  // The plots draw a run's final curves once it is integrated, while its
+  // summary (torque margins, clearance) is still being computed.
+  SimulationWorker worker;
+  const long generation = worker.run(test::scene_file("pantograph", {{"run.t_end", "2"}}));
+  long seen = -1;
+  sim::Trajectory copy, previous;
+  RunProgress p;
+  for (int frame = 0; frame < 60 * 120 && !(seen == generation && !p.running); ++frame) {
+    p = worker.sync(seen, copy, previous);
+    if (seen == generation && p.integrated) {
+      EXPECT_EQ(copy.samples.size(), 201u);
+      EXPECT_DOUBLE_EQ(copy.t_end(), 2.0);
+    }
+    if (seen == generation && !p.integrated) {
+      EXPECT_TRUE(p.running);
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  EXPECT_TRUE(p.integrated);
+  EXPECT_FALSE(p.running);
+  EXPECT_NE(p.summary, nullptr);
+}
+
 TEST(Handover, ANewRequestCancelsTheRunInProgress) {
   SimulationWorker worker;
   long seen = -1;

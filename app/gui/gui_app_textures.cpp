@@ -108,12 +108,13 @@ void GuiApp::draw_plots_texture() {
   // when their data or size changed, at most twice a second while a
   // run streams in. The play-head is drawn over them by the panel.
   const int w = std::max(16, state_.plots_width), h = std::max(16, state_.plots_height);
-  // The summary (the torque margins) arrives after the last sample.
+  // The summary (the torque margins) arrives after the last sample, which
+  // is drawn at once: the throttle is for a run streaming in.
   const PlotsKey key{state_.generation, state_.trajectory.samples.size(), state_.ghost.samples.size(), w, h,
                      state_.plot_tab,   state_.plots_version, state_.progress.summary != nullptr};
   const double now = now_seconds();
   if (plots_ && key == plots_key_) return;
-  if (plots_ && state_.progress.running && now - plots_drawn_at_ < 0.5) return;
+  if (plots_ && !state_.run_integrated() && now - plots_drawn_at_ < 0.5) return;
   if (!plots_ || plots_->width() != w || plots_->height() != h) plots_ = std::make_unique<render::Framebuffer>(w, h, 1);
   if (!plots_layer_) plots_layer_ = std::make_unique<render::ImGuiLayer>(std::round(15 * state_.applied_scale));
   plots_key_ = key;
@@ -134,7 +135,7 @@ void GuiApp::draw_plots_texture() {
   }
   plots_layer_->end_frame();
   plots_->resolve();
-  if (state_.run_settled() && state_.edited_at > state_.curves_at) state_.curves_at = now_seconds();
+  if (state_.run_integrated() && state_.edited_at > state_.curves_at) state_.curves_at = now_seconds();
 }
 
 }  // namespace unfurl::app

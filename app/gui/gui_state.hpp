@@ -188,6 +188,10 @@ struct GuiState {
   // The last requested run has run to its end (finished or failed): it is
   // neither computing nor waiting for the simulation thread to take it.
   bool run_settled() const { return !progress.running && generation >= requested_generation; }
+  // ... or has all its samples, its summary still to come.
+  bool run_integrated() const {
+    return (!progress.running || progress.integrated) && generation >= requested_generation;
+  }
   // ... and has a result to keep: what "Pin this run" needs.
   bool run_pinnable() const { return run_settled() && progress.summary && !trajectory.empty(); }
   std::string notice;  // the last file saved, or error

@@ -108,6 +108,10 @@ void SimulationWorker::loop() {
       result.status = sim::RunStatus::failed;
       result.failure = {0, 0, "setup", e.what()};
     }
+    if (result.status != sim::RunStatus::cancelled) {
+      std::lock_guard<std::mutex> lock(mutex_);
+      progress_.integrated = true;
+    }
     // An edit during the summary (a large array's torque margins and
     // clearance take seconds) cancels it too: its run is superseded.
     std::shared_ptr<const sim::RunSummary> summary;

@@ -25,6 +25,9 @@ struct RunProgress {
   long generation = 0;         // increments with every new run
   sim::RunStatus status = sim::RunStatus::finished;
   bool running = false;
+  // Every sample is in: the curves are final while the summary (torque
+  // margins, clearance) is still computed.
+  bool integrated = false;
   std::string failure;         // a solver failure, said where
   double t_reached = 0;
   double wall_time_s = 0;
