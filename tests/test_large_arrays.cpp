@@ -13,6 +13,7 @@
 #include "unfurl/sim/dynamics.hpp"
 #include "unfurl/sim/elements/bushing.hpp"
 #include "unfurl/sim/elements/joint_compliance.hpp"
+#include "unfurl/sim/elements/joint_limit.hpp"
 #include "unfurl/sim/scene_file.hpp"
 #include "unfurl/sim/summary.hpp"
 #include "unfurl/studies/scene_generators.hpp"
@@ -102,7 +103,7 @@ TEST(Generator, CompliantPantographsAreTreesWithAPinPerStage) {
 }
 
 TEST(Generator, ThreeStageFlexiblePantographIsTheReferenceScene) {
-  const sim::Scene generated = studies::generate_flexible_pantograph(3).scene;
+  const sim::Scene generated = studies::generate_flexible_pantograph(3, studies::Snubbers::none).scene;
   const sim::Scene reference = test::scene_file("pantograph_flexible");
   expect_same_mechanism(generated, reference);
   int plates = 0;
@@ -155,6 +156,10 @@ TEST(Generator, FlexiblePantographsCloseTheirLoopsThroughThePlates) {
   EXPECT_EQ(scene.model.size(), 4 * 6 + 2);
   EXPECT_EQ(scene.loops.size(), 6u);
   EXPECT_EQ(scene.elements_of<sim::JointCompliance>().size(), 6u);
+  // A snubber under each hinge of the two chains, as on the compliant array.
+  EXPECT_EQ(scene.elements_of<sim::JointLimit>().size(), 2u * 6 + 2);
+  const sim::Scene bare = studies::generate_flexible_pantograph(6, studies::Snubbers::none).scene;
+  EXPECT_TRUE(bare.elements_of<sim::JointLimit>().empty());
   int plates = 0;
   for (const sim::Body& body : scene.model.bodies) plates += body.flexible != nullptr;
   EXPECT_EQ(plates, 12);
@@ -192,7 +197,8 @@ TEST(Generator, LargerArraysRegularizeFinerAndWatchBdfsStabilityLimit) {
   EXPECT_EQ(studies::generate_pantograph(10, studies::CrossPivots::compliant).scene.run.stability_limit_detection,
             Detection::on);
   // The 3-stage flexible array is pantograph_flexible, which watches from its latch-up on.
-  EXPECT_EQ(studies::generate_flexible_pantograph(3).scene.run.stability_limit_detection, Detection::after_latch);
+  EXPECT_EQ(studies::generate_flexible_pantograph(3, studies::Snubbers::none).scene.run.stability_limit_detection,
+            Detection::after_latch);
   EXPECT_EQ(test::scene_file("pantograph_flexible").run.stability_limit_detection, Detection::after_latch);
   // The setting survives the file.
   for (const sim::SceneFile& file : {rigid, studies::generate_flexible_pantograph(3)}) {

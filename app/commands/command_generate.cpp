@@ -18,7 +18,7 @@ namespace unfurl::app {
 namespace {
 
 const char* kHelp =
-    "usage: unfurl generate pantograph --stages N [--compliant [--no-snubbers] | --flexible] [-o FILE]\n"
+    "usage: unfurl generate pantograph --stages N [--compliant | --flexible] [--no-snubbers] [-o FILE]\n"
     "       unfurl generate zfold --panels N [-o FILE]\n"
     "       unfurl generate chain --links N [-o FILE]\n"
     "       unfurl generate rods --rods N [-o FILE]\n"
@@ -35,8 +35,9 @@ const char* kHelp =
     "               so that it cannot fold back into the stack; --no-snubbers leaves\n"
     "               them out (N = 3 is then the built-in `pantograph_compliant`); with\n"
     "               --flexible its panels are pantograph_flexible's plates and its loops\n"
-    "               close through their bending at compliant pivots (N = 3 is the\n"
-    "               built-in `pantograph_flexible`)\n"
+    "               close through their bending at compliant pivots, its hinges on\n"
+    "               snubbers likewise (N = 3 with --no-snubbers is the built-in\n"
+    "               `pantograph_flexible`)\n"
     "  zfold        a frame and N panels Z-folded on the bus, a tree; N = 3 is `zfold`\n"
     "  chain        N uniform links hanging under gravity, a tree for scaling runs\n"
     "  rods         two cranks joined by N parallel rods, turning freely through their\n"

@@ -128,12 +128,13 @@ def generate(kind, n, compliant=False, flexible=False, snubbers=True):
     """A scene of any size, as `unfurl generate` writes it.
 
     kind: "pantograph" (n stages: 3n + 2 bodies, n loops; compliant=True
-    for cross-links on bushings, a tree whose hinges stand on snubbers
-    unless snubbers=False; flexible=True for plate panels whose loops close
-    through their bending), "zfold" (n panels), "chain" (n links), "rods"
-    (n parallel rods) or "beam" (n segments). n = 3 gives the built-in
-    pantograph, pantograph_flexible and zfold. Raises ValueError on a bad
-    kind, size or combination.
+    for cross-links on bushings, a tree; flexible=True for plate panels
+    whose loops close through their bending; either one's hinges stand on
+    snubbers unless snubbers=False), "zfold" (n panels), "chain" (n links),
+    "rods" (n parallel rods) or "beam" (n segments). n = 3 gives the
+    built-in pantograph and zfold, and with snubbers=False
+    pantograph_compliant and pantograph_flexible. Raises ValueError on a
+    bad kind, size or combination.
     """
     if isinstance(n, bool) or not isinstance(n, (int, np.integer)):
         raise TypeError(f"generate: the size is a whole number, got {n!r}")

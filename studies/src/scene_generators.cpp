@@ -331,7 +331,7 @@ sim::SceneFile generate_pantograph(int stages, CrossPivots pivots, Snubbers snub
   return b.build();
 }
 
-sim::SceneFile generate_flexible_pantograph(int stages) {
+sim::SceneFile generate_flexible_pantograph(int stages, Snubbers snubbers) {
   check_count(stages, "the number of stages");
   const int N = stages;
   const std::string count = std::to_string(N);
@@ -353,6 +353,8 @@ sim::SceneFile generate_flexible_pantograph(int stages) {
   b.sensor(tip, "panel_A" + count);
   b.regulator(flexible_cross_link_regulator(N));
   for (int j = 1; j <= 3 * N + 2; ++j) b.initial_position(joint_name(j), {stowed_angle(N, j)});
+  if (snubbers == Snubbers::stowed)
+    for (int j = 1; j <= 2 * N + 2; ++j) stowed_snubber(b, j, stowed_angle(N, j), size_factor(N));
   sim::RunSettings r = array_run(N, 1e-8, 1e-10);
   // pantograph_flexible's: its deployment as without the detection.
   if (N == 3) r.stability_limit_detection = sim::StabilityLimitDetection::after_latch;
@@ -366,13 +368,13 @@ sim::SceneFile generate_scene(const std::string& kind, int size, const ArrayOpti
                                 "--no-snubbers) apply to a pantograph only");
   if (options.compliant && options.flexible)
     throw std::invalid_argument("compliant and flexible (--compliant, --flexible) are two different arrays: give one");
-  if (!options.snubbers && !options.compliant)
+  if (!options.snubbers && !options.compliant && !options.flexible)
     throw std::invalid_argument(
-        "leaving the snubbers out (--no-snubbers, snubbers=False) applies to a compliant pantograph only");
-  if (kind == "pantograph" && options.flexible) return generate_flexible_pantograph(size);
+        "leaving the snubbers out (--no-snubbers, snubbers=False) applies to a compliant or flexible pantograph only");
+  const Snubbers snubbers = options.snubbers ? Snubbers::stowed : Snubbers::none;
+  if (kind == "pantograph" && options.flexible) return generate_flexible_pantograph(size, snubbers);
   if (kind == "pantograph")
-    return generate_pantograph(size, options.compliant ? CrossPivots::compliant : CrossPivots::rigid,
-                               options.snubbers ? Snubbers::stowed : Snubbers::none);
+    return generate_pantograph(size, options.compliant ? CrossPivots::compliant : CrossPivots::rigid, snubbers);
   if (kind == "zfold") return generate_zfold(size);
   if (kind == "chain") return generate_chain(size);
   if (kind == "rods") return generate_parallel_rods(size);

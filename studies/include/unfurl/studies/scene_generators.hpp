@@ -15,13 +15,16 @@ namespace unfurl::studies {
 // between full-mass panels that leave the mechanism a tree.
 enum class CrossPivots { rigid, compliant };
 
-// Whether a compliant array's stowed stack rests on snubbers: each hinge
-// stopped at its stowed angle (a JointLimit as stiff as its latch), so it
-// opens but never folds back into the stack. Without them the pins let the
-// inner panels of a 10-stage array fold through the stowed lazy-tongs'
-// branch point within 2 s and hang up there, folded; the rigid loops hold
-// every hinge on the lazy-tongs' path, which never folds back, so rigid
-// arrays have none.
+// Whether a compliant or flexible array's stowed stack rests on snubbers:
+// each hinge stopped at its stowed angle (a JointLimit as stiff as its
+// latch), so it opens but never folds back into the stack. Without them the
+// pins let the inner panels of a 10-stage array fold through the stowed
+// lazy-tongs' branch point within 2 s and hang up there, folded (compliant:
+// 14 of 22 latches engaged; flexible, where the loops close through the
+// plates' bending and compliant pivots: 10 of 22 in 20 s, hinges ending up
+// to 0.13 rad past their stowed angle); the rigid loops hold every hinge
+// on the lazy-tongs' path, which never folds back, so rigid arrays have
+// none.
 enum class Snubbers { stowed, none };
 
 // Two chains of a frame and N panels cross-linked into a lazy-tongs with N
@@ -32,16 +35,15 @@ sim::SceneFile generate_pantograph(int stages, CrossPivots pivots = CrossPivots:
                                    Snubbers snubbers = Snubbers::stowed);
 
 // The pantograph with N pairs of flexible plate panels, its N loops closing
-// through their bending at compliant cross pivots; N = 3 is the built-in
-// `pantograph_flexible`. Its springs, latches and pins are scaled with the
-// size as the rigid and compliant arrays' are; its plates are the same
-// panels at every size. Its loops hold every hinge on the lazy-tongs'
-// path, as the rigid array's do, so it needs no snubbers.
-sim::SceneFile generate_flexible_pantograph(int stages);
+// through their bending at compliant cross pivots; N = 3 without snubbers
+// is the built-in `pantograph_flexible`. Its springs, latches and pins are
+// scaled with the size as the rigid and compliant arrays' are; its plates
+// are the same panels at every size.
+sim::SceneFile generate_flexible_pantograph(int stages, Snubbers snubbers = Snubbers::stowed);
 
 // A generated scene by kind and size, as `unfurl generate` and Python's
 // unfurl.generate name them: "pantograph" (stages; `compliant` or
-// `flexible`, and a compliant one's `snubbers`), "zfold" (panels), "chain"
+// `flexible`, and a compliant or flexible one's `snubbers`), "zfold" (panels), "chain"
 // (links), "rods" or "beam" (segments). Throws std::invalid_argument
 // naming a bad kind, size or combination of options.
 struct ArrayOptions {
