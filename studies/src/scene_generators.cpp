@@ -114,16 +114,6 @@ void chain_latches(sim::SceneBuilder& b, int first, int count, double factor) {
   }
 }
 
-// A snubber under hinge j in the stowed stack: it stops the hinge at its
-// stowed angle, on the side the hinge folds, as stiff as its latch.
-void stowed_snubber(sim::SceneBuilder& b, int j, double stowed, double factor) {
-  auto snubber = std::make_shared<sim::JointLimit>(b.joint_index(joint_name(j), "limits"));
-  (stowed > 0 ? snubber->upper : snubber->lower) = stowed;
-  snubber->stiffness = factor * kLatch;
-  snubber->damping = factor * kLatchDamping;
-  b.element(snubber);
-}
-
 // The reference pantograph's bandwidth (SCENES.md). Other sizes, whose
 // latches ring at other rates, take the automatic bandwidth from their own.
 // Every size takes the automatic regularization (Regulator), which for the
@@ -202,6 +192,20 @@ double stowed_angle(int N, int j) {
   if (j == N + 2) return kOpen;
   if (j <= 2 * N + 2) return ((j - N - 1) % 2 == 0 ? -2 : 2) * kOpen;
   return ((j - 2 * N - 2) % 2 == 1 ? 2 : -2) * kOpen;
+}
+
+// A snubber under each hinge of an N-stage array's two chains: it stops
+// the hinge at its stowed angle, on the side the hinge folds, as stiff as
+// its latch.
+void stowed_snubbers(sim::SceneBuilder& b, int N) {
+  for (int j = 1; j <= 2 * N + 2; ++j) {
+    const double stowed = stowed_angle(N, j);
+    auto snubber = std::make_shared<sim::JointLimit>(b.joint_index(joint_name(j), "limits"));
+    (stowed > 0 ? snubber->upper : snubber->lower) = stowed;
+    snubber->stiffness = size_factor(N) * kLatch;
+    snubber->damping = size_factor(N) * kLatchDamping;
+    b.element(snubber);
+  }
 }
 
 // Each half of a cross pivot's pin (a chain A panel's plate is as much
@@ -325,8 +329,7 @@ sim::SceneFile generate_pantograph(int stages, CrossPivots pivots, Snubbers snub
   else
     cross_loops(b, N);
   for (int j = 1; j <= (compliant ? 2 : 3) * N + 2; ++j) b.initial_position(joint_name(j), {stowed_angle(N, j)});
-  if (compliant && snubbers == Snubbers::stowed)
-    for (int j = 1; j <= 2 * N + 2; ++j) stowed_snubber(b, j, stowed_angle(N, j), size_factor(N));
+  if (compliant && snubbers == Snubbers::stowed) stowed_snubbers(b, N);
   b.run(array_run(N, 1e-10, 1e-12));
   return b.build();
 }
@@ -353,8 +356,7 @@ sim::SceneFile generate_flexible_pantograph(int stages, Snubbers snubbers) {
   b.sensor(tip, "panel_A" + count);
   b.regulator(flexible_cross_link_regulator(N));
   for (int j = 1; j <= 3 * N + 2; ++j) b.initial_position(joint_name(j), {stowed_angle(N, j)});
-  if (snubbers == Snubbers::stowed)
-    for (int j = 1; j <= 2 * N + 2; ++j) stowed_snubber(b, j, stowed_angle(N, j), size_factor(N));
+  if (snubbers == Snubbers::stowed) stowed_snubbers(b, N);
   sim::RunSettings r = array_run(N, 1e-8, 1e-10);
   // pantograph_flexible's: its deployment as without the detection.
   if (N == 3) r.stability_limit_detection = sim::StabilityLimitDetection::after_latch;

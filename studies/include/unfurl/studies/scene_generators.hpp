@@ -19,12 +19,13 @@ enum class CrossPivots { rigid, compliant };
 // each hinge stopped at its stowed angle (a JointLimit as stiff as its
 // latch), so it opens but never folds back into the stack. Without them the
 // pins let the inner panels of a 10-stage array fold through the stowed
-// lazy-tongs' branch point within 2 s and hang up there, folded (compliant:
-// 14 of 22 latches engaged; flexible, where the loops close through the
-// plates' bending and compliant pivots: 10 of 22 in 20 s, hinges ending up
-// to 0.13 rad past their stowed angle); the rigid loops hold every hinge
-// on the lazy-tongs' path, which never folds back, so rigid arrays have
-// none.
+// lazy-tongs' branch point and hang up there, folded: compliant, within
+// 2 s, 14 of 22 latches engaged; flexible, where the loops close through
+// the plates' bending and compliant pivots, 10 of 22 in 20 s, hinges
+// ending up to 0.13 rad past their stowed angle (with them 18 of 22: one
+// pair per chain stays held 0.011 rad past its snubbers). The rigid loops
+// hold every hinge on the lazy-tongs' path, which never folds back, so
+// rigid arrays have none.
 enum class Snubbers { stowed, none };
 
 // Two chains of a frame and N panels cross-linked into a lazy-tongs with N
