@@ -6,6 +6,7 @@
 
 #include "closure_rank.hpp"
 #include "newton_preconditioner.hpp"
+#include "sparse_closure_rank.hpp"
 #include "subtree_spans.hpp"
 
 namespace unfurl::sim {
@@ -74,11 +75,14 @@ Dynamics::Dynamics(const Scene& scene)
     regulator_.emplace(scene_.model, scene_.loops, std::move(components), scene_.regulator, v_max, scales_.length);
     configure(scene_.q0.data());
     regulator_->calibrate(sweep_);
-    if (layout_.m <= kMaxDenseComponents) {
-      Eigen::VectorXd S(layout_.m);
-      for (int c = 0; c < layout_.m; ++c) S[c] = 1 / regulator_->component_scale(c);
-      closure_rank_ = std::make_unique<ClosureRank>(S);
-    }
+    Eigen::VectorXd S(layout_.m);
+    for (int c = 0; c < layout_.m; ++c) S[c] = 1 / regulator_->component_scale(c);
+    // The rigid loop forces at rest and in linearizations need W formed;
+    // the loads' analysis follows the closure solver (sparse beyond
+    // kMaxDenseComponents, or asked for).
+    if (layout_.m <= kMaxDenseComponents) closure_rank_ = std::make_unique<ClosureRank>(S);
+    if (scene_.regulator.solver == ClosureSolverKind::sparse || !closure_rank_)
+      sparse_closure_rank_ = std::make_unique<SparseClosureRank>(scene_.model, scene_.loops, regulator_->components(), S);
     lambda_.resize(layout_.m);
     g_.resize(layout_.m);
     g_dot_.resize(layout_.m);
@@ -153,6 +157,7 @@ std::vector<double> Dynamics::initial_state() {
   for (const JointDriver* d : drivers_) y[layout_.p() + model.velocity_of(d->joint).value] = 0;
   if (regulator_ && closure_rank_ && regulator_->uses_feedforward()) start_integral_at_rest(y.data());
   if (closure_rank_) closure_rank_->forget();
+  if (sparse_closure_rank_) sparse_closure_rank_->forget();
   return y;
 }
 
@@ -347,19 +352,24 @@ bool Dynamics::loads(double t, const double* y, Loads& out, std::vector<ClosureE
   add_element_forces(q, w);
   out.determinacy = Determinacy::determinate;
   out.closure_rank = -1;
-  if (regulator_ && closure_rank_) {
+  if (regulator_) {
     if (!regulator_->uses_feedforward()) {  // else evaluate() left d in d_
       sweep_.accelerations(v_, w, F_, Q_joint_.data(), bias_, a_, ddq_.data(), driven_acceleration);
       regulator_->residual_rate(a_, d_.data());
       add_element_forces(q, w);
     }
-    closure_rank_->compute(regulator_->mobility(sweep_, configuration_key_));
     // lambda_ holds the regulator's loop forces, which moved the mechanism.
-    if (!closure_rank_->loop_forces(d_.data(), lambda_.data(), at == At::step_end))
+    const bool remember = at == At::step_end;
+    if (!sparse_closure_rank_) {
+      closure_rank_->compute(regulator_->mobility(sweep_, configuration_key_));
+      if (!closure_rank_->loop_forces(d_.data(), lambda_.data(), remember))
+        out.determinacy = Determinacy::indeterminate;
+      out.closure_rank = closure_rank_->rank();
+    } else if (!sparse_closure_rank_->compute(sweep_)) {
+      out.determinacy = Determinacy::not_assessed;  // the regulator's loop forces stand
+    } else if (!sparse_closure_rank_->loop_forces(d_.data(), lambda_.data(), remember)) {
       out.determinacy = Determinacy::indeterminate;
-    out.closure_rank = closure_rank_->rank();
-  } else if (regulator_) {
-    out.determinacy = Determinacy::not_assessed;
+    }
   }
   if (regulator_) regulator_->apply(lambda_.data(), F_);
   sweep_.accelerations(v_, w, F_, Q_joint_.data(), bias_, a_, ddq_.data(), driven_acceleration);

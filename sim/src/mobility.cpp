@@ -54,11 +54,18 @@ const LoopMatrix& Mobility::matrix(const Sweep& sweep) {
 }
 
 double Mobility::largest_eigenvalue(const Sweep& sweep, const Eigen::VectorXd& scale) {
+  // A fixed start keeps it deterministic; it only sets a scale, so a few
+  // digits suffice. 1, 2, ..., m: not orthogonal to the top eigenvector of
+  // a symmetric mechanism.
+  Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(size(), 1, size()).normalized();
+  return largest_eigenvalue(sweep, scale, x, 11, 1e-6);
+}
+
+double Mobility::largest_eigenvalue(const Sweep& sweep, const Eigen::VectorXd& scale, Eigen::VectorXd& x, int least,
+                                    double tolerance) {
   // W is symmetric positive semidefinite: the Rayleigh quotient of the
-  // iterates rises to the largest eigenvalue. A fixed start keeps it
-  // deterministic; it only sets a scale, so a few digits suffice.
-  // 1, 2, ..., m: not orthogonal to the top eigenvector of a symmetric mechanism.
-  Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(size(), 1, size()).normalized(), Wx(size());
+  // iterates rises to the largest eigenvalue.
+  Eigen::VectorXd Wx(size());
   double lambda = 0;
   for (int k = 0; k < 200; ++k) {
     const Eigen::VectorXd Sx = scale.cwiseProduct(x);
@@ -68,7 +75,7 @@ double Mobility::largest_eigenvalue(const Sweep& sweep, const Eigen::VectorXd& s
     const double norm = Wx.norm();
     if (norm == 0) return 0;
     x = Wx / norm;
-    if (k > 10 && std::abs(next - lambda) <= 1e-6 * next) return next;
+    if (k >= least && std::abs(next - lambda) <= tolerance * next) return next;
     lambda = next;
   }
   return lambda;

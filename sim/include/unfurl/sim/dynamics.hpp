@@ -46,6 +46,7 @@ namespace unfurl::sim {
 
 class ClosureRank;
 class NewtonPreconditioner;
+class SparseClosureRank;
 class SubtreeSpans;
 
 // Everything derived from a state at one instant.
@@ -215,6 +216,7 @@ class Dynamics {
   std::vector<double> state_scale_;
   std::optional<Regulator> regulator_;
   std::unique_ptr<ClosureRank> closure_rank_;  // up to kMaxDenseComponents components
+  std::unique_ptr<SparseClosureRank> sparse_closure_rank_;  // beyond
   std::vector<const Latch*> latches_;
   std::vector<std::size_t> latch_elements_;  // element index of latch l
   std::vector<const JointDriver*> drivers_;

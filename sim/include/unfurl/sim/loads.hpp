@@ -44,9 +44,9 @@ struct TrackedPeak {
   std::vector<int> columns;          // of the run's load columns
 };
 
-// Loads of a mechanism without loops are always determinate; those of one
-// with more loop components than the dense analysis takes
-// (kMaxDenseComponents) are not assessed.
+// Loads of a mechanism without loops are always determinate; a step where
+// the sparse analysis could not factor the closure system is not assessed
+// (closure_rank.hpp, sparse_closure_rank.hpp in the sources).
 enum class Determinacy { determinate, indeterminate, not_assessed };
 
 struct Loads {
@@ -67,7 +67,7 @@ struct Loads {
   // reactions and loop forces are the minimum-norm ones.
   Determinacy determinacy = Determinacy::determinate;
   // The loops' independent equations here (ClosureRank::rank); -1 where
-  // not assessed (no loops, or more than kMaxDenseComponents components).
+  // not counted (no loops, or the sparse analysis).
   int closure_rank = -1;
 };
 

@@ -35,6 +35,11 @@ class Mobility {
   // per component), by power iteration on products: the scale the
   // regulator's regularization is measured against.
   double largest_eigenvalue(const Sweep& sweep, const Eigen::VectorXd& scale);
+  // The same from the unit vector x, which it leaves at the last iterate
+  // (a warm start for the next configuration): at least `least` iterations,
+  // then until the estimate moves less than `tolerance` of itself.
+  double largest_eigenvalue(const Sweep& sweep, const Eigen::VectorXd& scale, Eigen::VectorXd& x, int least,
+                            double tolerance);
 
   // Every eigenvalue of S W S, ascending: W formed from m products (O(N m))
   // and decomposed densely (O(m^3)), so for analysis at the start only.
