@@ -247,5 +247,30 @@ TEST(Modes, CompliantPantographIsElasticWhereTheRigidOnesLoopsAreWeak) {
   EXPECT_GT(r.weak_loop_directions, 0);
 }
 
+// Beyond 48 loop components (the generated arrays from 17 stages on) the
+// rigid loop forces come from the sparse analysis, which a scene also gets
+// by asking for the sparse closure solver: the same modes, where the loops
+// have full rank (the four-bar at rest) and at the latched pantograph's
+// branch point, where both analyses leave the weak directions out.
+TEST(Modes, TheSparseAnalysisGivesTheDenseOnesModes) {
+  const sim::Override sparse{"regulator.solver", "sparse"};
+  const sim::ModesResult fourbar = fourbar_at_rest(sim::load_builtin_scene("fourbar"));
+  const sim::ModesResult fourbar_sparse = fourbar_at_rest(sim::load_builtin_scene("fourbar", {sparse}));
+  ASSERT_EQ(fourbar_sparse.modes.size(), 1u);
+  EXPECT_NEAR(fourbar_sparse.modes[0].frequency_hz, fourbar.modes[0].frequency_hz, 1e-8 * fourbar.modes[0].frequency_hz);
+
+  const sim::Scene rigid = sim::load_builtin_scene("pantograph");
+  const sim::RunResult run = sim::simulate(rigid, rigid.run);
+  const sim::LinearizationState state = sim::state_of_run(rigid, run.trajectory, rigid.run.t_end);
+  const sim::ModesResult dense = sim::linear_modes(rigid, state.q, state.engaged);
+  const sim::ModesResult by_sparse =
+      sim::linear_modes(sim::load_builtin_scene("pantograph", {sparse}), state.q, state.engaged);
+  ASSERT_EQ(by_sparse.modes.size(), dense.modes.size());
+  for (std::size_t k = 0; k < dense.modes.size(); ++k) {
+    EXPECT_NEAR(by_sparse.modes[k].frequency_hz, dense.modes[k].frequency_hz, 1e-6 * dense.modes[k].frequency_hz);
+    EXPECT_NEAR(by_sparse.modes[k].damping_ratio, dense.modes[k].damping_ratio, 1e-6);
+  }
+}
+
 }  // namespace
 }  // namespace unfurl

@@ -159,9 +159,7 @@ class Linearizer {
     const Eigen::VectorXd w = lin.T * z_dot;
     Eigen::VectorXd a(model_.nv);
     if (!dynamics_.rigid_accelerations(at.data(), w.data(), a.data()))
-      throw std::runtime_error(scene().loops.empty() || dynamics_.layout().m <= kMaxDenseComponents
-                                   ? "the accelerations could not be evaluated at the state"
-                                   : "the loops have more components than the dense analysis takes");
+      throw std::runtime_error("the accelerations could not be evaluated at the state");
     return lin.T.transpose() * (lin.M * a);
   }
 

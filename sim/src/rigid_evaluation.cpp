@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "closure_rank.hpp"
+#include "sparse_closure_rank.hpp"
 #include "subtree_spans.hpp"
 #include "unfurl/sim/dynamics.hpp"
 
@@ -36,7 +37,6 @@ Vec6 twist_in_base(const Pose& X, const Vec6& V) {
 }  // namespace
 
 bool Dynamics::rigid_accelerations(const double* q, const double* w, double* w_dot) {
-  if (regulator_ && !closure_rank_) return false;
   configure(q);
   body_velocities(w, true);
   if (elements_need_poses_ || regulator_) sweep_.poses(poses_);
@@ -46,8 +46,14 @@ bool Dynamics::rigid_accelerations(const double* q, const double* w, double* w_d
     // accelerations pass consumes the forces, so they are added again.
     sweep_.accelerations(v_, w, F_, Q_joint_.data(), bias_, a_, ddq_.data());
     regulator_->residual_rate(a_, d_.data());
-    closure_rank_->compute(regulator_->mobility(sweep_));
-    closure_rank_->rigid_loop_forces(d_.data(), lambda_.data());
+    if (!sparse_closure_rank_) {  // as the loads are assessed (Dynamics::loads)
+      closure_rank_->compute(regulator_->mobility(sweep_));
+      closure_rank_->rigid_loop_forces(d_.data(), lambda_.data());
+    } else if (sparse_closure_rank_->compute(sweep_)) {
+      sparse_closure_rank_->rigid_loop_forces(d_.data(), lambda_.data());
+    } else {
+      return false;
+    }
     add_element_forces(q, w);
     regulator_->apply(lambda_.data(), F_);
   }

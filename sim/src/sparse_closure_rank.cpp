@@ -92,16 +92,25 @@ const Eigen::VectorXd& SparseClosureRank::weak_part(const Eigen::VectorXd& lambd
   return weak_;
 }
 
-bool SparseClosureRank::loop_forces(const double* d, double* lambda, bool remember) {
-  Eigen::Map<Eigen::VectorXd> l(lambda, m_);
-  regulated_ = l;
-  // Without full rank the rigid forces are the minimum-norm ones (as
-  // ClosureRank's), which the regulator's are then measured against.
+void SparseClosureRank::rigid(const double* d) {
   if (full_rank_) {
     solve(*near_, d, 1, rigid_);
   } else {
     solve(*filter_, d, kTikhonovPasses - 1, rigid_);
   }
+}
+
+void SparseClosureRank::rigid_loop_forces(const double* d, double* lambda) {
+  rigid(d);
+  Eigen::Map<Eigen::VectorXd>(lambda, m_) = rigid_;
+}
+
+bool SparseClosureRank::loop_forces(const double* d, double* lambda, bool remember) {
+  Eigen::Map<Eigen::VectorXd> l(lambda, m_);
+  regulated_ = l;
+  // Without full rank the rigid forces are the minimum-norm ones (as
+  // ClosureRank's), which the regulator's are then measured against.
+  rigid(d);
   const double rigid_norm = rigid_.cwiseQuotient(scale_).norm();
   regulated_ -= rigid_;
   const bool departed = weak_part(regulated_).norm() > ClosureRank::kAgreement * rigid_norm;

@@ -52,11 +52,15 @@ class SparseClosureRank {
   bool loop_forces(const double* d, double* lambda, bool remember);
   // A new run: no departure yet.
   void forget() { shaped_ = false; }
+  // As ClosureRank::rigid_loop_forces: W lambda = d, the minimum-norm
+  // forces where W lacks rank.
+  void rigid_loop_forces(const double* d, double* lambda);
 
  private:
   // x = R^-1 b for a factorization, refined by W products against W (the
   // rigid solve) `passes` more times.
   void solve(ClosureSolver& R, const double* b, int passes, Eigen::VectorXd& x);
+  void rigid(const double* d);  // into rigid_
   // The part of lambda (forces, unscaled) along the weak directions, in the
   // closure's metric: mu (B + mu I)^-1 S^-1 lambda.
   const Eigen::VectorXd& weak_part(const Eigen::VectorXd& lambda);

@@ -151,9 +151,9 @@ class Dynamics {
   // For linearizations (modes.hpp), at positions q and velocity
   // coordinates w, without the regulator (rigid_evaluation.cpp):
   // - the accelerations w' with the loops closed by the rigid model's loop
-  //   forces, W lambda = d (minimum-norm where redundant, closure_rank.hpp);
-  //   false where the evaluation failed or the loops have more components
-  //   than the dense analysis takes (kMaxDenseComponents);
+  //   forces, W lambda = d (minimum-norm where redundant, closure_rank.hpp
+  //   and, beyond kMaxDenseComponents, sparse_closure_rank.hpp); false
+  //   where the evaluation failed;
   bool rigid_accelerations(const double* q, const double* w, double* w_dot);
   // - the generalized force each of `elements` alone puts on each of the
   //   joint velocity coordinates `coordinates` (no elastic ones), at
