@@ -365,7 +365,7 @@ bool Dynamics::loads(double t, const double* y, Loads& out, std::vector<ClosureE
       if (!closure_rank_->loop_forces(d_.data(), lambda_.data(), remember))
         out.determinacy = Determinacy::indeterminate;
       out.closure_rank = closure_rank_->rank();
-    } else if (!sparse_closure_rank_->compute(sweep_)) {
+    } else if (!sparse_closure_rank_->compute(sweep_, remember)) {
       out.determinacy = Determinacy::not_assessed;  // the regulator's loop forces stand
     } else if (!sparse_closure_rank_->loop_forces(d_.data(), lambda_.data(), remember)) {
       out.determinacy = Determinacy::indeterminate;

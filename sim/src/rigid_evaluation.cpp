@@ -49,7 +49,7 @@ bool Dynamics::rigid_accelerations(const double* q, const double* w, double* w_d
     if (!sparse_closure_rank_) {  // as the loads are assessed (Dynamics::loads)
       closure_rank_->compute(regulator_->mobility(sweep_));
       closure_rank_->rigid_loop_forces(d_.data(), lambda_.data());
-    } else if (sparse_closure_rank_->compute(sweep_)) {
+    } else if (sparse_closure_rank_->compute(sweep_, true)) {  // nearby states: each starts the next
       sparse_closure_rank_->rigid_loop_forces(d_.data(), lambda_.data());
     } else {
       return false;

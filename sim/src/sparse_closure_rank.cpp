@@ -37,20 +37,22 @@ SparseClosureRank::SparseClosureRank(const Model& model, const std::vector<Loop>
   for (Eigen::VectorXd* v : {&shift_, &residual_, &correction_, &product_, &rigid_, &regulated_, &weak_}) v->resize(m_);
 }
 
-bool SparseClosureRank::compute(const Sweep& sweep) {
+bool SparseClosureRank::compute(const Sweep& sweep, bool remember) {
   sweep_ = &sweep;
-  largest_ = mobility_.largest_eigenvalue(sweep, scale_, largest_vector_, 1, kLargestTolerance);
+  Eigen::VectorXd& largest_vector = remember ? largest_vector_ : (largest_work_ = largest_vector_);
+  Eigen::VectorXd& smallest_vector = remember ? smallest_vector_ : (smallest_work_ = smallest_vector_);
+  largest_ = mobility_.largest_eigenvalue(sweep, scale_, largest_vector, 1, kLargestTolerance);
   if (!(largest_ > 0)) return false;
   mu_ = ClosureRank::kWeakDirection * largest_;
   shift_ = (kNearShift * largest_) * scale_.cwiseAbs2().cwiseInverse();  // sigma S^-2
   if (!near_->factorize(sweep, shift_.data())) return false;
   shift_ *= mu_ / (kNearShift * largest_);  // mu S^-2
   if (!filter_->factorize(sweep, shift_.data())) return false;
-  smallest_eigenvalue();
+  smallest_eigenvalue(smallest_vector);
   return true;
 }
 
-void SparseClosureRank::smallest_eigenvalue() {
+void SparseClosureRank::smallest_eigenvalue(Eigen::VectorXd& x) {
   // (B + sigma I)^-1 = S^-1 (W + sigma S^-2)^-1 S^-1. Its Rayleigh quotient
   // nu never exceeds 1 / (smallest + sigma): 1 / nu - sigma bounds the
   // smallest eigenvalue from above.
@@ -58,11 +60,11 @@ void SparseClosureRank::smallest_eigenvalue() {
   double previous = 0;
   full_rank_ = true;
   for (int k = 0; k < kMostInverseIterations; ++k) {
-    residual_ = smallest_vector_.cwiseQuotient(scale_);
+    residual_ = x.cwiseQuotient(scale_);
     near_->solve(residual_.data(), correction_.data(), 1, false);  // a direction: no refinement
     correction_ = correction_.cwiseQuotient(scale_);
-    const double estimate = 1 / smallest_vector_.dot(correction_) - sigma;
-    smallest_vector_ = correction_.normalized();
+    const double estimate = 1 / x.dot(correction_) - sigma;
+    x = correction_.normalized();
     if (!(estimate > tolerance)) {
       full_rank_ = false;
       return;

@@ -45,7 +45,10 @@ class SparseClosureRank {
 
   // Assesses the sweep's configuration (its articulated inertias current);
   // false if a factorization failed, and the loads there are not assessed.
-  bool compute(const Sweep& sweep);
+  // Only at a step's end (remember) does it keep its iterations' vectors
+  // as the next start, so that what a run reports does not depend on its
+  // sampling interval (as ClosureRank::loop_forces).
+  bool compute(const Sweep& sweep, bool remember);
   bool full_rank() const { return full_rank_; }
 
   // As ClosureRank::loop_forces, at the configuration of the last compute().
@@ -64,7 +67,7 @@ class SparseClosureRank {
   // The part of lambda (forces, unscaled) along the weak directions, in the
   // closure's metric: mu (B + mu I)^-1 S^-1 lambda.
   const Eigen::VectorXd& weak_part(const Eigen::VectorXd& lambda);
-  void smallest_eigenvalue();
+  void smallest_eigenvalue(Eigen::VectorXd& x);
 
   int m_;
   Eigen::VectorXd scale_;
@@ -72,6 +75,7 @@ class SparseClosureRank {
   std::unique_ptr<ClosureSolver> near_, filter_;  // W + sigma S^-2, W + mu S^-2
   const Sweep* sweep_ = nullptr;
   Eigen::VectorXd largest_vector_, smallest_vector_;  // the iterations' warm starts (unit, in the closure's metric)
+  Eigen::VectorXd largest_work_, smallest_work_;      // this configuration's iterates
   double largest_ = 0, mu_ = 0;
   bool full_rank_ = true;
   bool shaped_ = false;  // the state along the weak directions is the regulator's
