@@ -76,6 +76,9 @@ void SparseClosureRank::smallest_eigenvalue(Eigen::VectorXd& x) {
 
 void SparseClosureRank::solve(ClosureSolver& R, const double* b, int passes, Eigen::VectorXd& x) {
   const Eigen::Map<const Eigen::VectorXd> b_(b, m_);
+  // The near factorization amplifies by up to 1 / sigma: its solves are
+  // refined against the joint rows' eps (closure_sparse.cpp); the filter's,
+  // conditioned to 1e3, need not be.
   const bool refine = &R == near_.get();
   R.solve(b, x.data(), 1, refine);
   for (int k = 0; k < passes; ++k) {
@@ -94,11 +97,13 @@ const Eigen::VectorXd& SparseClosureRank::weak_part(const Eigen::VectorXd& lambd
   return weak_;
 }
 
+void SparseClosureRank::minimum_norm(const double* d) { solve(*filter_, d, kTikhonovPasses - 1, rigid_); }
+
 void SparseClosureRank::rigid(const double* d) {
   if (full_rank_) {
     solve(*near_, d, 1, rigid_);
   } else {
-    solve(*filter_, d, kTikhonovPasses - 1, rigid_);
+    minimum_norm(d);
   }
 }
 
@@ -119,7 +124,7 @@ bool SparseClosureRank::loop_forces(const double* d, double* lambda, bool rememb
   const bool shaped = departed || (shaped_ && weak_part(rigid_).norm() > ClosureRank::kWeakLoaded * rigid_norm);
   if (remember) shaped_ = shaped;
   const bool determinate = full_rank_ && !shaped;
-  if (!determinate && full_rank_) solve(*filter_, d, kTikhonovPasses - 1, rigid_);
+  if (!determinate && full_rank_) minimum_norm(d);
   l = rigid_;
   return determinate;
 }

@@ -18,7 +18,8 @@
 //   whole, the strongest to 1e-3; a solve with a second factorization,
 //   R_mu = W + mu S^-2.
 // - the minimum-norm loop forces by iterated Tikhonov regularization at mu:
-//   kTikhonovPasses refinements of R_mu^-1 d keep 1 - (mu / (w + mu))^3 of
+//   kTikhonovPasses solves with R_mu, each refining the last by a W
+//   product (the first solves for d itself), keep 1 - (mu / (w + mu))^3 of
 //   the rigid force along a mode of eigenvalue w (all but 1e-9 of the
 //   strongest, 87 % at w = mu) and bound the weak ones' by 3 |d| / mu:
 //   a smooth stand-in for the dense analysis' sharp cut at mu, set by the
@@ -31,12 +32,13 @@
 
 #include "unfurl/sim/closure_solver.hpp"
 #include "unfurl/sim/mobility.hpp"
+#include "unfurl/sim/regulator.hpp"
 
 namespace unfurl::sim {
 
 class SparseClosureRank {
  public:
-  static constexpr double kNearShift = 1e-14;  // Regulator::kRedundantMode: round-off's zeros
+  static constexpr double kNearShift = Regulator::kRedundantMode;  // round-off's zeros
   static constexpr int kTikhonovPasses = 3;
 
   // scale: S, one entry per component (as ClosureRank's).
@@ -63,7 +65,8 @@ class SparseClosureRank {
   // x = R^-1 b for a factorization, refined by W products against W (the
   // rigid solve) `passes` more times.
   void solve(ClosureSolver& R, const double* b, int passes, Eigen::VectorXd& x);
-  void rigid(const double* d);  // into rigid_
+  void rigid(const double* d);         // into rigid_: W lambda = d, or minimum_norm() without full rank
+  void minimum_norm(const double* d);  // into rigid_
   // The part of lambda (forces, unscaled) along the weak directions, in the
   // closure's metric: mu (B + mu I)^-1 S^-1 lambda.
   const Eigen::VectorXd& weak_part(const Eigen::VectorXd& lambda);
