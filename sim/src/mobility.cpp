@@ -14,7 +14,9 @@ Mobility::Mobility(const Model& model, const std::vector<Loop>& loops, const std
       phi_(model.size()),
       v_(model.size()),
       x_(model.nv),
-      dq_(model.nv) {
+      dq_(model.nv),
+      Sx_(components.size()),
+      Wx_(components.size()) {
   if (size() > kMaxDenseComponents) return;
   W_.resize(size(), size());
   for (auto* blocks : {&loads_, &phi_m_, &v_m_}) blocks->assign(model.size(), Spatial::Zero(6, size()));
@@ -65,16 +67,15 @@ double Mobility::largest_eigenvalue(const Sweep& sweep, const Eigen::VectorXd& s
                                     double tolerance) {
   // W is symmetric positive semidefinite: the Rayleigh quotient of the
   // iterates rises to the largest eigenvalue.
-  Eigen::VectorXd Wx(size());
   double lambda = 0;
   for (int k = 0; k < 200; ++k) {
-    const Eigen::VectorXd Sx = scale.cwiseProduct(x);
-    product(sweep, Sx.data(), Wx.data());
-    Wx = scale.cwiseProduct(Wx);
-    const double next = x.dot(Wx);
-    const double norm = Wx.norm();
+    Sx_ = scale.cwiseProduct(x);
+    product(sweep, Sx_.data(), Wx_.data());
+    Wx_ = scale.cwiseProduct(Wx_);
+    const double next = x.dot(Wx_);
+    const double norm = Wx_.norm();
     if (norm == 0) return 0;
-    x = Wx / norm;
+    x = Wx_ / norm;
     if (k >= least && std::abs(next - lambda) <= tolerance * next) return next;
     lambda = next;
   }

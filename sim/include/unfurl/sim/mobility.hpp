@@ -55,6 +55,7 @@ class Mobility {
   // Scratch, sized once.
   std::vector<Vec6> F_, phi_, v_;
   Eigen::VectorXd x_, dq_;
+  Eigen::VectorXd Sx_, Wx_;  // the power iteration's, per component (it runs every step in the sparse analysis)
   LoopMatrix W_;
   std::vector<Spatial> loads_, phi_m_, v_m_;
   Coordinates x_m_, dq_m_;
