@@ -7,7 +7,14 @@ ClosureRank::ClosureRank(const Eigen::VectorXd& scale)
 
 void ClosureRank::compute(const LoopMatrix& W) {
   SWS_ = scale_.asDiagonal() * W * scale_.asDiagonal();
+  if (well_conditioned()) {
+    rank_ = size();
+    weak_ = 0;
+    decomposed_ = false;
+    return;
+  }
   eigen_.compute(SWS_);
+  decomposed_ = true;
   const auto& Lambda = eigen_.eigenvalues();  // ascending
   const double largest = size() > 0 ? Lambda[size() - 1] : 0;
   rank_ = weak_ = 0;
@@ -17,6 +24,22 @@ void ClosureRank::compute(const LoopMatrix& W) {
   }
 }
 
+bool ClosureRank::well_conditioned() {
+  // S W S - sigma I positive definite, sigma = kWeakDirection ||S W S||_F
+  // (the Frobenius norm bounds the largest eigenvalue from above): every
+  // eigenvalue lies above kWeakDirection of the largest, so W has full rank
+  // and no weak direction, which a Cholesky factorization shows at a tenth
+  // of the eigen-decomposition's cost. Near a branch point it fails and
+  // the eigenvalues decide.
+  if (size() == 0) return false;
+  shifted_ = SWS_;
+  shifted_.diagonal().array() -= kWeakDirection * SWS_.norm();
+  shifted_llt_.compute(shifted_);
+  if (shifted_llt_.info() != Eigen::Success) return false;
+  llt_.compute(SWS_);
+  return llt_.info() == Eigen::Success;
+}
+
 ClosureRank::Vector ClosureRank::rigid(const double* d) const {
   // In the closure's metric: (S W S) lambda~ = S d with lambda = S lambda~,
   // solved on the eigenvectors of S W S.
@@ -24,6 +47,7 @@ ClosureRank::Vector ClosureRank::rigid(const double* d) const {
   const auto& V = eigen_.eigenvectors();
   const auto& Lambda = eigen_.eigenvalues();
   Vector Sd = scale_.cwiseProduct(Eigen::Map<const Eigen::VectorXd>(d, m));
+  if (!decomposed_) return llt_.solve(Sd);
   Vector lambda_tilde = Vector::Zero(m);
   for (int i = rank_ == m ? 0 : weak_; i < m; ++i) lambda_tilde += (V.col(i).dot(Sd) / Lambda[i]) * V.col(i);
   return lambda_tilde;
@@ -35,9 +59,14 @@ void ClosureRank::rigid_loop_forces(const double* d, double* lambda) const {
 
 bool ClosureRank::loop_forces(const double* d, double* lambda, bool remember) {
   const int m = size();
-  const auto& V = eigen_.eigenvectors();
   Vector lambda_tilde = rigid(d);
   Eigen::Map<Eigen::VectorXd> l(lambda, m);
+  if (!decomposed_) {  // full rank, no weak direction: determinate
+    if (remember) shaped_ = false;
+    l = scale_.cwiseProduct(lambda_tilde);
+    return true;
+  }
+  const auto& V = eigen_.eigenvectors();
   const Vector regulated = l.cwiseQuotient(scale_);
   // Only along the weak directions: along the strong ones a difference is
   // the regulator's feedback on the integrator's error in the gap, which

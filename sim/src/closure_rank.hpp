@@ -38,6 +38,7 @@
 // times the mechanism's length, as a torque).
 #pragma once
 
+#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 
 #include "unfurl/sim/mobility.hpp"
@@ -81,9 +82,13 @@ class ClosureRank {
  private:
   using Vector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxDenseComponents, 1>;
   Vector rigid(const double* d) const;  // lambda~ = S^-1 lambda of W lambda = d
+  bool well_conditioned();  // factors S W S into llt_ when it is
   Eigen::VectorXd scale_;
   LoopMatrix SWS_;
   Eigen::SelfAdjointEigenSolver<LoopMatrix> eigen_;
+  LoopMatrix shifted_;
+  Eigen::LLT<LoopMatrix> shifted_llt_, llt_;
+  bool decomposed_ = false;  // eigen_ holds S W S's decomposition, else llt_ its factor
   int rank_ = 0;  // eigenvalues above kRankTolerance of the largest
   int weak_ = 0;  // eigenvalues below kWeakDirection of the largest
   bool shaped_ = false;  // the state along the weak directions is the regulator's
