@@ -28,8 +28,8 @@ bool ClosureRank::well_conditioned() {
   // S W S - sigma I positive definite, sigma = kWeakDirection ||S W S||_F
   // (the Frobenius norm bounds the largest eigenvalue from above): every
   // eigenvalue lies above kWeakDirection of the largest, so W has full rank
-  // and no weak direction, which a Cholesky factorization shows at a tenth
-  // of the eigen-decomposition's cost. Near a branch point it fails and
+  // and no weak direction, which two Cholesky factorizations show for less
+  // than the eigen-decomposition costs. Near a branch point it fails and
   // the eigenvalues decide.
   if (size() == 0) return false;
   shifted_ = SWS_;
@@ -44,10 +44,10 @@ ClosureRank::Vector ClosureRank::rigid(const double* d) const {
   // In the closure's metric: (S W S) lambda~ = S d with lambda = S lambda~,
   // solved on the eigenvectors of S W S.
   const int m = size();
-  const auto& V = eigen_.eigenvectors();
-  const auto& Lambda = eigen_.eigenvalues();
   Vector Sd = scale_.cwiseProduct(Eigen::Map<const Eigen::VectorXd>(d, m));
   if (!decomposed_) return llt_.solve(Sd);
+  const auto& V = eigen_.eigenvectors();
+  const auto& Lambda = eigen_.eigenvalues();
   Vector lambda_tilde = Vector::Zero(m);
   for (int i = rank_ == m ? 0 : weak_; i < m; ++i) lambda_tilde += (V.col(i).dot(Sd) / Lambda[i]) * V.col(i);
   return lambda_tilde;
