@@ -32,9 +32,7 @@ bool ClosureRank::well_conditioned() {
   // than the eigen-decomposition costs. Near a branch point it fails and
   // the eigenvalues decide.
   if (size() == 0) return false;
-  shifted_ = SWS_;
-  shifted_.diagonal().array() -= kWeakDirection * SWS_.norm();
-  shifted_llt_.compute(shifted_);
+  shifted_llt_.compute(SWS_ - kWeakDirection * SWS_.norm() * LoopMatrix::Identity(size(), size()));
   if (shifted_llt_.info() != Eigen::Success) return false;
   llt_.compute(SWS_);
   return llt_.info() == Eigen::Success;

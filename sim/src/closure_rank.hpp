@@ -86,7 +86,6 @@ class ClosureRank {
   Eigen::VectorXd scale_;
   LoopMatrix SWS_;
   Eigen::SelfAdjointEigenSolver<LoopMatrix> eigen_;
-  LoopMatrix shifted_;
   Eigen::LLT<LoopMatrix> shifted_llt_, llt_;
   bool decomposed_ = false;  // eigen_ holds S W S's decomposition, else llt_ its factor
   int rank_ = 0;  // eigenvalues above kRankTolerance of the largest
