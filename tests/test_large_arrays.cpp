@@ -242,12 +242,34 @@ TEST(LargeArray, TwentyStagePantographStaysClosedWithSparseGainsAndKrylov) {
   EXPECT_LT(std::abs(test::q_of(scene, last, "j1")), std::abs(scene.q0[0]) - 1e-4);
 }
 
+TEST(LargeArray, ArraysReleasedNextToTheirBranchPointStartWithTheirLoopsClosed) {
+  // Their weakest loop modes lie below the rank tolerance at the stowed
+  // start (16 stages: the dense analysis; 30: the sparse one), where the
+  // regulator closes them with the gain a = w / (w + delta) << 1 and rings
+  // at sqrt(a) v_max. Its integral starts where it settles, so the loop
+  // forces are the rigid ones from t = 0: started from zero, the loops
+  // opened by 2.4e-9 m and 1.4e-11 m over the first 0.01 s, and the
+  // 30-stage array took 408 steps for its first 0.2 s at rtol 1e-7 (20 now).
+  for (const int stages : {16, 30}) {
+    const sim::Scene scene =
+        sim::apply_overrides(studies::generate_pantograph(stages), {{"run.t_end", "0.01"}, {"run.sample", "1e-4"}})
+            .scene;
+    const sim::RunResult run = sim::simulate(scene, scene.run);
+    ASSERT_EQ(run.status, sim::RunStatus::finished) << sim::describe(run.failure);
+    const sim::RunSummary s = sim::summarize(scene, run);
+    EXPECT_LT(s.max_closure_gap, 1e-12) << stages << " stages";
+    EXPECT_LT(s.max_closure_angle, 1e-12) << stages << " stages";
+  }
+}
+
 TEST(LargeArray, ThirtyStageLoopsDoNotHangOnTheRegularization) {
   // Released 0.01 rad off the stowed stack, the 30-stage array's weakest
   // loop modes lie at 1.2e-10 of W's largest eigenvalue. At the automatic
   // regularization (the finest, 2e-9) its angles hardly move when it is a
-  // hundredth of that (3.8e-8 rad over 0.5 s); at the reference scenes'
-  // 2e-6, which softens those modes, the loops lagged by 1.2e-4 rad.
+  // hundredth of that (2.6e-8 rad over 0.5 s); at the reference scenes'
+  // 2e-6, which softens those modes, the loops lag by 9.7e-6 rad (1.2e-4
+  // rad while the regulator's integral started from zero instead of where
+  // it settles, Dynamics::initial_state: most of that lag was its start).
   const auto run_at = [](const std::string& regularization) {
     const sim::Scene scene =
         sim::apply_overrides(studies::generate_pantograph(30), {{"run.t_end", "0.5"},
@@ -264,7 +286,7 @@ TEST(LargeArray, ThirtyStageLoopsDoNotHangOnTheRegularization) {
   EXPECT_EQ(sim::Dynamics(scene).regulator()->regularization(), sim::Regulator::kFinestRegularization);
   const sim::RunResult automatic = run_at("auto"), finer = run_at("2e-11"), coarse = run_at("2e-6");
   EXPECT_LT(test::largest_angle_difference(scene.model, automatic, finer), 1e-6);
-  EXPECT_GT(test::largest_angle_difference(scene.model, coarse, finer), 1e-5);
+  EXPECT_GT(test::largest_angle_difference(scene.model, coarse, finer), 5e-6);
 }
 
 TEST(LargeArray, KrylovNewtonConvergesThroughCompliantPinsAndPlates) {

@@ -1,5 +1,7 @@
 #include "closure_rank.hpp"
 
+#include "unfurl/sim/regulator.hpp"
+
 namespace unfurl::sim {
 
 ClosureRank::ClosureRank(const Eigen::VectorXd& scale)
@@ -38,7 +40,7 @@ bool ClosureRank::well_conditioned() {
   return llt_.info() == Eigen::Success;
 }
 
-ClosureRank::Vector ClosureRank::rigid(const double* d) const {
+ClosureRank::Vector ClosureRank::along_modes_from(int first, const double* d) const {
   // In the closure's metric: (S W S) lambda~ = S d with lambda = S lambda~,
   // solved on the eigenvectors of S W S.
   const int m = size();
@@ -47,12 +49,25 @@ ClosureRank::Vector ClosureRank::rigid(const double* d) const {
   const auto& V = eigen_.eigenvectors();
   const auto& Lambda = eigen_.eigenvalues();
   Vector lambda_tilde = Vector::Zero(m);
-  for (int i = rank_ == m ? 0 : weak_; i < m; ++i) lambda_tilde += (V.col(i).dot(Sd) / Lambda[i]) * V.col(i);
+  for (int i = first; i < m; ++i) lambda_tilde += (V.col(i).dot(Sd) / Lambda[i]) * V.col(i);
   return lambda_tilde;
+}
+
+ClosureRank::Vector ClosureRank::rigid(const double* d) const {
+  return along_modes_from(rank_ == size() ? 0 : weak_, d);
 }
 
 void ClosureRank::rigid_loop_forces(const double* d, double* lambda) const {
   Eigen::Map<Eigen::VectorXd>(lambda, size()) = scale_.cwiseProduct(rigid(d));
+}
+
+void ClosureRank::settled_loop_forces(const double* d, double* lambda) const {
+  int first = 0;
+  if (decomposed_) {
+    const auto& Lambda = eigen_.eigenvalues();
+    while (first < size() && !(Lambda[first] > Regulator::kRedundantMode * Lambda[size() - 1])) ++first;
+  }
+  Eigen::Map<Eigen::VectorXd>(lambda, size()) = scale_.cwiseProduct(along_modes_from(first, d));
 }
 
 bool ClosureRank::loop_forces(const double* d, double* lambda, bool remember) {

@@ -78,10 +78,20 @@ class ClosureRank {
   // The rigid model's loop forces for d, W lambda = d, whatever the
   // regulator's (where W lacks rank, those without the weak directions).
   void rigid_loop_forces(const double* d, double* lambda) const;
+  // The loop forces at which the regulator's integral settles
+  // (Regulator::integral_at_rest): W lambda = d along every mode it closes,
+  // the weak ones that the reported loads leave out included; only
+  // round-off's zeros (Regulator::kRedundantMode) are left out. Started
+  // anywhere else, the integral closes the difference along a weak mode at
+  // the rate a v_max, ringing at sqrt(a) v_max (regulator.hpp) for as long
+  // (the 30-stage array: 400 steps in its first 0.035 s).
+  void settled_loop_forces(const double* d, double* lambda) const;
 
  private:
   using Vector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxDenseComponents, 1>;
   Vector rigid(const double* d) const;  // lambda~ = S^-1 lambda of W lambda = d
+  // lambda~ of W lambda = d along the eigenvectors from `first` (ascending) on.
+  Vector along_modes_from(int first, const double* d) const;
   bool well_conditioned();  // factors S W S into llt_ when it is
   Eigen::VectorXd scale_;
   LoopMatrix SWS_;

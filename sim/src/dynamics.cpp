@@ -155,7 +155,7 @@ std::vector<double> Dynamics::initial_state() {
     momenta_of_rates(scene_.dq0.data(), true, y.data() + layout_.p());
   }
   for (const JointDriver* d : drivers_) y[layout_.p() + model.velocity_of(d->joint).value] = 0;
-  if (regulator_ && closure_rank_ && regulator_->uses_feedforward()) start_integral_at_rest(y.data());
+  if (regulator_ && regulator_->uses_feedforward()) start_integral_at_rest(y.data());
   if (closure_rank_) closure_rank_->forget();
   if (sparse_closure_rank_) sparse_closure_rank_->forget();
   return y;
@@ -164,10 +164,20 @@ std::vector<double> Dynamics::initial_state() {
 void Dynamics::start_integral_at_rest(double* y) {
   // evaluate() leaves the loops' acceleration d under every other force.
   if (!evaluate(0, y, ydot_.data(), Regulator::Gains::current)) return;
-  const LoopMatrix& W = regulator_->mobility(sweep_, configuration_key_);
-  closure_rank_->compute(W);
-  closure_rank_->rigid_loop_forces(d_.data(), lambda_.data());
-  regulator_->integral_at_rest(W, lambda_.data(), d_.data(), y + layout_.u());
+  std::vector<double> W_lambda(layout_.m);
+  if (closure_rank_) {
+    const LoopMatrix& W = regulator_->mobility(sweep_, configuration_key_);
+    closure_rank_->compute(W);
+    closure_rank_->settled_loop_forces(d_.data(), lambda_.data());
+    const Eigen::Map<const Eigen::VectorXd> lambda(lambda_.data(), layout_.m);
+    Eigen::Map<Eigen::VectorXd>(W_lambda.data(), layout_.m) = W * lambda;
+  } else {
+    // Beyond kMaxDenseComponents W is not formed: its products are passes of the sweep.
+    if (!sparse_closure_rank_->compute(sweep_, false)) return;
+    sparse_closure_rank_->settled_loop_forces(d_.data(), lambda_.data());
+    regulator_->mobility_product(sweep_, lambda_.data(), W_lambda.data());
+  }
+  regulator_->integral_at_rest(W_lambda.data(), lambda_.data(), d_.data(), y + layout_.u());
 }
 
 void Dynamics::momenta_of_rates(const double* w, bool base_moves, double* p) {

@@ -96,12 +96,14 @@ void Regulator::control(const double* g, const double* u, const double* g_dot, c
   ud_ = b - Delta_.cwiseProduct(solved_.col(1));  // W R^-1 b = b - Delta R^-1 b
 }
 
-void Regulator::integral_at_rest(const LoopMatrix& W, const double* lambda, const double* d, double* u) const {
+void Regulator::integral_at_rest(const double* W_lambda, const double* lambda, const double* d, double* u) const {
   const int m = size();
-  Eigen::Map<const Eigen::VectorXd> lambda_(lambda, m), d_(d, m);
+  Eigen::Map<const Eigen::VectorXd> W_lambda_(W_lambda, m), lambda_(lambda, m), d_(d, m);
   Eigen::Map<Eigen::VectorXd>(u, m) =
-      (W * lambda_ + Delta_.cwiseProduct(lambda_) - d_) / (v_max_ * v_max_);  // (12) with R = W + Delta
+      (W_lambda_ + Delta_.cwiseProduct(lambda_) - d_) / (v_max_ * v_max_);  // (12) with R = W + Delta
 }
+
+void Regulator::mobility_product(const Sweep& sweep, const double* x, double* Wx) { mobility_.product(sweep, x, Wx); }
 
 void Regulator::apply(const double* lambda, std::vector<Vec6>& F) const {
   add_loop_forces(loops_, components_, lambda, -1.0, F);

@@ -112,6 +112,14 @@ void SparseClosureRank::rigid_loop_forces(const double* d, double* lambda) {
   Eigen::Map<Eigen::VectorXd>(lambda, m_) = rigid_;
 }
 
+void SparseClosureRank::settled_loop_forces(const double* d, double* lambda) {
+  // The near factorization's shift sigma lies at round-off's zeros, which
+  // its refined solve leaves out (a mode of eigenvalue w keeps
+  // 1 - (sigma / (w + sigma))^2 of its force).
+  solve(*near_, d, 1, rigid_);
+  Eigen::Map<Eigen::VectorXd>(lambda, m_) = rigid_;
+}
+
 bool SparseClosureRank::loop_forces(const double* d, double* lambda, bool remember) {
   Eigen::Map<Eigen::VectorXd> l(lambda, m_);
   regulated_ = l;

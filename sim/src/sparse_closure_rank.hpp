@@ -60,6 +60,8 @@ class SparseClosureRank {
   // As ClosureRank::rigid_loop_forces: W lambda = d, the minimum-norm
   // forces where W lacks rank.
   void rigid_loop_forces(const double* d, double* lambda);
+  // As ClosureRank::settled_loop_forces.
+  void settled_loop_forces(const double* d, double* lambda);
 
  private:
   // x = R^-1 b for a factorization, refined by W products against W (the

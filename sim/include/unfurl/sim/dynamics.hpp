@@ -91,9 +91,7 @@ class Dynamics {
 
   // The initial state: q0, p0 (from dq0 when no p0 is given) and the
   // regulator state where its integral settles at q0 (Regulator::
-  // integral_at_rest; 0 without the full tuning's feedforward, or beyond
-  // kMaxDenseComponents components, where the rigid forces are not solved
-  // for).
+  // integral_at_rest; 0 without the full tuning's feedforward).
   std::vector<double> initial_state();
 
   // y' = f(t, y). False where the result is not finite or the closure
@@ -205,8 +203,8 @@ class Dynamics {
   // p = M(q) w at the configured q: the subtree momenta of the rates w
   // projected on each coordinate (the base at rest unless `base_moves`).
   void momenta_of_rates(const double* w, bool base_moves, double* p);
-  // Sets y's regulator state to where its integral settles under the rigid
-  // loop forces (Regulator::integral_at_rest).
+  // Sets y's regulator state to where its integral settles
+  // (ClosureRank::settled_loop_forces, Regulator::integral_at_rest).
   void start_integral_at_rest(double* y);
 
   const Scene scene_;

@@ -159,8 +159,11 @@ class Regulator {
   // the rigid forces (W lambda = d) it is u = Delta lambda / v^2, where
   // the integral settles; starting there, the regulator's forces are the
   // rigid ones from t = 0 instead of lagging them by Delta's share while
-  // the integral builds up. Full tuning with feedforward only.
-  void integral_at_rest(const LoopMatrix& W, const double* lambda, const double* d, double* u) const;
+  // the integral builds up. Full tuning with feedforward only. W_lambda:
+  // W lambda (W formed, or by mobility_product()).
+  void integral_at_rest(const double* W_lambda, const double* lambda, const double* d, double* u) const;
+  // W x by a pass of the sweep, W not formed (its articulated inertias current).
+  void mobility_product(const Sweep& sweep, const double* x, double* Wx);
 
   // Adds -eps^T lambda to the body forces.
   void apply(const double* lambda, std::vector<Vec6>& F) const;
