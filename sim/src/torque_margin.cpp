@@ -137,7 +137,9 @@ std::vector<JointTorqueMargin> torque_margins(const Scene& scene, const Trajecto
   const auto cancelled = [cancel] { return cancel && cancel->load(std::memory_order_relaxed); };
   const TorqueMarginFactors& factors = scene.torque_margin;
   std::vector<JointTorqueMargin> out;
-  if (run.empty()) return out;
+  // Checked before the model is built: on a large array that alone takes
+  // longer than an interrupt may wait.
+  if (run.empty() || cancelled()) return out;
   Dynamics dynamics(scene);
   const Model& model = scene.model;
   const std::vector<const Latch*> latches = scene.latches();
