@@ -1,7 +1,9 @@
 // The determinate peak keeps only maxima the rigid model reaches
 // (determinate_peak.hpp): a load rising into an indeterminate span, or
 // falling out of one, counts with the indeterminate peak, unless a latch
-// engaged where the run-up or the fall ends.
+// engaged where the run-up or the fall ends. A maximum between three
+// determinate steps counts at the vertex of the parabola through them
+// (StepMaximum).
 #include <gtest/gtest.h>
 
 #include <utility>
@@ -25,8 +27,8 @@ sim::DeterminatePeak observed(const std::vector<std::pair<double, bool>>& steps)
 
 TEST(DeterminatePeak, AMaximumBetweenDeterminateStepsIsKept) {
   const sim::DeterminatePeak peak = observed({{1, true}, {5, true}, {2, true}, {3, true}});
-  EXPECT_EQ(peak.settled(true).value, 5);
-  EXPECT_EQ(peak.settled(true).t, 1);
+  EXPECT_DOUBLE_EQ(peak.settled(true).value, 5 + 1.0 / 56);  // 1, 5, 2's parabola
+  EXPECT_DOUBLE_EQ(peak.settled(true).t, 1 + 1.0 / 14);
   EXPECT_EQ(peak.over_indeterminate_steps(true).value, 0);
 }
 
@@ -46,15 +48,15 @@ TEST(DeterminatePeak, ALoadFallingOrFlatIntoASpanStaysDeterminate) {
   EXPECT_EQ(falling.settled(true).value, 5);
   EXPECT_EQ(falling.over_indeterminate_steps(true).value, 1);
   const sim::DeterminatePeak flat = observed({{2, true}, {4, true}, {4, true}, {1, false}});
-  EXPECT_EQ(flat.settled(true).value, 4);
+  EXPECT_DOUBLE_EQ(flat.settled(true).value, 4.25);  // 2, 4, 4's parabola, at t = 1.5
   EXPECT_EQ(flat.over_indeterminate_steps(true).value, 1);
 }
 
 TEST(DeterminatePeak, ALoadFallingOutOfAnIndeterminateSpanCountsThereUntilItRises) {
   const sim::DeterminatePeak peak =
       observed({{2, true}, {1, true}, {7, false}, {8, true}, {5, true}, {3, true}, {4, true}, {1, true}});
-  EXPECT_EQ(peak.settled(true).value, 4);
-  EXPECT_EQ(peak.settled(true).t, 6);
+  EXPECT_DOUBLE_EQ(peak.settled(true).value, 4.125);  // 3, 4, 1's parabola
+  EXPECT_DOUBLE_EQ(peak.settled(true).t, 5.75);
   EXPECT_EQ(peak.over_indeterminate_steps(true).value, 8);
 }
 

@@ -17,12 +17,15 @@
 // counted as a run-up); it also ends a fall out of a span, the latch's
 // impact being the rigid model's. A run that ends still rising keeps that
 // run-up as determinate; one that failed there (the regulator lost a loop
-// closing on a toggle) does not.
+// closing on a toggle) does not. A maximum between three determinate steps
+// counts at its interpolated value (StepMaximum).
 #pragma once
 
 #include <cmath>
 #include <limits>
+#include <optional>
 
+#include "step_maximum.hpp"
 #include "unfurl/sim/loads.hpp"
 
 namespace unfurl::sim {
@@ -31,6 +34,9 @@ class DeterminatePeak {
  public:
   // A step's load x at t, and whether the rigid model determined it there.
   void observe(double x, double t, bool determinate) {
+    std::optional<Peak> between;
+    if (determinate) between = between_.observe(t, x);
+    else between_.restart();
     if (!determinate) {
       merge(indeterminate_, run_up_);
       merge(indeterminate_, {x, t});
@@ -44,11 +50,13 @@ class DeterminatePeak {
       leaving_ = false;
       settle();
       merge(settled_, {x, t});
+      if (between) merge(settled_, *between);  // a rise, then x: not leaving a span
     }
     if (determinate) previous_ = x;
   }
   // A latch engaged: the loads since the last fall are a maximum.
   void latched() {
+    between_.restart();
     settle();
     leaving_ = false, previous_ = 0;
   }
@@ -74,6 +82,7 @@ class DeterminatePeak {
     run_up_ = {};
   }
   Peak settled_, run_up_, indeterminate_;
+  StepMaximum between_;
   double previous_ = 0;
   bool leaving_ = false;  // falling out of an indeterminate span
 };

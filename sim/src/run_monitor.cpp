@@ -5,29 +5,44 @@
 
 namespace unfurl::sim {
 
+namespace {
+
+// The load x at a step's end t into its peak, with its maximum between the
+// steps.
+void observe_step(Peak& peak, StepMaximum& between, double x, double t) {
+  peak.update(x, t);
+  if (const std::optional<Peak> vertex = between.observe(t, x)) peak.update(vertex->value, vertex->t);
+}
+
+}  // namespace
+
 RunMonitor::RunMonitor(Dynamics& dynamics) : dynamics_(dynamics) {
   peaks_.latch_torque.resize(dynamics.latch_count());
+  latch_torque_between_.resize(dynamics.latch_count());
   hinge_force_.resize(dynamics.model().size());
   hinge_moment_.resize(dynamics.model().size());
   peaks_.element.resize(dynamics.element_peaks().size());
+  element_between_.resize(peaks_.element.size());
   sensor_peaks_ = dynamics.scene().sensor_peaks();
   peaks_.sensor.resize(sensor_peaks_.size());
+  sensor_between_.resize(peaks_.sensor.size());
 }
 
 std::optional<double> RunMonitor::observe(double t, const double* y) {
   if (!dynamics_.loads(t, y, loads_, &closure_, Dynamics::At::step_end)) return std::nullopt;
   for (int l = 0; l < dynamics_.latch_count(); ++l)
     if (dynamics_.latch_state().engaged(l))
-      peaks_.latch_torque[l].update(std::abs(loads_.element[dynamics_.latch_column(l)]), t);
+      observe_step(peaks_.latch_torque[l], latch_torque_between_[l],
+                   std::abs(loads_.element[dynamics_.latch_column(l)]), t);
   for (std::size_t k = 0; k < peaks_.element.size(); ++k) {
     double squares = 0;
     for (const int c : dynamics_.element_peaks()[k].columns) squares += loads_.element[c] * loads_.element[c];
-    peaks_.element[k].update(std::sqrt(squares), t);
+    observe_step(peaks_.element[k], element_between_[k], std::sqrt(squares), t);
   }
   for (std::size_t k = 0; k < peaks_.sensor.size(); ++k) {
     double squares = 0;
     for (const int c : sensor_peaks_[k].columns) squares += loads_.sensor[c] * loads_.sensor[c];
-    peaks_.sensor[k].update(std::sqrt(squares), t);
+    observe_step(peaks_.sensor[k], sensor_between_[k], std::sqrt(squares), t);
   }
   const bool determinate = loads_.determinacy != Determinacy::indeterminate;
   if (loads_.determinacy == Determinacy::not_assessed) peaks_.loads_assessed = false;
@@ -61,6 +76,10 @@ std::optional<double> RunMonitor::observe(double t, const double* y) {
 }
 
 void RunMonitor::latched() {
+  // The model changed: the loads' steps before and after are not one
+  // smooth function.
+  for (auto* between : {&latch_torque_between_, &element_between_, &sensor_between_})
+    for (StepMaximum& m : *between) m.restart();
   for (DeterminatePeak& p : hinge_force_) p.latched();
   for (DeterminatePeak& p : hinge_moment_) p.latched();
 }

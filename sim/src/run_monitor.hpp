@@ -2,7 +2,9 @@
 // takes, not only at the samples: the peaks of the loads (a latch's shock
 // lasts milliseconds), the loops' geometric gap (max_closure fails a run on
 // it), and the step sizes away from restarts. Because it follows the steps,
-// what it reports does not depend on the sampling interval.
+// what it reports does not depend on the sampling interval; the peaks are
+// interpolated between the steps (StepMaximum), so that they depend little
+// on where the steps land.
 #pragma once
 
 #include <limits>
@@ -10,6 +12,7 @@
 #include <vector>
 
 #include "determinate_peak.hpp"
+#include "step_maximum.hpp"
 #include "unfurl/sim/dynamics.hpp"
 #include "unfurl/sim/loads.hpp"
 
@@ -42,6 +45,7 @@ class RunMonitor {
   RunPeaks peaks_;
   std::vector<TrackedPeak> sensor_peaks_;
   std::vector<DeterminatePeak> hinge_force_, hinge_moment_;  // per joint
+  std::vector<StepMaximum> latch_torque_between_, element_between_, sensor_between_;
   Loads loads_;
   std::vector<ClosureError> closure_;
   bool in_indeterminate_span_ = false;
