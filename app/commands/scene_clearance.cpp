@@ -2,6 +2,7 @@
 
 #include <map>
 #include <memory>
+#include <utility>
 
 #include "unfurl/studies/clearance.hpp"
 #ifdef UNFURL_WITH_RENDER
@@ -42,13 +43,19 @@ studies::BodySolids scene_solids(const sim::Scene& scene, const sim::SceneVisual
   return studies::body_solids(scene, visuals, mesh_reader(scene), unread);
 }
 
+sim::Clearance run_clearance(const sim::Scene& scene, const studies::BodySolids& solids,
+                             std::vector<std::string> unread, const sim::Trajectory& trajectory,
+                             const std::atomic<bool>* cancel) {
+  sim::Clearance c = studies::check_clearance(scene, solids, trajectory, cancel);
+  c.unread = std::move(unread);
+  return c;
+}
+
 sim::Clearance run_clearance(const sim::Scene& scene, const sim::SceneVisuals& visuals,
                              const sim::Trajectory& trajectory, const std::atomic<bool>* cancel) {
   std::vector<std::string> unread;
   const studies::BodySolids solids = scene_solids(scene, visuals, &unread);
-  sim::Clearance c = studies::check_clearance(scene, solids, trajectory, cancel);
-  c.unread = unread;
-  return c;
+  return run_clearance(scene, solids, std::move(unread), trajectory, cancel);
 }
 
 }  // namespace unfurl::app

@@ -16,7 +16,13 @@ namespace unfurl::app {
 studies::BodySolids scene_solids(const sim::Scene& scene, const sim::SceneVisuals& visuals,
                                  std::vector<std::string>* unread);
 
-// Stops where *cancel becomes true, incomplete (studies::check_clearance).
+// Between the scene_solids, the meshes that could not be had named in
+// `unread`. Stops where *cancel becomes true, incomplete
+// (studies::check_clearance).
+sim::Clearance run_clearance(const sim::Scene& scene, const studies::BodySolids& solids,
+                             std::vector<std::string> unread, const sim::Trajectory& trajectory,
+                             const std::atomic<bool>* cancel = nullptr);
+// The same, the solids read first.
 sim::Clearance run_clearance(const sim::Scene& scene, const sim::SceneVisuals& visuals,
                              const sim::Trajectory& trajectory, const std::atomic<bool>* cancel = nullptr);
 
