@@ -390,6 +390,9 @@ sim::Clearance check_clearance(const sim::Scene& scene, const BodySolids& solids
                                 " bodies, the scene has " + std::to_string(scene.model.size()));
   const auto start = std::chrono::steady_clock::now();
   sim::Clearance out;
+  // Already cancelled: not even the bodies' hierarchies and poses (seconds
+  // on a large array under a sanitizer).
+  if (cancel && cancel->load(std::memory_order_relaxed)) return out;
   if (!trajectory.empty()) out = ClearanceCheck(scene, solids, trajectory).run(cancel);
   out.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
