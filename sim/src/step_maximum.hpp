@@ -2,11 +2,13 @@
 // that rises and falls between them (a flexible panel's hinge force rings
 // at some hundred hertz), so the largest step value falls short of the
 // maximum by about x'' h^2 / 8 and moves with where the steps land: with
-// the units of the scene, the tolerance or the regulator's damping (1.1e-4
-// of a flexible array's hinge peak between two unit systems). Where a step
-// value is a local maximum of the steps, the parabola through it and its
-// neighbours puts the maximum at its vertex, which the steps' placement
-// moves only by O(h^3 x''').
+// the units of the scene, the tolerance or the regulator's gains (the
+// pantograph's peak hinge force 3.8e-5 of itself below a tight reference's,
+// a generated flexible array's 6.7e-5 apart between two unit systems).
+// Where a step value is a local maximum of the steps, the parabola through
+// it and its neighbours puts the maximum at its vertex; that differs from
+// the load's maximum between those steps by no more than the parabola differs
+// from the load, O(h^3 x''') where the load is smooth (5e-7 and 4.6e-6 there).
 #pragma once
 
 #include <optional>
