@@ -34,10 +34,9 @@ class DeterminatePeak {
  public:
   // A step's load x at t, and whether the rigid model determined it there.
   void observe(double x, double t, bool determinate) {
-    std::optional<Peak> between;
-    if (determinate) between = between_.observe(t, x);
-    else between_.restart();
+    const std::optional<Peak> between = determinate ? between_.observe(t, x) : std::nullopt;
     if (!determinate) {
+      between_.restart();
       merge(indeterminate_, run_up_);
       merge(indeterminate_, {x, t});
       run_up_ = {}, leaving_ = true, previous_ = std::numeric_limits<double>::infinity();
