@@ -39,7 +39,9 @@ Dynamics::Dynamics(const Scene& scene)
       Q_(scene_.model.nv),
       Q_joint_(scene_.model.nv),
       ddq_(scene_.model.nv),
-      w_(scene_.model.nv) {
+      w_(scene_.model.nv),
+      h_(scene_.model.size()),
+      centres_(scene_.model.size()) {
   layout_.nq = scene_.model.nq;
   layout_.nv = scene_.model.nv;
   columns_ = scene_.load_columns(&element_columns_);
@@ -445,17 +447,16 @@ bool Dynamics::observe(double t, const double* y, Observation& out) {
 
   EnergyParts& E = out.energy;
   E = EnergyParts{};
-  std::vector<Vec6> h(model.size());
   for (int i = 0; i < model.size(); ++i) {
     if (model.flexible(i)) {
       const flexible::ExtendedVector own = sweep_.own_momentum(i, v_[i], w_.data());
       const int m = model.bodies[i].flexible->modes();
-      h[i] = own.head<6>();
-      E.kinetic += 0.5 * (v_[i].dot(h[i]) +
+      h_[i] = own.head<6>();
+      E.kinetic += 0.5 * (v_[i].dot(h_[i]) +
                           Eigen::Map<const Eigen::VectorXd>(w_.data() + model.first_elastic_velocity[i], m).dot(own.tail(m)));
     } else {
-      h[i] = model.bodies[i].spatial_mass() * v_[i];
-      E.kinetic += 0.5 * v_[i].dot(h[i]);
+      h_[i] = model.bodies[i].spatial_mass() * v_[i];
+      E.kinetic += 0.5 * v_[i].dot(h_[i]);
     }
   }
   for (std::size_t k = 0; k < scene_.elements.size(); ++k) {
@@ -473,9 +474,8 @@ bool Dynamics::observe(double t, const double* y, Observation& out) {
         break;
     }
   }
-  std::vector<Vec3> centres(model.size());
-  for (int i = 0; i < model.size(); ++i) centres[i] = sweep_.centre_of_mass(i);
-  out.momentum = system_momentum(model, out.poses, h, centres);
+  for (int i = 0; i < model.size(); ++i) centres_[i] = sweep_.centre_of_mass(i);
+  out.momentum = system_momentum(model, out.poses, h_, centres_);
 
   const int n_loops = static_cast<int>(scene_.loops.size());
   out.closure.resize(n_loops);

@@ -261,6 +261,9 @@ class Dynamics {
   std::vector<Vec6> dissipation_v_;
   std::vector<double> dissipation_w_;
   Loads drive_loads_;  // drive_power()'s
+  // observe()'s, sized once: each body's momentum and centre of mass.
+  std::vector<Vec6> h_;
+  std::vector<Vec3> centres_;
 };
 
 }  // namespace unfurl::sim
