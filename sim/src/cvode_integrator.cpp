@@ -60,6 +60,11 @@ StepOutcome CvodeIntegrator::step(double t_stop) {
     check(CVodeSetStopTime(mem_, t_stop), "CVodeSetStopTime");
     t_stop_set_ = t_stop;
   }
+  if (krylov_ && dynamics_.regulator()) {
+    double h = 0;
+    CVodeGetCurrentStep(mem_, &h);
+    check(CVodeSetEpsLin(mem_, sundials::krylov_tolerance_factor(h, dynamics_.regulator()->v_max())), "CVodeSetEpsLin");
+  }
   double t = 0;
   const int flag = CVode(mem_, t_stop, y_, &t, CV_ONE_STEP);
   StepOutcome out;

@@ -41,6 +41,10 @@ DenseSolver::~DenseSolver() {
 
 int krylov_dimension(int loop_components) { return std::min(2 * loop_components + 5, kMaxKrylovDimension); }
 
+double krylov_tolerance_factor(double step, double v_max) {
+  return kSundialsKrylovToleranceFactor / std::max(1.0, step * v_max);
+}
+
 KrylovSolver::KrylovSolver(N_Vector y, const Dynamics& dynamics, SUNContext ctx)
     : LS(SUNLinSol_SPGMR(y, SUN_PREC_LEFT,
                          krylov_dimension(dynamics.regulator() ? dynamics.regulator()->size() : 0), ctx)) {

@@ -75,6 +75,21 @@ struct KrylovSolver {
 int krylov_dimension(int loop_components);
 inline constexpr int kMaxKrylovDimension = 300;
 
+// The factor on Newton's tolerance that GMRES's residual must reach
+// (CVodeSetEpsLin) for a step h on a mechanism whose loop regulator has the
+// bandwidth v_max: SUNDIALS' 0.05 divided by h v_max where that exceeds 1.
+// The preconditioner leaves the loop forces out, and the preconditioned
+// Newton matrix departs from a normal one in proportion to gamma (the
+// pantograph at its start: |P^-1 N - I| = 8.7e3 at gamma = 1e-5 s, 8.7e6 at
+// 1e-2 s), so a small preconditioned residual bounds the Newton correction's
+// error less and less as the steps lengthen. On the generated 30-stage array
+// at rtol 1e-7 the corrections' error then set the step: the default took
+// 17,401 steps over its first 8 s, this 1,323 (and 90 for 1,391 over 2 s at
+// rtol 1e-8); where h v_max stays below 1 (the flexible arrays, a 100-stage
+// array's first 0.2 s) nothing changes.
+double krylov_tolerance_factor(double step, double v_max);
+inline constexpr double kSundialsKrylovToleranceFactor = 0.05;
+
 // Callbacks, with the Dynamics as user data.
 int rhs(double t, N_Vector y, N_Vector ydot, void* dynamics);
 int switching(double t, N_Vector y, double* values, void* dynamics);
