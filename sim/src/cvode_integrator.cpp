@@ -115,6 +115,12 @@ void CvodeIntegrator::watch_stability_limit() {
   if (bdf_) check(CVodeSetStabLimDet(mem_, SUNTRUE), "CVodeSetStabLimDet");
 }
 
+void CvodeIntegrator::limit_order(int order) {
+  // Lowering the cap is allowed after CVodeInit and persists through
+  // CVodeReInit; the interpolation's degree stays max_order_, an upper bound.
+  if (bdf_ && order < max_order_) check(CVodeSetMaxOrd(mem_, order), "CVodeSetMaxOrd");
+}
+
 bool CvodeIntegrator::set_tolerances(double rtol, double atol) {
   rtol_ = rtol;
   const std::vector<double> scaled = absolute_tolerances(dynamics_, atol);

@@ -25,6 +25,7 @@ class CvodeIntegrator : public Integrator {
   void restart(double t, const double* y) override;
   bool set_tolerances(double rtol, double atol) override;
   void watch_stability_limit() override;
+  void limit_order(int order) override;
   std::vector<int> roots() override;
   SolverStats stats() const override;
   double current_step() const override;

@@ -990,7 +990,7 @@ RunSettings SceneReader::read_run(const YAML::Node& node) const {
   check_keys(node,
              {"t_end", "integrator", "linear_solver", "rtol", "atol", "dt", "sample", "max_closure", "event_window",
               "max_steps", "max_samples", "max_wall_time", "roundoff_guard",
-              "stability_limit_detection"},
+              "stability_limit_detection", "max_order_after_latch"},
              "run");
   RunSettings run;
   if (const YAML::Node integrator = node["integrator"]) {
@@ -1030,6 +1030,9 @@ RunSettings SceneReader::read_run(const YAML::Node& node) const {
     run.stability_limit_detection = *parsed;
   }
   if (node["max_samples"]) run.max_samples = count(node["max_samples"], "run.max_samples", 1, kMostSteps);
+  if (node["max_order_after_latch"])
+    run.max_order_after_latch =
+        static_cast<int>(count(node["max_order_after_latch"], "run.max_order_after_latch", 1, kBdfMaxOrder));
   return run;
 }
 

@@ -333,6 +333,7 @@ void run(std::ostream& out, const RunSettings& r) {
   if (!r.roundoff_guard) out << ", roundoff_guard: false";
   if (r.stability_limit_detection != StabilityLimitDetection::off)
     out << ", stability_limit_detection: " << stability_limit_detection_name(r.stability_limit_detection);
+  if (r.max_order_after_latch != kBdfMaxOrder) out << ", max_order_after_latch: " << r.max_order_after_latch;
   out << "}\n";
 }
 

@@ -111,13 +111,15 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
   } catch (const std::exception& e) {
     fail(t0, 0, "integrator", e.what());
   }
-  // after_latch: from the first engaged latch on, one engaged at the start too.
-  auto watch_after_latch = [&] {
-    if (settings.stability_limit_detection == StabilityLimitDetection::after_latch &&
-        dynamics.latch_state().engaged_count() > 0)
+  // From the first engaged latch on, one engaged at the start too: the
+  // stability-limit detection's after_latch and the order's cap.
+  auto apply_after_latch = [&] {
+    if (dynamics.latch_state().engaged_count() == 0) return;
+    if (settings.stability_limit_detection == StabilityLimitDetection::after_latch)
       integrator->watch_stability_limit();
+    if (settings.max_order_after_latch < kBdfMaxOrder) integrator->limit_order(settings.max_order_after_latch);
   };
-  if (integrator) watch_after_latch();
+  if (integrator) apply_after_latch();
   LatchEvents events(dynamics, settings.event_window);
   RunMonitor monitor(dynamics);
   long restarts = 0;
@@ -173,7 +175,7 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
       std::stable_sort(roots.begin(), roots.end(), [](const LatchRoot& a, const LatchRoot& b) { return a.t < b.t; });
       for (const LatchRoot& r : roots) recorder.event({r.t, r.latch, dynamics.latches()[r.latch]->joint});
       integrator->restart(t_done, y.data());
-      watch_after_latch();
+      apply_after_latch();
       monitor.restarted();
       monitor.latched();
       ++restarts;

@@ -73,6 +73,9 @@ class Integrator {
   // From now on, lower the order where it would step beyond its stability
   // limit (RunSettings::stability_limit_detection; only BDF has one to watch).
   virtual void watch_stability_limit() {}
+  // From now on, step at this order or below (RunSettings::
+  // max_order_after_latch; only BDF's order is capped).
+  virtual void limit_order(int /*order*/) {}
   // The step it will try next, and the one just taken.
   virtual double current_step() const = 0;
   virtual double last_step() const = 0;
