@@ -70,11 +70,6 @@ bool Dynamics::rigid_accelerations(const double* q, const double* w, double* w_d
 Eigen::MatrixXd Dynamics::element_joint_forces(const std::vector<std::size_t>& elements,
                                                const std::vector<int>& coordinates, const double* q, const double* w) {
   const Model& model = scene_.model;
-  Eigen::MatrixXd Q = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(elements.size()),
-                                            static_cast<Eigen::Index>(coordinates.size()));
-  // Torque margins ask for every driven joint at 101 angles: on an array
-  // with no harness forces the placement alone made that O(N^2).
-  if (elements.empty()) return Q;
   place(q);
   body_velocities(w, true);
   sweep_.poses(poses_);
@@ -95,6 +90,8 @@ Eigen::MatrixXd Dynamics::element_joint_forces(const std::vector<std::size_t>& e
     return std::any_of(joint_of.begin(), joint_of.end(), [&](int i) { return spans.contains(i, b); });
   };
   Eigen::VectorXd direct = Eigen::VectorXd::Zero(model.nv);  // what elements put on coordinates themselves
+  Eigen::MatrixXd Q = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(elements.size()),
+                                            static_cast<Eigen::Index>(coordinates.size()));
   for (std::size_t e = 0; e < elements.size(); ++e) {
     const ForceElement& element = *scene_.elements[elements[e]];
     const std::optional<std::vector<int>> listed = element.bodies();

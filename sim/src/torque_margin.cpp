@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "unfurl/sim/dynamics.hpp"
 #include "unfurl/sim/elements/all.hpp"
@@ -30,11 +31,12 @@ std::vector<std::size_t> harness_elements(const Scene& scene) {
 // What acts on one driven joint, and how to weigh it.
 class JointMargin {
  public:
-  JointMargin(const Dynamics& dynamics, int joint, double direction, const TorqueMarginFactors& f)
-      : model_(dynamics.model()), joint_(joint), s_(direction), f_(f) {
+  JointMargin(const Scene& scene, const MechanismScales& scales, int joint, double direction,
+              const TorqueMarginFactors& f)
+      : model_(scene.model), joint_(joint), s_(direction), f_(f) {
     const std::size_t c = model_.velocity_of(joint).value;
-    inertia_ = dynamics.scales().inertia.size() > c ? dynamics.scales().inertia[c] : 0.0;
-    for (const auto& e : dynamics.scene().elements)
+    inertia_ = scales.inertia.size() > c ? scales.inertia[c] : 0.0;
+    for (const auto& e : scene.elements)
       if (const auto* own = dynamic_cast<const JointElement*>(e.get()); own && own->joint == joint_)
         own_.push_back(own);
   }
@@ -140,7 +142,18 @@ std::vector<JointTorqueMargin> torque_margins(const Scene& scene, const Trajecto
   // Checked before the model is built: on a large array that alone takes
   // longer than an interrupt may wait.
   if (run.empty() || cancelled()) return out;
-  Dynamics dynamics(scene);
+  Sweep sweep(scene.model);
+  const MechanismScales scales = mechanism_scales(scene, sweep);
+  // Only harness forces need the dynamics: building it calibrates the
+  // regulator again, and placing the whole model for each driven joint at
+  // each angle made the margins O(N^2) on arrays that have none.
+  const std::vector<std::size_t> harness = harness_elements(scene);
+  std::optional<Dynamics> dynamics;
+  if (!harness.empty()) dynamics.emplace(scene);
+  const auto harness_forces = [&](const std::vector<int>& coordinates, const double* q, const double* w) {
+    return dynamics ? dynamics->element_joint_forces(harness, coordinates, q, w)
+                    : Eigen::MatrixXd(0, static_cast<Eigen::Index>(coordinates.size()));
+  };
   const Model& model = scene.model;
   const std::vector<const Latch*> latches = scene.latches();
   struct Travel {
@@ -159,11 +172,10 @@ std::vector<JointTorqueMargin> torque_margins(const Scene& scene, const Trajecto
     double latched_at = std::numeric_limits<double>::infinity();
     for (const LatchEvent& e : run.events)
       if (e.latch == l) latched_at = std::min(latched_at, e.t);
-    travels.push_back({c, model.velocity_of(j).value, start, end, s, latched_at, JointMargin(dynamics, j, s, factors)});
+    travels.push_back({c, model.velocity_of(j).value, start, end, s, latched_at, JointMargin(scene, scales, j, s, factors)});
     out.emplace_back();
     out.back().joint = model.joints[j].name;
   }
-  const std::vector<std::size_t> harness = harness_elements(scene);
   std::vector<int> rates;
   for (const Travel& x : travels) rates.push_back(x.rate);
   std::vector<double> w(model.nv);
@@ -172,7 +184,7 @@ std::vector<JointTorqueMargin> torque_margins(const Scene& scene, const Trajecto
     if (std::none_of(travels.begin(), travels.end(), [&](const Travel& x) { return sample.t < x.latched_at; })) break;
     const std::vector<double> q(sample.y.begin(), sample.y.begin() + model.nq);
     rates_from_position_rates(model, q.data(), sample.q_dot.data(), w.data());
-    const Eigen::MatrixXd Q = dynamics.element_joint_forces(harness, rates, q.data(), w.data());
+    const Eigen::MatrixXd Q = harness_forces(rates, q.data(), w.data());
     for (std::size_t i = 0; i < travels.size(); ++i)
       if (sample.t < travels[i].latched_at) out[i].run.push_back(travels[i].margin.at(sample.t, q, w, Q.col(i)));
   }
@@ -183,7 +195,7 @@ std::vector<JointTorqueMargin> torque_margins(const Scene& scene, const Trajecto
     for (int k = 0; k < kQuasiStaticPoints; ++k) {
       const double target = x.start + (x.end - x.start) * k / (kQuasiStaticPoints - 1);
       const std::vector<double> q = state_at_angle(run, x.c, x.s, x.start, target);
-      const Eigen::MatrixXd Q = dynamics.element_joint_forces(harness, {x.rate}, q.data(), at_rest.data());
+      const Eigen::MatrixXd Q = harness_forces({x.rate}, q.data(), at_rest.data());
       out[i].quasi_static.push_back(x.margin.at(std::nan(""), q, at_rest, Q.col(0)));
     }
     out[i].worst_run = worst_of(out[i].run);
