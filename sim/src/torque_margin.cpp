@@ -172,7 +172,8 @@ std::vector<JointTorqueMargin> torque_margins(const Scene& scene, const Trajecto
     double latched_at = std::numeric_limits<double>::infinity();
     for (const LatchEvent& e : run.events)
       if (e.latch == l) latched_at = std::min(latched_at, e.t);
-    travels.push_back({c, model.velocity_of(j).value, start, end, s, latched_at, JointMargin(scene, scales, j, s, factors)});
+    travels.push_back(
+        {c, model.velocity_of(j).value, start, end, s, latched_at, JointMargin(scene, scales, j, s, factors)});
     out.emplace_back();
     out.back().joint = model.joints[j].name;
   }
