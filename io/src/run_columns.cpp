@@ -140,9 +140,11 @@ std::vector<RunColumn> load_file_columns(const sim::Scene& scene, const sim::Tra
   };
   // Each joint's element columns, then its reaction; the loops' forces;
   // the columns of elements that are not on a joint.
+  std::vector<std::vector<std::size_t>> of_joint(m.size());
+  for (std::size_t c = 0; c < element.size(); ++c)
+    if (element[c].joint >= 0) of_joint[element[c].joint].push_back(c);
   for (int j = 0; j < m.size(); ++j) {
-    for (std::size_t c = 0; c < element.size(); ++c)
-      if (element[c].joint == j) element_column(c);
+    for (const std::size_t c : of_joint[j]) element_column(c);
     if (!m.joints[j].has_reaction()) continue;
     for (int a = 0; a < 6; ++a)
       add(

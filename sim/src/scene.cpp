@@ -1,6 +1,7 @@
 #include "unfurl/sim/scene.hpp"
 
 #include <algorithm>
+#include <unordered_map>
 
 #include "unfurl/sim/elements/gravity.hpp"
 
@@ -14,13 +15,15 @@ Vec3 Scene::gravity() const {
 
 std::vector<LoadColumn> Scene::load_columns(std::vector<std::vector<int>>* of_element) const {
   std::vector<LoadColumn> columns;
+  // Elements that share a column (a joint's spring and damper) are found by
+  // name; a search of the list made this O(N^2) on large arrays.
+  std::unordered_map<std::string, int> index;
   if (of_element) of_element->assign(elements.size(), {});
   for (std::size_t k = 0; k < elements.size(); ++k) {
     for (const LoadColumn& c : elements[k]->load_columns(model)) {
-      const auto same =
-          std::find_if(columns.begin(), columns.end(), [&](const LoadColumn& o) { return o.name == c.name; });
-      if (of_element) (*of_element)[k].push_back(static_cast<int>(same - columns.begin()));
-      if (same == columns.end()) columns.push_back(c);
+      const auto [at, added] = index.try_emplace(c.name, static_cast<int>(columns.size()));
+      if (of_element) (*of_element)[k].push_back(at->second);
+      if (added) columns.push_back(c);
     }
   }
   return columns;

@@ -1,10 +1,11 @@
 #include "unfurl/sim/scene_validation.hpp"
 
 #include <Eigen/Eigenvalues>
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <set>
 #include <sstream>
+#include <unordered_map>
 
 #include "unfurl/sim/elements/joint_compliance.hpp"
 #include "unfurl/sim/elements/joint_driver.hpp"
@@ -190,11 +191,11 @@ void check_regulator(const RegulatorSettings& r) {
 // than max_samples, or more fixed RK4 steps than max_steps.
 // A compliant hinge has its pin's stiffness, once.
 void check_compliance(const Scene& scene) {
+  std::vector<int> given(scene.model.size(), 0);
+  for (const JointCompliance* c : scene.elements_of<JointCompliance>())
+    if (c->joint >= 0 && c->joint < scene.model.size()) ++given[c->joint];
   for (int i = 0; i < scene.model.size(); ++i) {
-    const auto of_joint = std::count_if(scene.elements.begin(), scene.elements.end(), [&](const auto& e) {
-      const auto* c = dynamic_cast<const JointCompliance*>(e.get());
-      return c && c->joint == i;
-    });
+    const int of_joint = given[i];
     if (scene.model.joints[i].compliant && of_joint != 1)
       throw SceneInvalid(body_field(scene, i) + ".joint.compliance",
                          of_joint == 0 ? "a compliant joint needs its pin's stiffness" : "given more than once");
@@ -257,12 +258,15 @@ std::string body_field(const Scene& scene, int i) {
   return "bodies[" + std::to_string(bus ? i - 1 : i) + "] (" + scene.model.bodies[i].name + ")";
 }
 
-std::string element_field(const Scene& scene, std::size_t k) {
-  const std::string list = scene.elements[k]->list();
-  std::size_t index = 0;
-  for (std::size_t j = 0; j < k; ++j)
-    if (scene.elements[j]->list() == list) ++index;
-  return list == "gravity" ? list : list + "[" + std::to_string(index) + "]";
+std::vector<std::string> element_fields(const Scene& scene) {
+  std::unordered_map<std::string, std::size_t> listed;  // how many of each list so far
+  std::vector<std::string> fields;
+  for (const auto& e : scene.elements) {
+    const std::string list = e->list();
+    const std::size_t index = listed[list]++;
+    fields.push_back(list == "gravity" ? list : list + "[" + std::to_string(index) + "]");
+  }
+  return fields;
 }
 
 void check_positive(double x, const std::string& field) {
@@ -311,7 +315,8 @@ void validate(Scene& scene) {
     if (d->joint >= 0 && d->joint < scene.model.size()) scene.model.joints[d->joint].driven = true;
   validate_model(scene);
   check_initial_state(scene);
-  for (std::size_t k = 0; k < scene.elements.size(); ++k) scene.elements[k]->validate(scene, element_field(scene, k));
+  const std::vector<std::string> fields = element_fields(scene);
+  for (std::size_t k = 0; k < scene.elements.size(); ++k) scene.elements[k]->validate(scene, fields[k]);
   check_compliance(scene);
   check_positive(scene.closure_tolerance, "closure_tolerance");
   if (scene.closure_tolerance > kLargestClosureTolerance)

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "unfurl/input/input_error.hpp"
 #include "unfurl/sim/scene.hpp"
@@ -51,8 +52,8 @@ bool is_valid_name(const std::string& name);
 // "bodies[3] (panel_A1)": how a field path names body i (the free base is
 // "base").
 std::string body_field(const Scene& scene, int i);
-// "springs[2]": element k by its list and its index there.
-std::string element_field(const Scene& scene, std::size_t k);
+// "springs[2]": each element by its list and its index there.
+std::vector<std::string> element_fields(const Scene& scene);
 
 // Range checks that throw SceneInvalid at `field`.
 void check_positive(double x, const std::string& field);

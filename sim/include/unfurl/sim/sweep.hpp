@@ -80,6 +80,15 @@ class Sweep {
     auto Q_ = coordinates(Q);
     force_pass(F, Q_);
   }
+  // The same where F is zero but on `bodies`' root paths: `bodies` lists
+  // that union of paths in decreasing order, and Q is written on its
+  // bodies' coordinates alone (the rest of Q would be zero). O(its length).
+  void generalized_forces_along(const std::vector<int>& bodies, std::vector<Vec6>& F, double* Q) const {
+    auto Q_ = coordinates(Q);
+    for (const int i : bodies)
+      if (flex_[i] >= 0) flexible_[flex_[i]].F.setZero(flexible_[flex_[i]].d, 1);
+    for (const int i : bodies) force_step(i, F, Q_);
+  }
 
   // Body poses in the base frame from the placements of the last
   // set_configuration (no trigonometry again).
@@ -123,6 +132,9 @@ class Sweep {
                      const double* driven = nullptr) const;
   template <class S, class Pout>
   void force_pass(std::vector<S>& F, Pout& Q) const;
+  // Body i's part of force_pass: its coordinates' Q, its F* on to its parent.
+  template <class S, class Pout>
+  void force_step(int i, std::vector<S>& F, Pout& Q) const;
 
   // Joint i's placement from its parent's frame, or, for a child of a
   // flexible body, from the node frame it hangs on.
@@ -406,29 +418,32 @@ void Sweep::velocity_pass(const P& p, const std::vector<S>& phi, const Vec6& v_b
 template <class S, class Pout>
 void Sweep::force_pass(std::vector<S>& F, Pout& Q) const {
   for (const Flexible& f : flexible_) f.F.setZero(f.d, load_cases(F));
-  for (int i = model_.size() - 1; i >= 0; --i) {
-    const int c = model_.first_velocity[i].value;
-    if (flex_[i] >= 0) {
-      const Flexible& f = flexible_[flex_[i]];
-      f.F.topRows(6) += F[i];
-      F[i] = f.F.topRows(6);
-      Q.middleRows(model_.first_elastic_velocity[i], f.m) = f.F.bottomRows(f.m);
-    }
-    if (multi_[i] >= 0) {
-      const MultiAxis& J = multi_axes_[multi_[i]];
-      const auto Q_i = (J.A.transpose() * F[i]).eval();
-      Q.middleRows(c, J.n) = Q_i.topRows(J.n);
-    } else if (c >= 0) {
-      Q.row(c).noalias() = A_[i].transpose() * F[i];
-    }
-    const int k = model_.parent[i];
-    if (k == kBase) continue;
-    if (const int a = model_.node_of(i); a >= 0) {
-      const Flexible& f = flexible_[flex_[k]];
-      f.F.noalias() += f.N[a].transpose() * X_[i].transform_force(F[i]);
-    } else {
-      F[k] += X_[i].transform_force(F[i]);
-    }
+  for (int i = model_.size() - 1; i >= 0; --i) force_step(i, F, Q);
+}
+
+template <class S, class Pout>
+void Sweep::force_step(int i, std::vector<S>& F, Pout& Q) const {
+  const int c = model_.first_velocity[i].value;
+  if (flex_[i] >= 0) {
+    const Flexible& f = flexible_[flex_[i]];
+    f.F.topRows(6) += F[i];
+    F[i] = f.F.topRows(6);
+    Q.middleRows(model_.first_elastic_velocity[i], f.m) = f.F.bottomRows(f.m);
+  }
+  if (multi_[i] >= 0) {
+    const MultiAxis& J = multi_axes_[multi_[i]];
+    const auto Q_i = (J.A.transpose() * F[i]).eval();
+    Q.middleRows(c, J.n) = Q_i.topRows(J.n);
+  } else if (c >= 0) {
+    Q.row(c).noalias() = A_[i].transpose() * F[i];
+  }
+  const int k = model_.parent[i];
+  if (k == kBase) return;
+  if (const int a = model_.node_of(i); a >= 0) {
+    const Flexible& f = flexible_[flex_[k]];
+    f.F.noalias() += f.N[a].transpose() * X_[i].transform_force(F[i]);
+  } else {
+    F[k] += X_[i].transform_force(F[i]);
   }
 }
 
