@@ -6,6 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <functional>
 #include <random>
 
 #include "unfurl/sim/dynamics.hpp"
@@ -157,6 +160,44 @@ TEST(Sweep, LoopMobilityFromExtraPassesEqualsDenseFormula) {
   const MatrixXd W_dense = dense_mobility(scene, regulator.components(), q);
   EXPECT_LT((W - W_dense).norm(), 1e-10 * W_dense.norm());
   EXPECT_EQ(m, W.rows());
+}
+
+// The force pass along root paths (how the regulator finds its components)
+// gives the whole tree's pass exactly on those paths' coordinates: a wrench
+// pair on a loop's two halves of pantograph_flexible, whose loops close
+// through its plates' nodes.
+TEST(Sweep, AForcePassAlongRootPathsIsTheWholePassThere) {
+  const sim::Scene scene = test::scene_file("pantograph_flexible");
+  const sim::Model& model = scene.model;
+  sim::Sweep sweep(model);
+  std::vector<double> q = scene.q0;
+  for (int c = 0; c < model.nq; ++c) q[c] += 0.01 * c;
+  sweep.set_configuration(q.data());
+  ASSERT_FALSE(scene.loops.empty());
+  for (const sim::Loop& loop : scene.loops) {
+    std::vector<int> path;
+    for (const int end : {loop.body, loop.image})
+      for (int i = end; i >= 0; i = model.parent[i])
+        if (std::find(path.begin(), path.end(), i) == path.end()) path.push_back(i);
+    std::sort(path.begin(), path.end(), std::greater<int>());
+    std::vector<sim::Vec6> F(model.size(), sim::Vec6::Zero()), F_along = F;
+    F[loop.body] = sim::Vec6::LinSpaced(-1, 2);
+    F[loop.image] = sim::Vec6::LinSpaced(3, -0.5);
+    F_along = F;
+    VectorXd Q(model.nv), Q_along = VectorXd::Constant(model.nv, std::nan(""));
+    sweep.generalized_forces(F, Q.data());
+    sweep.generalized_forces_along(path, F_along, Q_along.data());
+    int written = 0;
+    for (int c = 0; c < model.nv; ++c) {
+      if (std::isnan(Q_along[c])) {
+        EXPECT_EQ(Q[c], 0) << "coordinate " << c << " off the paths";
+      } else {
+        EXPECT_EQ(Q_along[c], Q[c]) << "coordinate " << c;
+        ++written;
+      }
+    }
+    EXPECT_GT(written, 0);
+  }
 }
 
 TEST(Sweep, JointDiagonalSolvesWithMassMatrixPlusDiagonal) {
