@@ -5,10 +5,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <unordered_set>
 
 #include "unfurl/sim/kinematics.hpp"
 #include "unfurl/studies/clearance_broad_phase.hpp"
@@ -93,18 +95,16 @@ class ClearanceCheck {
   // measured lies within it: every pair left out is then farther apart
   // than the margin, and than the closest, throughout.
   sim::Clearance run(const std::atomic<bool>* cancel) {
-    std::vector<bool> measured(pairs_.size(), false);
-    long left = static_cast<long>(pairs_.size());
+    std::unordered_set<std::uint64_t> measured;
+    long left = pairs_;
     double margin = 0.1 * length_;
     for (;;) {
       const NearPairs near(
           boxes_, poses_.size(), [&](std::size_t k, int s) -> const sim::Pose& { return pose(poses_[k], s); }, margin);
-      for (std::size_t i = 0; i < pairs_.size(); ++i) {
-        const auto [a, b] = pairs_[i];
-        if (measured[i] || !near.near(a, b)) continue;
+      for (const auto& [a, b] : near.pairs()) {
+        if (joined_.count(key(a, b)) || !measured.insert(key(a, b)).second) continue;
         if (cancel && cancel->load(std::memory_order_relaxed)) return out_;
         scan(a, b);
-        measured[i] = true;
         --left;
       }
       if (left == 0 || closest_ <= margin) break;
@@ -169,21 +169,29 @@ class ClearanceCheck {
 
   int slot(int body) const { return body == sim::kBase ? base_slot_ : slot_of_[body]; }
 
-  // Pairs of bodies with solids that no joint, loop or bushing holds together.
+  static std::uint64_t key(int a, int b) {
+    const auto [low, high] = std::minmax(a, b);
+    return static_cast<std::uint64_t>(low) << 32 | static_cast<std::uint64_t>(high);
+  }
+
+  // The pairs a joint, a loop or a bushing holds together, and how many of
+  // bodies with solids are left (the pairs to check; the broad phase lists
+  // the near ones, so that none is listed N^2 times).
   void gather_pairs() {
-    const int n = static_cast<int>(bodies_.size());
-    std::vector<std::vector<bool>> joined(n, std::vector<bool>(n, false));
     const auto join = [&](int a, int b) {
       const int sa = slot(a), sb = slot(b);
-      if (sa >= 0 && sb >= 0) joined[sa][sb] = joined[sb][sa] = true;
+      if (sa >= 0 && sb >= 0 && sa != sb) joined_.insert(key(sa, sb));
     };
     for (int i = 0; i < scene_.model.size(); ++i) join(i, scene_.model.parent[i]);
     for (const auto& element : scene_.elements)
       for (const sim::ElementLink& link : element->links())
         if (link.style == sim::ElementLink::Style::bushing) join(link.body_a, link.body_b);
-    for (int a = 0; a < n; ++a)
-      for (int b = a + 1; b < n; ++b)
-        if (!joined[a][b] && !bodies_[a].solids.empty() && !bodies_[b].solids.empty()) pairs_.push_back({a, b});
+    const auto with_solids = [&](int x) { return !bodies_[x].solids.empty(); };
+    long n = 0;
+    for (int x = 0; x < static_cast<int>(bodies_.size()); ++x) n += with_solids(x);
+    pairs_ = n * (n - 1) / 2;
+    for (const std::uint64_t k : joined_)
+      if (with_solids(static_cast<int>(k >> 32)) && with_solids(static_cast<int>(k & 0xffffffffu))) --pairs_;
   }
 
   void poses_at(const double* q, std::vector<sim::Pose>& out) const { sim::body_poses(scene_.model, q, out); }
@@ -368,7 +376,8 @@ class ClearanceCheck {
   std::vector<PhysicalBody> bodies_;
   std::vector<int> slot_of_;
   int base_slot_ = -1;
-  std::vector<std::pair<int, int>> pairs_;
+  std::unordered_set<std::uint64_t> joined_;   // key(a, b) of slots held together
+  long pairs_ = 0;                             // pairs of bodies with solids, not held together
   std::vector<std::vector<sim::Pose>> poses_;  // per sample
   std::vector<BodyBox> boxes_;                 // per physical body
   double closest_ = kInf;                      // over the pairs measured

@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace unfurl::studies {
 
@@ -49,9 +50,8 @@ BodyBox enclosing_box(const std::vector<Solid>& solids) {
   return out;
 }
 
-NearPairs::NearPairs(const std::vector<BodyBox>& boxes, std::size_t samples, const PoseAt& pose, double margin)
-    : n_(boxes.size()), table_(n_ * n_, false) {
-  for (std::size_t i = 0; i < n_; ++i)
+NearPairs::NearPairs(const std::vector<BodyBox>& boxes, std::size_t samples, const PoseAt& pose, double margin) {
+  for (std::size_t i = 0; i < boxes.size(); ++i)
     if (boxes[i].radius >= 0) bodies_.push_back(static_cast<int>(i));
   // Body i's box at sample k in the base frame, and its centre.
   const auto placed = [&](std::size_t k, int i, sim::Vec3& centre) {
@@ -60,11 +60,12 @@ NearPairs::NearPairs(const std::vector<BodyBox>& boxes, std::size_t samples, con
     const sim::Vec3 half = p.rotation.transpose().cwiseAbs() * boxes[i].half;
     return Span{centre - half, centre + half};
   };
-  std::vector<Span> spans(n_);
+  std::vector<Span> spans(boxes.size());
+  std::unordered_set<std::uint64_t> found;
   sim::Vec3 c0, c1;
   if (samples == 1) {
     for (int i : bodies_) spans[i] = placed(0, i, c0);
-    sweep(spans, margin);
+    sweep(spans, margin, found);
   }
   for (std::size_t k = 1; k < samples; ++k) {
     for (int i : bodies_) {
@@ -73,8 +74,16 @@ NearPairs::NearPairs(const std::vector<BodyBox>& boxes, std::size_t samples, con
       const sim::Vec3 grow = sim::Vec3::Constant((c1 - c0).norm() + boxes[i].radius * turn);
       spans[i] = {a.low.cwiseMin(b.low) - grow, a.high.cwiseMax(b.high) + grow};
     }
-    sweep(spans, margin);
+    sweep(spans, margin, found);
   }
+  pairs_.reserve(found.size());
+  for (const std::uint64_t key : found)
+    pairs_.push_back({static_cast<int>(key >> 32), static_cast<int>(key & 0xffffffffu)});
+  std::sort(pairs_.begin(), pairs_.end());
+}
+
+bool NearPairs::near(int a, int b) const {
+  return std::binary_search(pairs_.begin(), pairs_.end(), std::pair{std::min(a, b), std::max(a, b)});
 }
 
 // Every pair of boxes within `margin` of each other along all three axes
@@ -82,7 +91,7 @@ NearPairs::NearPairs(const std::vector<BodyBox>& boxes, std::size_t samples, con
 // their centres spread most along (an array hinged about x spreads along y
 // or z, its panels all overlapping in x), each is compared with those that
 // begin before it ends.
-void NearPairs::sweep(const std::vector<Span>& spans, double margin) {
+void NearPairs::sweep(const std::vector<Span>& spans, double margin, std::unordered_set<std::uint64_t>& found) {
   Eigen::AlignedBox3d centres;
   for (int i : bodies_) centres.extend(0.5 * (spans[i].low + spans[i].high));
   int axis = 0;
@@ -94,8 +103,8 @@ void NearPairs::sweep(const std::vector<Span>& spans, double margin) {
     for (std::size_t v = u + 1; v < order_.size() && spans[order_[v]].low[axis] <= a.high[axis] + margin; ++v) {
       const Span& b = spans[order_[v]];
       if (((b.low - a.high).array() > margin).any() || ((a.low - b.high).array() > margin).any()) continue;
-      const std::size_t i = order_[u], j = order_[v];
-      table_[i * n_ + j] = table_[j * n_ + i] = true;
+      const auto [low, high] = std::minmax(order_[u], order_[v]);
+      found.insert(static_cast<std::uint64_t>(low) << 32 | static_cast<std::uint64_t>(high));
     }
   }
 }
