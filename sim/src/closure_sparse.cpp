@@ -25,7 +25,7 @@
 #include <algorithm>
 #include <limits>
 
-#include "unfurl/sim/closure_solver.hpp"
+#include "armature_closure_solver.hpp"
 
 namespace unfurl::sim {
 
@@ -51,14 +51,18 @@ Mat6 velocity_transform(const Placement& X) {
   return C;
 }
 
-class SparseClosureSolver : public ClosureSolver {
+using OnParent = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, flexible::kMaxExtended>;
+
+class SparseClosureSolver : public ArmatureClosureSolver {
  public:
-  SparseClosureSolver(const Model& model, const std::vector<Loop>& loops, const std::vector<LoopComponent>& components)
-      : model_(model), m_(static_cast<int>(components.size())) {
+  // With `armature`, factorize() takes the joints' armature as well.
+  SparseClosureSolver(const Model& model, const std::vector<Loop>& loops, const std::vector<LoopComponent>& components,
+                      bool armature)
+      : model_(model), m_(static_cast<int>(components.size())), armature_(armature) {
     const int N = model.size();
     double total_mass = 0;
     for (const Body& b : model.bodies) total_mass += b.mass;
-    eps_ = 1e-10 * N / total_mass;
+    eps_ = (armature ? kArmatureEps : kEps) * N / total_mass;
 
     int rows = 0;
     velocity_row_.resize(N);
@@ -96,6 +100,9 @@ class SparseClosureSolver : public ClosureSolver {
           for (int c = 0; c < width(k); ++c) entries.emplace_back(joint_row_[i] + r, velocity_row_[k] + c, 0.0);
         entries.emplace_back(joint_row_[i] + r, joint_row_[i] + r, -eps_);
       }
+      if (armature_ && carries_armature(i) && k != kBase)
+        for (int r = 0; r < 6; ++r)
+          for (int c = 0; c < width(k); ++c) entries.emplace_back(v_i + r, velocity_row_[k] + c, 0.0);
     }
     for (int c = 0; c < m_; ++c) {
       const LoopComponent& lc = components[c];
@@ -131,10 +138,18 @@ class SparseClosureSolver : public ClosureSolver {
         for (int c = 0; c < 6; ++c) varying_block_.push_back(&K_.coeffRef(joint_row_[i] + r, velocity_row_[i] + c));
     }
 
+    if (armature_) find_armature_slots();
+
     ldlt_.analyzePattern(K_);
   }
 
-  bool factorize(const Sweep& sweep, const double* delta) override {
+  bool factorize(const Sweep& sweep, const double* delta) override { return factor(sweep, delta, nullptr); }
+  bool factorize(const Sweep& sweep, const double* delta, const double* armature) override {
+    return factor(sweep, delta, armature);
+  }
+
+  bool factor(const Sweep& sweep, const double* delta, const double* armature) {
+    if (armature) std::copy(mass_only_.begin(), mass_only_.end(), K_.valuePtr());
     double** varying_slot = varying_block_.data();
     for (int i : varying_) {
       N_[i] = constrained_directions(sweep.motion_axes(i), model_.joints[i].dof());
@@ -145,17 +160,9 @@ class SparseClosureSolver : public ClosureSolver {
     for (int i = 0; i < model_.size(); ++i) {
       const int k = model_.parent[i];
       if (k == kBase) continue;
-      const Eigen::Matrix<double, Eigen::Dynamic, 6, 0, 6, 6> block =
-          -N_[i].transpose() * velocity_transform(sweep.placement(i));
-      if (const int a = model_.node_of(i); a >= 0) {
-        const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, flexible::kMaxExtended> on_node =
-            block * sweep.node_matrix(k, a);
-        for (int r = 0; r < on_node.rows(); ++r)
-          for (int c = 0; c < width(k); ++c) **slot++ = on_node(r, c);
-        continue;
-      }
+      const OnParent block = on_parent(sweep, i, -N_[i].transpose());
       for (int r = 0; r < block.rows(); ++r)
-        for (int c = 0; c < width(k); ++c) **slot++ = c < 6 ? block(r, c) : 0.0;  // on a flexible body's frame
+        for (int c = 0; c < width(k); ++c) **slot++ = block(r, c);
     }
     double** mass = mass_block_.data();
     for (int i : flexible_) {
@@ -164,6 +171,7 @@ class SparseClosureSolver : public ClosureSolver {
         for (int r = c; r < width(i); ++r) **mass++ = M(r, c);
     }
     for (int c = 0; c < m_; ++c) *delta_slot_[c] = -delta[c];
+    if (armature) add_armature(sweep, armature);
     ldlt_.factorize(K_);
     D_ = ldlt_.vectorD();  // a copy: Eigen hands D out by value
     return ldlt_.info() == Eigen::Success;
@@ -184,15 +192,18 @@ class SparseClosureSolver : public ClosureSolver {
     // that does not halve the residual has reached it, and more would
     // only repeat it (on a 30-stage pantograph most solves used to run
     // all five passes for nothing).
+    // With armature (a preconditioner's solve) exactly one pass, so that
+    // the solve is one fixed linear map, as GMRES needs.
     const double target = 1e-12 * norm(rhs_);
     double previous = std::numeric_limits<double>::infinity();
-    for (int pass = 0; refine && pass < 5; ++pass) {
+    const int passes = armature_ ? 1 : refine ? 5 : 0;
+    for (int pass = 0; pass < passes; ++pass) {
       // The residual of the unregularized matrix: K_0 = K + eps on the joint rows.
       residual_of_K(k);
       for (int c = 0; c < k; ++c)
         for (int i = v_rows; i < v_rows + joint_rows; ++i) residual_[c * n + i] -= eps_ * solution_[c * n + i];
       const double r = norm(residual_);
-      if (r <= target || r > 0.5 * previous) break;
+      if (!armature_ && (r <= target || r > 0.5 * previous)) break;
       previous = r;
       apply_inverse(residual_, work_, k);
       for (std::size_t i = 0; i < solution_.size(); ++i) solution_[i] += work_[i];
@@ -211,7 +222,20 @@ class SparseClosureSolver : public ClosureSolver {
   std::vector<int> varying_;            // joints whose A (and N) turn with q: universal
   std::vector<double*> varying_block_;  // their N_i^T entries
   int loop_row_ = 0;
+  bool armature_;
+  // The joint rows' -eps (per unit of the mechanism's mean mass). The
+  // armature system is solved at poles rho delta far below delta (1e-8 of
+  // it at h v_max = 350), where one pass against 1e-10 left the 20-stage
+  // array's preconditioned Newton matrix with eigenvalues out to 4; at
+  // 1e-12 they lie within 2 % of 1 (1e-13: one at 0.05, 1e-14: out to 27,
+  // the factorization's round-off growing as eps falls).
+  static constexpr double kEps = 1e-10, kArmatureEps = 1e-12;
   SparseMatrix K_;
+  // With armature: K's values without it (the masses' blocks are written
+  // once, so each factorization starts again from these), and the entries
+  // it adds to, in add_armature()'s order.
+  std::vector<double> mass_only_;
+  std::vector<double*> armature_slot_;
   std::vector<double*> parent_block_, delta_slot_;
   std::vector<int> flexible_;        // bodies whose block of M is M^(eta)
   std::vector<double*> mass_block_;  // its lower triangle
@@ -223,6 +247,69 @@ class SparseClosureSolver : public ClosureSolver {
 
   // A body's velocities in v: 6, or a flexible body's 6 + m.
   int width(int i) const { return model_.flexible(i) ? 6 + model_.bodies[i].flexible->modes() : 6; }
+
+  bool carries_armature(int i) const { return model_.joints[i].dof() > 0; }
+
+  // left C_i (N_a): `left` applied to the parent's velocities as body i's
+  // joint sees them (width(k) columns; on a flexible parent's node N_a
+  // carries its elastic rates, on its frame they do not enter).
+  template <class Left>
+  OnParent on_parent(const Sweep& sweep, int i, const Left& left) const {
+    const int k = model_.parent[i];
+    const Eigen::Matrix<double, Eigen::Dynamic, 6, 0, 6, 6> block = left * velocity_transform(sweep.placement(i));
+    if (const int a = model_.node_of(i); a >= 0) return block * sweep.node_matrix(k, a);
+    OnParent padded = OnParent::Zero(block.rows(), width(k));
+    padded.leftCols(6) = block;
+    return padded;
+  }
+
+  void find_armature_slots() {
+    for (int i = 0; i < model_.size(); ++i) {
+      if (!carries_armature(i)) continue;
+      const int v_i = velocity_row_[i], k = model_.parent[i];
+      for (int c = 0; c < 6; ++c)
+        for (int r = c; r < 6; ++r) armature_slot_.push_back(&K_.coeffRef(v_i + r, v_i + c));
+      if (k == kBase) continue;
+      const int v_k = velocity_row_[k];
+      for (int c = 0; c < width(k); ++c)
+        for (int r = c; r < width(k); ++r) armature_slot_.push_back(&K_.coeffRef(v_k + r, v_k + c));
+      for (int r = 0; r < 6; ++r)
+        for (int c = 0; c < width(k); ++c) armature_slot_.push_back(&K_.coeffRef(v_i + r, v_k + c));
+    }
+    for (int i : flexible_)
+      for (int e = 6; e < width(i); ++e)
+        armature_slot_.push_back(&K_.coeffRef(velocity_row_[i] + e, velocity_row_[i] + e));
+    mass_only_.assign(K_.valuePtr(), K_.valuePtr() + K_.nonZeros());
+  }
+
+  // Joint i's armature E acts on its rates w = P (v_i - C_i v_k), P = (A^T
+  // A)^-1 A^T the left inverse of its motion axes (the joint rows hold the
+  // relative velocity to A's span): the quadratic form w^T E w in the
+  // bodies' velocities, H = P^T E P on v_i, C^T H C on v_k, -H C between.
+  void add_armature(const Sweep& sweep, const double* armature) {
+    double** slot = armature_slot_.data();
+    for (int i = 0; i < model_.size(); ++i) {
+      if (!carries_armature(i)) continue;
+      const int dof = model_.joints[i].dof(), k = model_.parent[i];
+      const Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, 6> A = sweep.motion_axes(i).leftCols(dof);
+      const Eigen::Matrix<double, Eigen::Dynamic, 6, 0, 6, 6> P = (A.transpose() * A).ldlt().solve(A.transpose());
+      const Eigen::Map<const Eigen::VectorXd> E(armature + model_.first_velocity[i].value, dof);
+      const Mat6 H = P.transpose() * E.asDiagonal() * P;
+      for (int c = 0; c < 6; ++c)
+        for (int r = c; r < 6; ++r) **slot++ += H(r, c);
+      if (k == kBase) continue;
+      const OnParent HC = on_parent(sweep, i, H);
+      const OnParent C = on_parent(sweep, i, Mat6::Identity());
+      const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, flexible::kMaxExtended, flexible::kMaxExtended>
+          CHC = C.transpose() * HC;
+      for (int c = 0; c < width(k); ++c)
+        for (int r = c; r < width(k); ++r) **slot++ += CHC(r, c);
+      for (int r = 0; r < 6; ++r)
+        for (int c = 0; c < width(k); ++c) **slot++ -= HC(r, c);
+    }
+    for (int i : flexible_)
+      for (int e = 0; e < width(i) - 6; ++e) **slot++ += armature[model_.first_elastic_velocity[i] + e];
+  }
 
   static double norm(const std::vector<double>& x) {
     return Eigen::Map<const Eigen::VectorXd>(x.data(), static_cast<Eigen::Index>(x.size())).norm();
@@ -282,7 +369,12 @@ class SparseClosureSolver : public ClosureSolver {
 
 std::unique_ptr<ClosureSolver> make_sparse_closure_solver(const Model& model, const std::vector<Loop>& loops,
                                                           const std::vector<LoopComponent>& components) {
-  return std::make_unique<SparseClosureSolver>(model, loops, components);
+  return std::make_unique<SparseClosureSolver>(model, loops, components, false);
+}
+
+std::unique_ptr<ArmatureClosureSolver> make_armature_closure_solver(const Model& model, const std::vector<Loop>& loops,
+                                                                    const std::vector<LoopComponent>& components) {
+  return std::make_unique<SparseClosureSolver>(model, loops, components, true);
 }
 
 }  // namespace unfurl::sim

@@ -60,7 +60,7 @@ StepOutcome CvodeIntegrator::step(double t_stop) {
     check(CVodeSetStopTime(mem_, t_stop), "CVodeSetStopTime");
     t_stop_set_ = t_stop;
   }
-  if (krylov_ && dynamics_.regulator()) {
+  if (krylov_ && dynamics_.regulator() && dynamics_.regulator()->settings().gains == GainTuning::paper) {
     double h = 0;
     CVodeGetCurrentStep(mem_, &h);
     check(CVodeSetEpsLin(mem_, sundials::krylov_tolerance_factor(h, dynamics_.regulator()->v_max())), "CVodeSetEpsLin");

@@ -63,11 +63,12 @@ struct KrylovSolver {
   SUNLinearSolver LS = nullptr;
 };
 
-// GMRES's Krylov dimension for a mechanism of m loop components. The
-// preconditioner leaves the loop forces out (newton_preconditioner.hpp):
-// they change the Newton matrix by at most rank 2m (the momenta's rows in
-// the range of the loops' m directions, the integral states' m rows), which
-// a space of 2m + 5 holds, 5 being SUNDIALS' default for the rest. Where a
+// GMRES's Krylov dimension for a mechanism of m loop components. Where the
+// preconditioner leaves the loop forces out (the paper's gains,
+// newton_preconditioner.hpp) they change the Newton matrix by at most rank
+// 2m (the momenta's rows in the range of the loops' m directions, the
+// integral states' m rows), which a space of 2m + 5 holds, 5 being
+// SUNDIALS' default for the rest. Where a
 // loop closes through compliant pins or plates that part is no longer a
 // tight cluster: with the default alone, Newton failed on 36 % of the
 // flexible 10-stage array's steps. Capped, as the solver keeps that many
@@ -77,8 +78,9 @@ inline constexpr int kMaxKrylovDimension = 300;
 
 // The factor on Newton's tolerance that GMRES's residual must reach
 // (CVodeSetEpsLin) for a step h on a mechanism whose loop regulator has the
-// bandwidth v_max: SUNDIALS' 0.05 divided by h v_max where that exceeds 1.
-// The preconditioner leaves the loop forces out, and the preconditioned
+// bandwidth v_max and the paper's gains: SUNDIALS' 0.05 divided by h v_max
+// where that exceeds 1. (The full gains' loop forces are in the
+// preconditioner, which leaves SUNDIALS' 0.05 as it is.) Without them the preconditioned
 // Newton matrix departs from a normal one in proportion to gamma (the
 // pantograph at its start: |P^-1 N - I| = 8.7e3 at gamma = 1e-5 s, 8.7e6 at
 // 1e-2 s), so a small preconditioned residual bounds the Newton correction's
