@@ -23,11 +23,17 @@ NewtonPreconditioner::NewtonPreconditioner(Dynamics& dynamics)
       spring_position_(dynamics.model().nv, -1),
       phi_(dynamics.model().size()),
       v_(dynamics.model().size()) {
-  // The elements act on one-coordinate joints, whose rate is q' of their
-  // position: there K couples a velocity coordinate to a position.
+  // K couples a velocity coordinate to a position where the rate is q' of
+  // that position: revolute, prismatic and universal joints, a compliant
+  // hinge's six (its pin's stiffness acts on five of them), and elastic
+  // coordinates.
   const Model& model = dynamics.model();
-  for (int j = 0; j < model.size(); ++j)
-    if (model.joints[j].has_free_coordinate()) spring_position_[model.velocity_of(j).value] = model.position_of(j).value;
+  for (int j = 0; j < model.size(); ++j) {
+    const Joint& joint = model.joints[j];
+    if (!joint.has_free_coordinate() && joint.type != JointType::universal) continue;
+    for (int k = 0; k < joint.dof(); ++k)
+      spring_position_[model.velocity_of(j).value + k] = model.position_of(j).value + k;
+  }
   for (int c = 0; c < model.elastic_coordinates; ++c) spring_position_[model.nv - 1 - c] = model.nq - 1 - c;
   const Regulator* regulator = dynamics.regulator();
   if (!regulator || regulator->settings().gains != GainTuning::full || regulator->size() == 0) return;
@@ -186,8 +192,8 @@ void NewtonPreconditioner::solve(const double* r, double* z) {
   double* zq = z + L.q();
   double* zp = z + L.p();
   // (Mtilde + gamma D + gamma^2 K) x = rp - gamma K rq, then back-substitute.
-  // K and D sit on one-coordinate joints only; a ball or free joint's
-  // positions follow its rates through q' = N(q) w.
+  // K and D sit on coordinates whose rate is q' (spring_position_); a ball
+  // or free joint's positions follow its rates through q' = N(q) w.
   const Model& model = dynamics_.model();
   for (int c = 0; c < L.nv; ++c) {
     const int at = spring_position_[c];

@@ -58,8 +58,8 @@ class NewtonPreconditioner {
   // Scratch, sized once.
   std::vector<double> r_, x_, rates_, w_, g_dot_;
   std::vector<double> q_;  // the positions of the last setup
-  // Per velocity coordinate of a one-coordinate joint, its position (else
-  // -1): where the joint's K and D act.
+  // Per velocity coordinate whose rate is its position's q', that position
+  // (else -1): where the joint's K and D act.
   std::vector<int> spring_position_;
   std::vector<Vec6> phi_, v_;
 
