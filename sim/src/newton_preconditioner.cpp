@@ -77,8 +77,6 @@ void NewtonPreconditioner::setup(const double* y, const double* ydot, double gam
 void NewtonPreconditioner::set_up_loops(const double* q) {
   const Regulator& regulator = *dynamics_.regulator();
   const double gamma = gamma_, v = regulator.v_max(), p0 = regulator.settings().p0, p1 = regulator.settings().p1;
-  p0_ = p0;
-  p1_ = p1;
   const double kappa = gamma * regulator.k_pi() + regulator.k_v();
   a1_ = gamma * v * (gamma * v + p0 + 2 * p1);
   a2_ = gamma * gamma * v * v * kappa;
@@ -122,10 +120,10 @@ void NewtonPreconditioner::pole_sums(const std::array<const double*, 4>& in, con
   // A double pole: N(w) / (A (w + d)^2) = n1 / (A (w + d)) + (n0 - n1 rho) / (A (w + d)^2).
   const double rho = rho_[0];
   combine([&](const Numerator& n) { return (n.n0 - n.n1 * rho) / A; }, pair_in_);
-  closure_[0]->solve(pair_in_.data(), pair_tmp_.data(), 2, false);
+  closure_[0]->solve(pair_in_.data(), pair_tmp_.data(), 2);
   combine([&](const Numerator& n) { return n.n1 / A; }, pair_in_);
   for (int c = 0; c < 2 * m; ++c) pair_in_[c] += Delta_[c % m] * pair_tmp_[c];
-  closure_[0]->solve(pair_in_.data(), pair_out_.data(), 2, false);
+  closure_[0]->solve(pair_in_.data(), pair_out_.data(), 2);
 }
 
 void NewtonPreconditioner::close_loops(const double* r) {
@@ -161,7 +159,7 @@ void NewtonPreconditioner::close_loops(const double* r) {
                                        feedforward ? Numerator{0, -1, -1} : Numerator{0, 0, 0}};
   const std::array<Numerator, 4> gap{
       feedforward ? Numerator{0, gamma * kappa, 0} : Numerator{gamma * kappa, gamma * kappa, 0},
-      Numerator{gamma * (k_pi * (1 + (p0_ + 2 * p1_) * gamma * v) - gamma * k_v * v * v), gamma * k_pi, 0},
+      Numerator{gamma * (k_pi * (1 + (regulator.settings().p0 + 2 * regulator.settings().p1) * gamma * v) - gamma * k_v * v * v), gamma * k_pi, 0},
       Numerator{1 + a1_, b, 1}, feedforward ? Numerator{gamma * kappa, 0, 0} : Numerator{0, 0, 0}};
   // du = n2 / A in + Delta (the rest over den).
   std::array<Numerator, 4> rest;
@@ -203,7 +201,7 @@ void NewtonPreconditioner::solve(const double* r, double* z) {
   Eigen::Map<Eigen::VectorXd> x_map(x_.data(), L.nv);
   sweep_.bias_pass(r_map, phi_);
   sweep_.velocity_pass(r_map, phi_, Vec6::Zero(), x_map, v_);
-  if (closure_[0] && closed_) close_loops(r);
+  if (closed_) close_loops(r);
   // zq = rq + gamma q'(x), zp = rp - gamma (K zq + D x).
   position_rates(model, q_.data(), x_.data(), zq);
   for (int c = 0; c < L.nq; ++c) zq[c] = rq[c] + gamma * zq[c];
@@ -211,8 +209,11 @@ void NewtonPreconditioner::solve(const double* r, double* z) {
     const int at = spring_position_[c];
     zp[c] = rp[c] - (at >= 0 ? gamma * (stiffness_[c] * zq[at] + damping_[c] * x_[c]) : 0.0);
   }
-  if (closure_[0] && closed_)
+  if (closed_) {
     for (int c = 0; c < L.nv; ++c) zp[c] += Q_[c];
+    std::copy(du_.begin(), du_.end(), z + L.u());
+    return;
+  }
   Regulator* regulator = dynamics_.regulator();
   if (!regulator) return;
   const double k_pi = regulator->k_pi(), k_v = regulator->k_v();  // (16)
@@ -223,7 +224,7 @@ void NewtonPreconditioner::solve(const double* r, double* z) {
   }
   sweep_.velocities_from_rates(rates_.data(), v_);
   regulator->residual_rate(v_, g_dot_.data());
-  for (int c = 0; c < L.m; ++c) z[L.u() + c] = closure_[0] && closed_ ? du_[c] : r[L.u() + c] + gamma * g_dot_[c];
+  for (int c = 0; c < L.m; ++c) z[L.u() + c] = r[L.u() + c] + gamma * g_dot_[c];
 }
 
 }  // namespace unfurl::sim

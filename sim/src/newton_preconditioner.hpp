@@ -72,9 +72,9 @@ class NewtonPreconditioner {
   // amplify round-off.
   static constexpr double kSeparatePoles = 1e-4;
   std::array<std::unique_ptr<ArmatureClosureSolver>, 2> closure_;
-  bool closed_ = false;
+  bool closed_ = false;  // the loops are in: closure_ made and factored at the last setup
   int poles_ = 0;
-  double a1_ = 0, a2_ = 0, p0_ = 0, p1_ = 0, rho_[2] = {0, 0};
+  double a1_ = 0, a2_ = 0, rho_[2] = {0, 0};
   std::vector<double> Delta_;  // the regulator's, per component
   std::vector<double> delta_, t0_, g_r_, t_p_, mu_, du_, Q_, dx_;
   std::vector<double> pair_in_, pair_tmp_, pair_out_;  // m x 2
