@@ -131,6 +131,7 @@ void NewtonPreconditioner::close_loops(const double* r) {
   const Regulator& regulator = *dynamics_.regulator();
   const bool feedforward = regulator.uses_feedforward();
   const double gamma = gamma_, v = regulator.v_max(), A = 1 + a1_ + a2_;
+  const double p0 = regulator.settings().p0, p1 = regulator.settings().p1;
   // The inputs: t0 = J B^-1 r (v_), g_r = J rq, ru and, with the
   // feedforward, t_p = J Mtilde^-1 rp.
   regulator.residual_rate(v_, t0_.data());
@@ -159,7 +160,7 @@ void NewtonPreconditioner::close_loops(const double* r) {
                                        feedforward ? Numerator{0, -1, -1} : Numerator{0, 0, 0}};
   const std::array<Numerator, 4> gap{
       feedforward ? Numerator{0, gamma * kappa, 0} : Numerator{gamma * kappa, gamma * kappa, 0},
-      Numerator{gamma * (k_pi * (1 + (regulator.settings().p0 + 2 * regulator.settings().p1) * gamma * v) - gamma * k_v * v * v), gamma * k_pi, 0},
+      Numerator{gamma * (k_pi * (1 + (p0 + 2 * p1) * gamma * v) - gamma * k_v * v * v), gamma * k_pi, 0},
       Numerator{1 + a1_, b, 1}, feedforward ? Numerator{gamma * kappa, 0, 0} : Numerator{0, 0, 0}};
   // du = n2 / A in + Delta (the rest over den).
   std::array<Numerator, 4> rest;
