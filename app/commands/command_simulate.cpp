@@ -196,9 +196,9 @@ void print_summary(const sim::Scene& scene, const sim::RunResult& result, const 
                 result.jacobian_product_evals);
   for (const sim::ToleranceRaise& r : result.tolerance_raises)
     std::printf(
-        "tolerance    rtol %.2g, atol %.2g from t = %.6f s, where the run chased the right-hand side's\n"
-        "             round-off, %.2g there (its Newton iteration kept failing, or its steps shrank\n"
-        "             to fit the noise inside the error test; summary.json tolerance_raises)\n",
+        "tolerance    rtol %.2g, atol %.2g from t = %.6f s, where the Newton iteration kept failing:\n"
+        "             the right-hand side's round-off there is %.2g; below it no step fits\n"
+        "             its noise inside the error test (summary.json tolerance_raises)\n",
         r.rtol, r.atol, r.t, r.floor);
   if (run.integrator != sim::IntegratorKind::rk4 && result.tolerance_raises.empty()) {
     const double tolerance = std::max(run.rtol, run.atol);

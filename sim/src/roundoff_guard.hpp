@@ -4,8 +4,7 @@
 // measured at that state with the run's latches; if kMargin times it lies
 // above the larger of rtol and atol, both are raised to one value, the
 // least that stops the failures (at most twice the larger, never above
-// kMargin times the floor), and the raise is recorded; where the steps
-// shrank to fit the noise instead, to the floor at once. Below the floor no
+// kMargin times the floor), and the raise is recorded. Below the floor no
 // step fits the noise inside the error test: the pantograph latched at its
 // branch point took 33,332 steps (10,904 Newton failures) at atol 1e-12
 // against a floor of up to 1.7e-10. Runs whose Newton iterations converge
@@ -39,18 +38,6 @@ class RoundoffGuard {
   // tolerances and the pantograph's before its latch-up.
   static constexpr long kFailures = 10;
   static constexpr long kSteps = 200;
-  // A look, too, after kSteps steps in a row shorter than kShortStep over
-  // the fastest rate the mechanism or its regulator has (v_max). Far below
-  // its floor a run's Newton iteration need not fail: its steps shrink
-  // instead until h times f's noise passes the error test. The generated
-  // 1000-stage array at rtol 1e-10 (floor 4.2e-8) took steps of 2.4e-9 s (h
-  // v_max 1e-3) with four Newton failures in 1,951 steps, and reached
-  // 4.5e-6 s in 150 s; such a run is raised to its floor at once. (A raise
-  // before the first step, wherever the floor at the start lies ten times
-  // above the tolerance, was tried: it cost a four-bar at rtol 1e-11 with
-  // v_max 1e5, 22,000 times below its floor estimate and converging, its
-  // accuracy, 1.1e-3 rad instead of 1e-5.)
-  static constexpr double kShortStep = 0.01;
 
   RoundoffGuard(const Scene& scene, double rtol, double atol);
 
@@ -75,8 +62,6 @@ class RoundoffGuard {
   bool above_tolerance(double floor) const { return floor * kMargin > std::max(rtol_, atol_); }
 
   Dynamics probe_;  // its own counts and caches, so the run's are untouched
-  double fastest_rate_;   // rad/s
-  long short_steps_ = 0;  // in a row
   double rtol_;
   double atol_;
   long failures_seen_ = 0, steps_seen_ = 0;  // where the failures were last counted from
