@@ -35,6 +35,18 @@ BENCHMARK(BM_PantographRun)
     ->Iterations(1)
     ->ArgName("integrator");
 
+// The pantograph at its own settings (the workbench's re-run) with its
+// loads, peaks and samples recorded on the integrator's thread or beside it.
+void BM_PantographRunThreads(benchmark::State& state) {
+  const sim::Scene scene = sim::load_builtin_scene("pantograph");
+  const auto threads = state.range(0) == 1 ? sim::RunThreads::one : sim::RunThreads::two;
+  sim::RunResult result;
+  for (auto _ : state) result = sim::simulate(scene, scene.run, {}, threads);
+  state.SetLabel(result.status == sim::RunStatus::finished ? "" : "FAILED");
+  state.counters["steps"] = static_cast<double>(result.stats.steps);
+}
+BENCHMARK(BM_PantographRunThreads)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->ArgName("threads");
+
 // The first second of large pantographs by CVODE BDF with GMRES and the
 // sweep preconditioner (sparse gains): whole-run cost against size.
 void BM_LargePantographFirstSecond(benchmark::State& state) {

@@ -10,7 +10,8 @@
 // CVODE BDF at rtol 1e-12, or 1e-11 where its round-off floor lies above
 // 1e-12). unfurl runs CVODE BDF over rtol 1e-5 .. ten times the reference's
 // (atol = rtol / 100) and is timed as `simulate` runs it, samples and loads
-// included; MuJoCo runs RK4 over halving steps from 4 ms (until within the
+// included (on two threads: those beside the integrator, run_recording.hpp);
+// MuJoCo runs RK4 over halving steps from 4 ms (until within the
 // target, or until halving the step stops halving the error) and is timed
 // over its stepping loop alone (mujoco_runner.hpp). Wall times are the best of
 // three runs (one for runs over 2 s).

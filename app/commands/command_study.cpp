@@ -82,7 +82,7 @@ int command_study(const std::vector<std::string>& argv) {
 
   const std::string path = args.positionals()[0];
   const studies::Study study = studies::read_study_file(path);
-  SweepOptions options{*args.get("--out"), static_cast<int>(jobs), args.has("--keep-runs"), args.has("--quiet")};
+  SweepOptions options{*args.get("--out"), static_cast<int>(jobs), args.has("--keep-runs"), args.has("--quiet"), mpi};
   claim_directory(options.dir, io::read_text_file(path));
 
   const auto start = std::chrono::steady_clock::now();

@@ -35,7 +35,10 @@ std::optional<std::string> StudyRun::run_case(std::size_t i) const {
   const studies::StudyCase& c = cases_[i];
   studies::CaseResult result;
   try {
-    const studies::CaseRun run = studies::simulate_case(study_, c, &cancel_);
+    // Cases that run side by side already take every core.
+    const sim::RunThreads threads =
+        options_.jobs > 1 || options_.over_mpi ? sim::RunThreads::one : sim::default_run_threads();
+    const studies::CaseRun run = studies::simulate_case(study_, c, &cancel_, threads);
     if (run.run.status == sim::RunStatus::cancelled) return std::nullopt;
     const sim::Clearance clearance = studies::check_clearance(run.scene, solids_, run.run.trajectory);
     result = studies::case_result(study_, nominal_, c, run, &clearance);

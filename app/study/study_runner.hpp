@@ -22,6 +22,7 @@ struct SweepOptions {
   int jobs = 1;  // threads per process
   bool keep_runs = false;
   bool quiet = false;
+  bool over_mpi = false;  // one of several processes, each with its cases
 };
 
 class StudyRun {

@@ -4,11 +4,12 @@
 #include <chrono>
 #include <cmath>
 #include <sstream>
+#include <thread>
 
 #include "dissipation_meter.hpp"
 #include "latch_events.hpp"
 #include "roundoff_guard.hpp"
-#include "run_monitor.hpp"
+#include "run_recording.hpp"
 
 namespace unfurl::sim {
 
@@ -21,44 +22,9 @@ const char* run_status_name(RunStatus status) {
   return "?";
 }
 
-namespace {
-
-class Recorder {
- public:
-  Recorder(Dynamics& dynamics, const RunObserver& observer, Trajectory& trajectory)
-      : dynamics_(dynamics), observer_(observer), trajectory_(trajectory) {}
-
-  // False where the state cannot be evaluated (nothing is recorded).
-  bool record(double t, const std::vector<double>& y, double dissipated, double driven) {
-    if (!dynamics_.observe(t, y.data(), observation_)) return false;
-    observation_.energy.dissipated = dissipated;
-    observation_.energy.driven = driven;
-    Sample s;
-    s.t = t;
-    s.y = y;
-    s.q_dot = observation_.q_dot;
-    s.closure = observation_.closure;
-    s.energy = observation_.energy;
-    s.momentum = observation_.momentum;
-    s.loads = observation_.loads;
-    trajectory_.samples.push_back(std::move(s));
-    if (observer_.on_sample) observer_.on_sample(trajectory_.samples.back());
-    return true;
-  }
-
-  void event(const LatchEvent& e) {
-    trajectory_.events.push_back(e);
-    if (observer_.on_event) observer_.on_event(e);
-  }
-
- private:
-  Dynamics& dynamics_;
-  const RunObserver& observer_;
-  Trajectory& trajectory_;
-  Observation observation_;
-};
-
-}  // namespace
+RunThreads default_run_threads() {
+  return std::thread::hardware_concurrency() >= 2 ? RunThreads::two : RunThreads::one;
+}
 
 std::string describe(const Failure& f) {
   std::ostringstream s;
@@ -66,7 +32,7 @@ std::string describe(const Failure& f) {
   return s.str();
 }
 
-RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObserver& observer) {
+RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObserver& observer, RunThreads threads) {
   const auto wall_start = std::chrono::steady_clock::now();
   RunResult result;
   result.settings = settings;
@@ -92,22 +58,20 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
   result.roundoff_floor = guard.floor_at_start(t0, y);
   const auto probe_time = std::chrono::steady_clock::now() - probe_start;
   std::vector<double> ys(y.size());
-  Recorder recorder(dynamics, observer, trajectory);
+  RunRecording recording(dynamics, settings, observer, trajectory, threads);
   auto fail = [&](double t, double step, std::string check, std::string reason) {
     result.status = RunStatus::failed;
     result.failure = {t, step, std::move(check), std::move(reason)};
   };
-  const char* kNotFinite = "the equations of motion have no finite value here (or the loop-closure system is singular)";
-  if (!recorder.record(t0, y, 0.0, 0.0)) fail(t0, 0, "evaluation", kNotFinite);
+  recording.sample(t0, y, 0.0, 0.0, 0.0);
   DissipationMeter dissipation(dynamics, t0);
   // A joint that starts exactly at its latch angle is caught from the start.
   for (int l = 0; l < dynamics.latch_count(); ++l)
-    if (dynamics.latch_state().engaged(l)) recorder.event({t0, l, dynamics.latches()[l]->joint});
+    if (dynamics.latch_state().engaged(l)) recording.event({t0, l, dynamics.latches()[l]->joint});
 
   std::unique_ptr<Integrator> integrator;
   try {
-    if (result.status == RunStatus::finished)
-      integrator = make_integrator(settings.integrator, dynamics, settings, t0, y);
+    if (!recording.failed()) integrator = make_integrator(settings.integrator, dynamics, settings, t0, y);
   } catch (const std::exception& e) {
     fail(t0, 0, "integrator", e.what());
   }
@@ -121,29 +85,14 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
   };
   if (integrator) apply_after_latch();
   LatchEvents events(dynamics, settings.event_window);
-  RunMonitor monitor(dynamics);
   long restarts = 0;
-  // The loads and the gap are checked at every step's end, the start included.
-  auto check_step_end = [&](double t) {
-    const double step = integrator ? integrator->current_step() : 0.0;
-    const std::optional<double> gap = monitor.observe(t, y.data());
-    if (!gap) {
-      fail(t, step, "evaluation", kNotFinite);
-      return false;
-    }
-    if (*gap <= settings.max_closure) return true;
-    std::ostringstream why;
-    why << "a loop opened by " << *gap << " (rad, or length over the mechanism's " << dynamics.scales().length
-        << " m; limit " << settings.max_closure << "): the regulator lost the loop";
-    fail(t, step, "closure", why.str());
-    return false;
-  };
-  if (result.status == RunStatus::finished) check_step_end(t0);
+  if (result.status == RunStatus::finished) recording.step_end(t0, y, 0.0);
+  recording.start_thread();
 
   long sample_index = 1;
   auto sample_time = [&](long k) { return std::min(t0 + k * settings.sample, settings.t_end); };
   double t = t0;
-  while (integrator && result.status == RunStatus::finished && t < settings.t_end) {
+  while (integrator && result.status == RunStatus::finished && !recording.failed() && t < settings.t_end) {
     if (observer.cancel && observer.cancel->load()) {
       result.status = RunStatus::cancelled;
       break;
@@ -153,39 +102,39 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
       fail(step.t, integrator->current_step(), "integrator", step.reason);
       break;
     }
-    monitor.step_taken(integrator->last_step());
+    recording.step_taken(integrator->last_step());
     const LatchGroup group = events.find(*integrator, step);
     const double t_done = group.empty() ? step.t : group.t_restart;
     // Samples up to where this step is done, by the method's interpolant.
     while (sample_index >= 0 && sample_time(sample_index) <= t_done) {
       integrator->interpolate(sample_time(sample_index), ys.data());
       dissipation.advance(*integrator, sample_time(sample_index));
-      if (!recorder.record(sample_time(sample_index), ys, dissipation.work(), dissipation.drive_work())) {
-        fail(sample_time(sample_index), integrator->current_step(), "evaluation", kNotFinite);
-        break;
-      }
+      recording.sample(sample_time(sample_index), ys, dissipation.work(), dissipation.drive_work(),
+                       integrator->current_step());
       sample_index = sample_time(sample_index) >= settings.t_end ? -1 : sample_index + 1;
     }
-    if (result.status != RunStatus::finished) break;
+    if (recording.failed()) break;
     integrator->interpolate(t_done, y.data());
     dissipation.advance(*integrator, t_done);
     if (!group.empty()) {
       events.engage(group, *integrator, y.data());
       std::vector<LatchRoot> roots = group.roots;
       std::stable_sort(roots.begin(), roots.end(), [](const LatchRoot& a, const LatchRoot& b) { return a.t < b.t; });
-      for (const LatchRoot& r : roots) recorder.event({r.t, r.latch, dynamics.latches()[r.latch]->joint});
+      for (const LatchRoot& r : group.roots) recording.engage(r.latch);
+      for (const LatchRoot& r : roots) recording.event({r.t, r.latch, dynamics.latches()[r.latch]->joint});
       integrator->restart(t_done, y.data());
       apply_after_latch();
-      monitor.restarted();
-      monitor.latched();
+      recording.restarted();
+      recording.latched();
       ++restarts;
     }
     t = t_done;
     if (settings.roundoff_guard && t < settings.t_end && guard.step_taken(t, y, dynamics, *integrator)) {
       integrator->restart(t, y.data());
-      monitor.restarted();
+      recording.restarted();
     }
-    if (!check_step_end(t)) break;
+    recording.step_end(t, y, integrator->current_step());
+    if (recording.failed()) break;
     if (t < settings.t_end && settings.max_wall_time > 0 &&
         std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count() > settings.max_wall_time) {
       std::ostringstream why;
@@ -201,13 +150,19 @@ RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObs
     if (observer.on_progress)
       observer.on_progress({t, integrator->current_step(), integrator->stats().steps, dynamics.rhs_calls()});
   }
+  // A check of the recording's failed at a step the integrator had passed:
+  // the run ends there.
+  if (const std::optional<Failure> failure = recording.finish()) {
+    result.status = RunStatus::failed;
+    result.failure = *failure;
+  }
 
   if (integrator) result.stats = integrator->stats();
   result.stats.restarts = restarts;
-  result.stats.min_step = monitor.min_step();
-  result.stats.min_step_after_restart = monitor.min_step_after_restart();
+  result.stats.min_step = recording.monitor().min_step();
+  result.stats.min_step_after_restart = recording.monitor().min_step_after_restart();
   result.stats.grazes = events.grazes();
-  result.peaks = monitor.peaks(result.status != RunStatus::failed);
+  result.peaks = recording.monitor().peaks(result.status != RunStatus::failed);
   result.rhs_calls = dynamics.rhs_calls();
   result.jacobian_product_evals = dynamics.jacobian_product_evals();
   result.wall_time_s =

@@ -111,11 +111,12 @@ CaseColumns case_columns(const Study& study, const sim::Scene& nominal) {
   return c;
 }
 
-CaseRun simulate_case(const Study& study, const StudyCase& c, const std::atomic<bool>* cancel) {
+CaseRun simulate_case(const Study& study, const StudyCase& c, const std::atomic<bool>* cancel,
+                      sim::RunThreads threads) {
   CaseRun out{case_scene(study, c), {}};
   sim::RunObserver observer;
   observer.cancel = cancel;
-  out.run = sim::simulate(out.scene, out.scene.run, observer);
+  out.run = sim::simulate(out.scene, out.scene.run, observer, threads);
   return out;
 }
 

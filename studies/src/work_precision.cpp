@@ -95,7 +95,9 @@ PrecisionPoint measure_point(const sim::Scene& scene, sim::RunSettings run, cons
   sim::RunResult result;
   while (static_cast<int>(walls.size()) < std::max(1, settings.repeats) &&
          (walls.empty() || spent < settings.repeat_budget_s)) {
-    result = sim::simulate(scene, run);
+    // On one thread: the integrators' own costs compared (the recording's
+    // thread beside each would lower all of them by a similar share).
+    result = sim::simulate(scene, run, {}, sim::RunThreads::one);
     walls.push_back(result.wall_time_s);
     spent += result.wall_time_s;
     if (result.status != sim::RunStatus::finished) break;

@@ -72,7 +72,10 @@ struct StepProgress {
 };
 
 // Hooks for a caller that watches or stops a run (a GUI's thread, a
-// progress bar). Called on the running thread.
+// progress bar). on_start, on_progress and cancel are called or read on the
+// running thread; on_sample and on_event on the thread that records the run
+// (the running thread's or, with RunThreads::two, one beside it), in the
+// run's order.
 struct RunObserver {
   // Before the first sample: the trajectory as yet without samples (its
   // layout and the names of its load, sensor and loop columns).
@@ -83,7 +86,15 @@ struct RunObserver {
   const std::atomic<bool>* cancel = nullptr;
 };
 
-RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObserver& observer = {});
+// How many threads a run takes: with two, the loads, peaks and samples are
+// computed beside the integrator (run_recording.hpp), with the same results.
+// Callers that run several cases at once on every core take one.
+enum class RunThreads { one, two };
+// Two where the machine has two cores or more.
+RunThreads default_run_threads();
+
+RunResult simulate(const Scene& scene, const RunSettings& settings, const RunObserver& observer = {},
+                   RunThreads threads = default_run_threads());
 
 const char* run_status_name(RunStatus status);
 

@@ -45,7 +45,8 @@ struct CaseRun {
 };
 
 // Runs one case; `cancel` stops it early (the result is then not recorded).
-CaseRun simulate_case(const Study& study, const StudyCase& c, const std::atomic<bool>* cancel = nullptr);
+CaseRun simulate_case(const Study& study, const StudyCase& c, const std::atomic<bool>* cancel = nullptr,
+                      sim::RunThreads threads = sim::default_run_threads());
 // The case's row, from its run. `nominal` gives the latches and joints the
 // columns name (a failed latch is missing from the case's own scene);
 // `clearance`, the run's clearance where it was checked.
