@@ -35,17 +35,30 @@ BENCHMARK(BM_PantographRun)
     ->Iterations(1)
     ->ArgName("integrator");
 
-// The pantograph at its own settings (the workbench's re-run) with its
-// loads, peaks and samples recorded on the integrator's thread or beside it.
-void BM_PantographRunThreads(benchmark::State& state) {
-  const sim::Scene scene = sim::load_builtin_scene("pantograph");
+// A run with its loads, peaks and samples recorded on the integrator's
+// thread or beside it: the pantograph at its own settings (the workbench's
+// re-run), and the z-fold, a tree whose steps are cheap beside the
+// hand-over, at the side-by-side's setting (rtol 1e-8).
+void run_threads(benchmark::State& state, const sim::Scene& scene, const sim::RunSettings& settings) {
   const auto threads = state.range(0) == 1 ? sim::RunThreads::one : sim::RunThreads::two;
   sim::RunResult result;
-  for (auto _ : state) result = sim::simulate(scene, scene.run, {}, threads);
+  for (auto _ : state) result = sim::simulate(scene, settings, {}, threads);
   state.SetLabel(result.status == sim::RunStatus::finished ? "" : "FAILED");
   state.counters["steps"] = static_cast<double>(result.stats.steps);
 }
+void BM_PantographRunThreads(benchmark::State& state) {
+  const sim::Scene scene = sim::load_builtin_scene("pantograph");
+  run_threads(state, scene, scene.run);
+}
 BENCHMARK(BM_PantographRunThreads)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->ArgName("threads");
+void BM_ZfoldRunThreads(benchmark::State& state) {
+  const sim::Scene scene = sim::load_builtin_scene("zfold");
+  sim::RunSettings settings = scene.run;
+  settings.rtol = 1e-8;
+  settings.atol = 1e-10;  // rtol / 100, as the side-by-side sets it
+  run_threads(state, scene, settings);
+}
+BENCHMARK(BM_ZfoldRunThreads)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->ArgName("threads");
 
 // The first second of large pantographs by CVODE BDF with GMRES and the
 // sweep preconditioner (sparse gains): whole-run cost against size.
