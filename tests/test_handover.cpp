@@ -4,8 +4,12 @@
 // ThreadSanitizer (test_handover_tsan).
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <chrono>
+#include <condition_variable>
+#include <mutex>
 #include <thread>
+#include <vector>
 
 #include "simulation_worker.hpp"
 #include "support.hpp"
@@ -68,6 +72,33 @@ TEST(Handover, AnIntegratedRunHasAllItsSamplesBeforeItsSummary) {
   EXPECT_TRUE(p.integrated);
   EXPECT_FALSE(p.running);
   EXPECT_NE(p.summary, nullptr);
+}
+
+TEST(Handover, TheWorkerCallsBackWhenTheCurvesAreFinalAndWhenTheRunEnds) {
+  // The workbench waits for input between frames while a run computes: these
+  // calls wake it.
+  std::mutex m;
+  std::condition_variable called;
+  std::vector<RunProgress> at_call;
+  std::vector<std::size_t> samples_at_call;
+  std::atomic<SimulationWorker*> self{nullptr};
+  SimulationWorker worker([&] {
+    long generation = -1;
+    sim::Trajectory copy, previous;
+    const RunProgress p = self.load()->sync(generation, copy, previous);
+    std::lock_guard<std::mutex> lock(m);
+    at_call.push_back(p);
+    samples_at_call.push_back(copy.samples.size());
+    called.notify_one();
+  });
+  self = &worker;
+  worker.run(test::scene_file("pantograph", {{"run.t_end", "2"}}));
+  std::unique_lock<std::mutex> lock(m);
+  ASSERT_TRUE(called.wait_for(lock, std::chrono::minutes(2), [&] { return at_call.size() >= 2; }));
+  EXPECT_TRUE(at_call[0].integrated);
+  EXPECT_EQ(samples_at_call[0], 201u);
+  EXPECT_FALSE(at_call[1].running);
+  EXPECT_NE(at_call[1].summary, nullptr);
 }
 
 TEST(Handover, ANewRequestCancelsTheRunInProgress) {

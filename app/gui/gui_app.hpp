@@ -45,6 +45,9 @@ class GuiApp : private ScriptTarget {
   // Whether anything changes without input: playback, a run, an export, a
   // script, a text field being edited.
   bool busy() const;
+  // Busy with nothing but a run computing: no playback, export, editing or
+  // settling frames, a script at most waiting for the run.
+  bool only_the_run_moves() const;
   void wait_for_events();
   void sync_run();
   // Fonts and sizes for the UI scale times the monitor's content scale.

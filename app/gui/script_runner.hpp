@@ -36,6 +36,7 @@ class ScriptRunner {
   // Inside an `idle` command: the workbench may wait for input, for at most
   // the seconds returned by idle_left.
   bool idling() const { return idle_until_ > 0; }
+  bool waiting_for_run() const { return !finished() && script_[next_].name == "wait_run"; }
   double idle_left(double now) const { return idle_until_ - now; }
 
  private:

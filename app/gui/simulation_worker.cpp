@@ -6,7 +6,8 @@
 
 namespace unfurl::app {
 
-SimulationWorker::SimulationWorker() : thread_([this] { loop(); }) {}
+SimulationWorker::SimulationWorker(std::function<void()> on_change)
+    : on_change_(std::move(on_change)), thread_([this] { loop(); }) {}
 
 SimulationWorker::~SimulationWorker() {
   {
@@ -109,8 +110,11 @@ void SimulationWorker::loop() {
       result.failure = {0, 0, "setup", e.what()};
     }
     if (result.status != sim::RunStatus::cancelled) {
-      std::lock_guard<std::mutex> lock(mutex_);
-      progress_.integrated = true;
+      {
+        std::lock_guard<std::mutex> lock(mutex_);
+        progress_.integrated = true;
+      }
+      if (on_change_) on_change_();
     }
     // An edit during the summary (a large array's torque margins and
     // clearance take seconds) cancels it too: its run is superseded.
@@ -125,16 +129,19 @@ void SimulationWorker::loop() {
       else
         summary = std::make_shared<const sim::RunSummary>(std::move(s));
     }
-    std::lock_guard<std::mutex> lock(mutex_);
-    progress_.summary = std::move(summary);
-    progress_.closure = result.closure;
-    buffer_.layout = result.trajectory.layout;
-    progress_.running = false;
-    progress_.status = result.status;
-    progress_.failure = result.status == sim::RunStatus::failed ? sim::describe(result.failure) : "";
-    progress_.steps = result.stats.steps;
-    progress_.rhs_calls = result.rhs_calls;
-    progress_.wall_time_s = result.wall_time_s;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      progress_.summary = std::move(summary);
+      progress_.closure = result.closure;
+      buffer_.layout = result.trajectory.layout;
+      progress_.running = false;
+      progress_.status = result.status;
+      progress_.failure = result.status == sim::RunStatus::failed ? sim::describe(result.failure) : "";
+      progress_.steps = result.stats.steps;
+      progress_.rhs_calls = result.rhs_calls;
+      progress_.wall_time_s = result.wall_time_s;
+    }
+    if (on_change_) on_change_();
   }
 }
 

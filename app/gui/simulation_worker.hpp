@@ -7,6 +7,7 @@
 
 #include <atomic>
 #include <condition_variable>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -40,7 +41,9 @@ struct RunProgress {
 
 class SimulationWorker {
  public:
-  SimulationWorker();
+  // on_change: called on the worker's thread when a run's samples are all
+  // in and when it ends (the UI, which may be waiting, is woken by it).
+  explicit SimulationWorker(std::function<void()> on_change = {});
   ~SimulationWorker();  // cancels the run and joins the thread
   SimulationWorker(const SimulationWorker&) = delete;
   SimulationWorker& operator=(const SimulationWorker&) = delete;
@@ -62,6 +65,7 @@ class SimulationWorker {
   void loop();
 
   std::mutex mutex_;
+  std::function<void()> on_change_;
   std::condition_variable wake_;
   std::optional<sim::Scene> pending_;  // the next run, taken by the worker
   studies::BodySolids pending_solids_;
