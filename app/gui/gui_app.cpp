@@ -324,7 +324,7 @@ int GuiApp::run() {
     // At most about 60 frames per second: the solver's threads need the
     // rest. While only a run moves, its growing curves are drawn 20 times a
     // second: a frame costs a core in software GL, and a run takes two
-    // threads (the pantograph's re-run took 0.16-0.22 s under Xvfb at the
+    // threads (the pantograph's re-run took 0.16-0.27 s under Xvfb at the
     // UI's 40 frames/s, against 0.145 s alone). Input, or the run's last
     // sample, ends the wait at once.
     const double before_sleep = now_seconds();
