@@ -1,13 +1,15 @@
 // The right-hand side allocates nothing: malloc is counted around rhs()
 // calls of the pantograph (loops, full-matrix regulator, latches engaged),
-// the z-fold and a gravity scene. glibc lets a program interpose malloc.
+// the z-fold and a gravity scene, and around the Krylov solvers' Jacobian
+// products and preconditioner solves. glibc lets a program interpose malloc.
 #include <gtest/gtest.h>
 
 #include <atomic>
 #include <cstdlib>
 
-#include "unfurl/sim/dynamics.hpp"
+#include "newton_preconditioner.hpp"
 #include "support.hpp"
+#include "unfurl/sim/dynamics.hpp"
 
 extern "C" {
 void* __libc_malloc(size_t);
@@ -67,6 +69,26 @@ long allocations_in_jacobian_times(const sim::Scene& scene) {
   for (int k = 0; k < 10; ++k) {
     dynamics.jacobian_times(0, y.data(), v.data(), Jv.data());
     v[k % v.size()] += 1;
+  }
+  return allocations.load() - before;
+}
+
+// GMRES applies the preconditioner once per iteration, several times per
+// Newton matrix; only its setup (the loops' sparse factorizations) may
+// allocate. gamma as at a mid-length step, where the regulator's two
+// poles are apart (both factorizations in use).
+long allocations_in_preconditioner_solves(const sim::Scene& scene) {
+  sim::Dynamics dynamics(scene);
+  std::vector<double> y = dynamics.initial_state(), f(y.size()), r(y.size(), 1.0), z(y.size());
+  for (double& x : y) x += 1e-3;
+  dynamics.rhs(0, y.data(), f.data());
+  sim::NewtonPreconditioner& preconditioner = dynamics.preconditioner();
+  preconditioner.setup(y.data(), f.data(), 1e-3);
+  preconditioner.solve(r.data(), z.data());  // warm-up
+  const long before = allocations.load();
+  for (int k = 0; k < 10; ++k) {
+    preconditioner.solve(r.data(), z.data());
+    r[k % r.size()] += 1;
   }
   return allocations.load() - before;
 }
@@ -148,6 +170,15 @@ TEST(RightHandSide, AFlexibleBoomOnACompliantHingeAllocatesNothing) {
   ASSERT_TRUE(boom.model.joints[0].compliant);
   EXPECT_EQ(allocations_in_rhs(boom, false), 0);
   EXPECT_EQ(allocations_in_jacobian_times(boom), 0);
+}
+
+// The loops' share (full tuning), the free bus, and the compliant pins and
+// plates of the flexible panels.
+TEST(NewtonPreconditioner, SolvesAllocateNothing) {
+  EXPECT_EQ(allocations_in_preconditioner_solves(test::scene_file("pantograph")), 0);
+  EXPECT_EQ(allocations_in_preconditioner_solves(test::scene_file("pantograph_free")), 0);
+  EXPECT_EQ(allocations_in_preconditioner_solves(test::scene_file("pantograph_compliant")), 0);
+  EXPECT_EQ(allocations_in_preconditioner_solves(test::scene_file("pantograph_flexible")), 0);
 }
 
 TEST(RightHandSide, GravitySceneAllocatesNothing) {
