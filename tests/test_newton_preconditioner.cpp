@@ -129,7 +129,10 @@ TEST(NewtonPreconditioner, CarriesTheCompliantPinsOfFlexiblePanels) {
   // The compliant hinges' five pin coordinates: their stiffness in B and
   // in the positions' back-substitution alike (where only B had it, 38 of
   // the 202 eigenvalues lay at up to 39). At long steps 12 still spread,
-  // up to 8.7 at gamma 0.01 s, for a cause not yet found.
+  // up to 8.7 at gamma 0.01 s: there the pins' gamma^2 K outweighs the
+  // pin halves' inertia, so J B^-1 J^T lies far below the W of the
+  // regulator's gains (with the pins' stiffness a hundredth, 0.14; README,
+  // "Newton systems").
   const sim::Scene scene = test::scene_file("pantograph_flexible");
   EXPECT_LT(preconditioned_spread(scene, 1e-4), 0.05);
 }
