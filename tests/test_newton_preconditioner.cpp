@@ -12,6 +12,8 @@
 #include "newton_preconditioner.hpp"
 #include "support.hpp"
 #include "unfurl/sim/dynamics.hpp"
+#include "unfurl/sim/scene_file.hpp"
+#include "unfurl/sim/simulation.hpp"
 #include "unfurl/studies/scene_generators.hpp"
 
 namespace unfurl {
@@ -84,10 +86,8 @@ TEST(ArmatureClosureSolver, SolvesAsTheSweepWithArmatureThroughBentPlates) {
 }
 
 // The largest |lambda - 1| over the eigenvalues of P^-1 (I - gamma df/dy)
-// at the scene's initial state.
-double preconditioned_spread(const sim::Scene& scene, double gamma) {
-  sim::Dynamics dynamics(scene);
-  std::vector<double> y = dynamics.initial_state();
+// at the state y (with the dynamics' latches as they are engaged).
+double preconditioned_spread(sim::Dynamics& dynamics, const std::vector<double>& y, double gamma) {
   const int n = dynamics.size();
   std::vector<double> f(n), e(n, 0.0), column(n);
   EXPECT_TRUE(dynamics.rhs(0, y.data(), f.data()));
@@ -106,6 +106,12 @@ double preconditioned_spread(const sim::Scene& scene, double gamma) {
   }
   const Eigen::VectorXcd lambda = P_inverse_N.eigenvalues();
   return (lambda.array() - 1.0).abs().maxCoeff();
+}
+
+// The same at the scene's initial state.
+double preconditioned_spread(const sim::Scene& scene, double gamma) {
+  sim::Dynamics dynamics(scene);
+  return preconditioned_spread(dynamics, dynamics.initial_state(), gamma);
 }
 
 TEST(NewtonPreconditioner, CarriesTheLoopsOfALargeArray) {
@@ -131,10 +137,47 @@ TEST(NewtonPreconditioner, CarriesTheCompliantPinsOfFlexiblePanels) {
   // the 202 eigenvalues lay at up to 39). At long steps 12 still spread,
   // up to 8.7 at gamma 0.01 s: there the pins' gamma^2 K outweighs the
   // pin halves' inertia, so J B^-1 J^T lies far below the W of the
-  // regulator's gains (with the pins' stiffness a hundredth, 0.14; README,
-  // "Newton systems").
+  // regulator's integral (with the pins' stiffness a hundredth, 0.14; README,
+  // "Newton systems"; EliminatesTheLoopForcesExactly).
   const sim::Scene scene = test::scene_file("pantograph_flexible");
   EXPECT_LT(preconditioned_spread(scene, 1e-4), 0.05);
+}
+
+TEST(NewtonPreconditioner, EliminatesTheLoopForcesExactly) {
+  // With the feedforward the residual's acceleration d carries W mu, which
+  // cancels R's W in the loop-force rows: there J B^-1 J^T is exact, and
+  // W is left only in the integral's scaling W R^-1. With the integral's
+  // gains made negligible (p0 1e-9) pantograph_flexible's loops add no
+  // spread to its tree's at long steps (measured 0.0141 / 0.0494 against
+  // 0.0125 / 0.0479 without loops at gamma 1e-3 / 1e-2; with the integral
+  // 0.082 / 7.7, and without the feedforward 0.86 / 1.0; with the loops
+  // left to GMRES 5.6 / 400).
+  for (const double gamma : {1e-3, 1e-2}) {
+    const double with_loops =
+        preconditioned_spread(test::scene_file("pantograph_flexible", {{"regulator.p0", "1e-9"}}), gamma);
+    const double tree = preconditioned_spread(test::scene_file("pantograph_flexible", {{"loops", "[]"}}), gamma);
+    EXPECT_LT(with_loops, 1.25 * tree) << "gamma " << gamma;
+  }
+}
+
+TEST(NewtonPreconditioner, EliminatesTheLoopForcesExactlyWithTheLatchesEngaged) {
+  // The generated 10-stage array deployed and latched (its 22 latches
+  // engage near 6.1 s), at 7.5 s: the latches' gamma^2 K puts J B^-1 J^T
+  // far below W along the loops, and with the integral the spread is
+  // 0.205 / 4.7 at gamma 1e-3 / 1e-2 (the 30-stage array's 1.2 / 21).
+  // With the integral's gains negligible, the force rows alone, it is
+  // 5.5e-4 / 1.2e-3 (30 stages: 0.019 / 0.099).
+  const sim::SceneFile file = studies::generate_pantograph(10);
+  sim::RunSettings run = file.scene.run;
+  run.t_end = 7.5;
+  const sim::RunResult deployed = sim::simulate(file.scene, run, {}, sim::RunThreads::one);
+  ASSERT_EQ(deployed.status, sim::RunStatus::finished);
+  ASSERT_EQ(deployed.trajectory.events.size(), 22u);
+  for (const double gamma : {1e-3, 1e-2}) {
+    sim::Dynamics dynamics(sim::apply_overrides(file, {{"regulator.p0", "1e-9"}}).scene);
+    for (const sim::LatchEvent& event : deployed.trajectory.events) dynamics.latch_state().engage(event.latch);
+    EXPECT_LT(preconditioned_spread(dynamics, deployed.trajectory.samples.back().y, gamma), 0.05) << "gamma " << gamma;
+  }
 }
 
 }  // namespace

@@ -22,7 +22,12 @@
 // a = w / (w + delta) cancels, so the two roots -rho_k delta of the
 // denominator are the only poles, and each is one sparse factorization of
 // J B^-1 J^T + rho_k Delta (armature_closure_solver.hpp), O(N): W taken as
-// J B^-1 J^T is the one approximation in the loops. On the generated
+// J B^-1 J^T is the one approximation in the loops, and with the
+// feedforward it bites only in the integral's W R^-1 (d carries W mu,
+// which cancels R's W in the force rows). Where the joints' gamma^2 K
+// outweighs the inertia along the loops (engaged latches, compliant pins)
+// J B^-1 J^T lies far below W, and the integral's modes spread with gamma
+// v_max (README, "Newton systems"). On the generated
 // 20-stage array at its start every eigenvalue of P^-1 N lies within 2 %
 // of 1 at gamma = 0.04 s; with the loops left to GMRES 60 lay at 1e7.
 #pragma once
